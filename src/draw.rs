@@ -1,0 +1,111 @@
+//! What the player sees: lyon fills the box and the band's pin; gizmos draw the box's outline,
+//! its centre, the band (red, turning magenta as it stretches, as in the tutorial) and the
+//! tutorial's 640 x 480 screen.
+
+use bevy::prelude::*;
+use bevy_prototype_lyon::prelude::*;
+
+use crate::physics::{MassProperties, SCENE_SIZE};
+use crate::simulation::{Band, RenderSnapshots, RigidBox};
+use crate::view::interpolated_state;
+
+pub const BOX_FILL: Color = Color::srgb(0.16, 0.42, 0.72);
+pub const BOX_OUTLINE: Color = Color::WHITE;
+pub const PIN_FILL: Color = Color::srgb(1.0, 0.85, 0.2);
+const SCENE_BORDER: Color = Color::srgb(0.25, 0.25, 0.3);
+const PIN_RADIUS: f32 = 5.0;
+/// The tutorial's band colour is [255, 0, min(length / 2, 255)]: fully magenta at this length.
+const BAND_MAGENTA_LENGTH: f64 = 510.0;
+
+pub struct DrawPlugin;
+
+impl Plugin for DrawPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_observer(fill_box)
+            .add_observer(pin_band)
+            .add_systems(Startup, thicken_lines)
+            .add_systems(Update, (draw_scene_border, draw_boxes, draw_bands));
+    }
+}
+
+fn thicken_lines(mut store: ResMut<GizmoConfigStore>) {
+    let (config, _) = store.config_mut::<DefaultGizmoConfigGroup>();
+    config.line.width = 2.0;
+}
+
+/// Gives a new box its filled body.
+fn fill_box(add: On<Add, RigidBox>, boxes: Query<&MassProperties>, mut commands: Commands) {
+    let Ok(mass) = boxes.get(add.entity) else {
+        return;
+    };
+    let rectangle = shapes::Rectangle {
+        extents: mass.size().as_vec2(),
+        origin: RectangleOrigin::Center,
+        radii: None,
+    };
+    commands
+        .entity(add.entity)
+        .insert(ShapeBuilder::with(&rectangle).fill(BOX_FILL).build());
+}
+
+/// Gives a new band a pin at its anchor.
+fn pin_band(add: On<Add, Band>, bands: Query<&Band>, mut commands: Commands) {
+    let Ok(band) = bands.get(add.entity) else {
+        return;
+    };
+    let circle = shapes::Circle {
+        radius: PIN_RADIUS,
+        center: Vec2::ZERO,
+    };
+    commands.entity(add.entity).insert((
+        ShapeBuilder::with(&circle).fill(PIN_FILL).build(),
+        Transform::from_translation(band.ends.anchor.as_vec2().extend(1.0)),
+    ));
+}
+
+fn draw_scene_border(mut gizmos: Gizmos) {
+    gizmos.rect_2d(Isometry2d::IDENTITY, SCENE_SIZE.as_vec2(), SCENE_BORDER);
+}
+
+fn draw_boxes(
+    mut gizmos: Gizmos,
+    fixed_time: Res<Time<Fixed>>,
+    boxes: Query<(&RenderSnapshots, &MassProperties)>,
+) {
+    for (snapshots, mass) in &boxes {
+        let state = interpolated_state(snapshots, &fixed_time);
+        let centre = state.linear.position.as_vec2();
+        let rotation = Rot2::radians(state.angular.orientation as f32);
+        gizmos.rect_2d(
+            Isometry2d::new(centre, rotation),
+            mass.size().as_vec2(),
+            BOX_OUTLINE,
+        );
+        gizmos.cross_2d(Isometry2d::new(centre, rotation), 4.0, BOX_OUTLINE);
+    }
+}
+
+fn draw_bands(
+    mut gizmos: Gizmos,
+    fixed_time: Res<Time<Fixed>>,
+    bands: Query<&Band>,
+    bodies: Query<&RenderSnapshots>,
+) {
+    for band in &bands {
+        let Ok(snapshots) = bodies.get(band.body) else {
+            continue;
+        };
+        let state = interpolated_state(snapshots, &fixed_time);
+        let corner = band.ends.attachment(&state);
+        gizmos.line_2d(
+            corner.as_vec2(),
+            band.ends.anchor.as_vec2(),
+            band_colour(corner.distance(band.ends.anchor)),
+        );
+    }
+}
+
+/// Red when slack, toward magenta as the band stretches.
+pub fn band_colour(length: f64) -> Color {
+    Color::srgb(1.0, 0.0, (length / BAND_MAGENTA_LENGTH).min(1.0) as f32)
+}

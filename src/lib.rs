@@ -1,0 +1,29 @@
+//! Rubber Band Box: a 2D rigid box pulled by a rubber band, on Bevy.
+//!
+//! Layers, each usable without the ones after it:
+//! - [`physics`]: the numerical core, plain Rust over f64 state;
+//! - [`simulation`]: the Bevy plugin that steps the core in `FixedUpdate` (headless);
+//! - [`pointer`]: mouse and touch to the band entity (headless);
+//! - [`view`] and [`draw`]: camera, interpolation and drawing (need a window).
+
+pub mod draw;
+pub mod physics;
+pub mod pointer;
+pub mod simulation;
+pub mod view;
+
+use bevy::prelude::*;
+
+/// Everything the game needs on top of `DefaultPlugins` and lyon's `ShapePlugin`.
+pub struct GamePlugin;
+
+impl Plugin for GamePlugin {
+    fn build(&self, app: &mut App) {
+        app.add_plugins((
+            simulation::SimulationPlugin,
+            pointer::PointerPlugin,
+            view::ViewPlugin,
+            draw::DrawPlugin,
+        ));
+    }
+}

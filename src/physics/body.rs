@@ -1,0 +1,139 @@
+//! The state of one rigid body in the plane, and its mass properties.
+//!
+//! World units are logical pixels and seconds, y up, angles counter-clockwise in radians.
+//! Everything is f64: accuracy is half of this product, and f32 cannot show errors below 1e-7.
+
+use bevy::math::DVec2;
+use bevy::prelude::Component;
+
+use super::scene::ParamError;
+
+/// Linear state: where the centre of mass is and how fast it moves.
+#[derive(Component, Clone, Copy, Debug, Default, PartialEq)]
+pub struct LinearState {
+    pub position: DVec2,
+    pub velocity: DVec2,
+}
+
+/// Angular state: how far the body has turned and how fast it turns.
+///
+/// The orientation is an unwrapped angle, so that interpolation between two steps and the
+/// count of turns stay meaningful.
+#[derive(Component, Clone, Copy, Debug, Default, PartialEq)]
+pub struct AngularState {
+    pub orientation: f64,
+    pub angular_velocity: f64,
+}
+
+/// The whole dynamic state of one body, as the integrators see it.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BodyState {
+    pub linear: LinearState,
+    pub angular: AngularState,
+}
+
+impl BodyState {
+    /// A body at rest at `position` with orientation zero.
+    pub fn at_rest(position: DVec2) -> Self {
+        Self {
+            linear: LinearState {
+                position,
+                velocity: DVec2::ZERO,
+            },
+            angular: AngularState::default(),
+        }
+    }
+
+    /// A body-local point expressed in world coordinates.
+    pub fn local_to_world(&self, local: DVec2) -> DVec2 {
+        self.linear.position + rotate(local, self.angular.orientation)
+    }
+
+    pub fn is_finite(&self) -> bool {
+        self.linear.position.is_finite()
+            && self.linear.velocity.is_finite()
+            && self.angular.orientation.is_finite()
+            && self.angular.angular_velocity.is_finite()
+    }
+}
+
+/// Rotates `v` counter-clockwise by `angle` radians, written out as the tutorial's
+/// `rotateCopy` does so that the two round the same way.
+pub fn rotate(v: DVec2, angle: f64) -> DVec2 {
+    let (sin, cos) = angle.sin_cos();
+    DVec2::new(cos * v.x - sin * v.y, sin * v.x + cos * v.y)
+}
+
+/// Mass, moment of inertia about the centre of mass, their inverses, and the box's size.
+///
+/// Built only through [`MassProperties::rectangle`], which validates, so the inverses are
+/// always finite and positive.
+#[derive(Component, Clone, Copy, Debug, PartialEq)]
+pub struct MassProperties {
+    mass: f64,
+    inverse_mass: f64,
+    inertia: f64,
+    inverse_inertia: f64,
+    size: DVec2,
+}
+
+impl MassProperties {
+    /// A uniform solid rectangle: I = m (w² + h²) / 12 (the tutorial's section 4.3.4).
+    pub fn rectangle(mass: f64, size: DVec2) -> Result<Self, ParamError> {
+        ParamError::check_positive("mass", mass)?;
+        ParamError::check_positive("width", size.x)?;
+        ParamError::check_positive("height", size.y)?;
+        let inertia = mass * (size.x * size.x + size.y * size.y) / 12.0;
+        ParamError::check_positive("moment of inertia", inertia)?;
+        Ok(Self {
+            mass,
+            inverse_mass: 1.0 / mass,
+            inertia,
+            inverse_inertia: 1.0 / inertia,
+            size,
+        })
+    }
+
+    pub fn mass(&self) -> f64 {
+        self.mass
+    }
+    pub fn inverse_mass(&self) -> f64 {
+        self.inverse_mass
+    }
+    pub fn inertia(&self) -> f64 {
+        self.inertia
+    }
+    pub fn inverse_inertia(&self) -> f64 {
+        self.inverse_inertia
+    }
+    pub fn size(&self) -> DVec2 {
+        self.size
+    }
+
+    /// The four corners in body coordinates, in the tutorial's order: upper-left, upper-right,
+    /// lower-right, lower-left (y up here; the tutorial's screen is y down).
+    pub fn corners(&self) -> [DVec2; 4] {
+        let h = self.size * 0.5;
+        [
+            DVec2::new(-h.x, h.y),
+            DVec2::new(h.x, h.y),
+            DVec2::new(h.x, -h.y),
+            DVec2::new(-h.x, -h.y),
+        ]
+    }
+
+    /// The corner (body coordinates) nearest to the world point `target`; on a tie the first in
+    /// [`Self::corners`] order wins, as in the tutorial.
+    pub fn nearest_corner(&self, state: &BodyState, target: DVec2) -> DVec2 {
+        let mut best = self.corners()[0];
+        let mut best_distance = f64::INFINITY;
+        for corner in self.corners() {
+            let distance = state.local_to_world(corner).distance_squared(target);
+            if distance < best_distance {
+                best = corner;
+                best_distance = distance;
+            }
+        }
+        best
+    }
+}

@@ -1,0 +1,125 @@
+//! The scene's parameters, their units, their defaults (the tutorial's Rubber Band Box) and
+//! their validation. One source of truth: the game, the tests and README read them from here.
+
+use std::fmt;
+
+use bevy::math::DVec2;
+use bevy::prelude::Resource;
+
+use super::body::MassProperties;
+
+/// The tutorial runs one update per frame at this rate; its per-frame constants convert to
+/// per-second ones through it.
+pub const TUTORIAL_FRAME_RATE: f64 = 100.0;
+
+/// The tutorial's screen, in world units. The camera keeps it in view at any window size.
+pub const SCENE_SIZE: DVec2 = DVec2::new(640.0, 480.0);
+
+/// The tutorial's angular damping: ω is multiplied by this every frame.
+pub const TUTORIAL_ANGULAR_FACTOR: f64 = 0.98;
+
+/// Physical parameters of the scene, in world units (logical pixels, seconds, mass units).
+#[derive(Resource, Clone, Copy, Debug, PartialEq)]
+pub struct SceneParams {
+    /// Box mass.
+    pub mass: f64,
+    /// Box width and height.
+    pub size: DVec2,
+    /// Band stiffness k: force per unit of stretch.
+    pub stiffness: f64,
+    /// Linear drag b: force −b·v, so the velocity decays at the rate b/m.
+    pub linear_damping: f64,
+    /// Angular drag rate c: ω decays as exp(−c t).
+    pub angular_damping: f64,
+    /// Fixed physics steps per second.
+    pub step_rate_hz: f64,
+}
+
+impl SceneParams {
+    /// The tutorial's scene converted from its per-frame units at 100 frames per second:
+    /// k = 0.002 /frame² → 20, b = 0.05 /frame → 5, ω·0.98 per frame → c = −ln(0.98)·100.
+    pub fn seed() -> Self {
+        let f = TUTORIAL_FRAME_RATE;
+        Self {
+            mass: 5.0,
+            size: DVec2::new(60.0, 60.0),
+            stiffness: 0.002 * f * f,
+            linear_damping: 0.05 * f,
+            angular_damping: -TUTORIAL_ANGULAR_FACTOR.ln() * f,
+            step_rate_hz: 100.0,
+        }
+    }
+
+    /// The fixed step in seconds.
+    pub fn dt(&self) -> f64 {
+        1.0 / self.step_rate_hz
+    }
+
+    /// Checks every field: mass, size and step rate finite and positive; k, b and c finite and
+    /// not negative. The error names the first bad field and its value.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        self.mass_properties()?;
+        ParamError::check_positive("step rate", self.step_rate_hz)?;
+        ParamError::check_non_negative("stiffness k", self.stiffness)?;
+        ParamError::check_non_negative("linear damping b", self.linear_damping)?;
+        ParamError::check_non_negative("angular damping c", self.angular_damping)?;
+        Ok(())
+    }
+
+    /// The box's mass properties; fails on a bad mass or size.
+    pub fn mass_properties(&self) -> Result<MassProperties, ParamError> {
+        MassProperties::rectangle(self.mass, self.size)
+    }
+}
+
+impl Default for SceneParams {
+    fn default() -> Self {
+        Self::seed()
+    }
+}
+
+/// A parameter outside its domain: names the field and the value it was given.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParamError {
+    pub field: &'static str,
+    pub value: f64,
+    pub requirement: &'static str,
+}
+
+impl ParamError {
+    pub fn check_positive(field: &'static str, value: f64) -> Result<(), Self> {
+        if value.is_finite() && value > 0.0 {
+            Ok(())
+        } else {
+            Err(Self {
+                field,
+                value,
+                requirement: "a finite number greater than zero",
+            })
+        }
+    }
+
+    pub fn check_non_negative(field: &'static str, value: f64) -> Result<(), Self> {
+        if value.is_finite() && value >= 0.0 {
+            Ok(())
+        } else {
+            Err(Self {
+                field,
+                value,
+                requirement: "a finite number, zero or more",
+            })
+        }
+    }
+}
+
+impl fmt::Display for ParamError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} must be {}, got {}",
+            self.field, self.requirement, self.value
+        )
+    }
+}
+
+impl std::error::Error for ParamError {}

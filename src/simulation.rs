@@ -1,0 +1,225 @@
+//! The physics plugin: the box's state as components, the band as an entity, and the fixed
+//! step as three chained system sets: accumulate forces and torques, integrate, publish.
+//!
+//! Every system is a thin loop over the numerical core in [`crate::physics`].
+
+use std::time::Duration;
+
+use bevy::math::DVec2;
+use bevy::prelude::*;
+
+use crate::physics::{
+    AngularState, BandEnds, BodyState, LinearState, MassProperties, SceneParams, Wrench,
+    damping_wrench, symplectic_euler,
+};
+
+pub struct SimulationPlugin;
+
+impl Plugin for SimulationPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<SceneParams>()
+            .init_resource::<StepCount>()
+            .configure_sets(
+                FixedUpdate,
+                (
+                    PhysicsSystems::Accumulate,
+                    PhysicsSystems::Integrate,
+                    PhysicsSystems::Publish,
+                )
+                    .chain(),
+            )
+            .add_systems(Startup, (apply_step_rate, spawn_box))
+            .add_systems(
+                FixedUpdate,
+                (
+                    (accumulate_band_force, accumulate_damping)
+                        .chain()
+                        .in_set(PhysicsSystems::Accumulate),
+                    integrate.in_set(PhysicsSystems::Integrate),
+                    (publish_snapshots, end_taps, count_step)
+                        .chain()
+                        .in_set(PhysicsSystems::Publish),
+                ),
+            );
+    }
+}
+
+/// The fixed step, in order: the tutorial's total reaction split into ECS stages.
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PhysicsSystems {
+    /// Sum every force and torque on each body into its [`ForceAccumulator`].
+    Accumulate,
+    /// Advance each body by one fixed step from its accumulated force and torque, then clear it.
+    Integrate,
+    /// Hand the new state to the rest of the app (render snapshots, step counter).
+    Publish,
+}
+
+/// Marks the pulled box.
+#[derive(Component, Debug, Default)]
+#[require(LinearState, AngularState, ForceAccumulator, RenderSnapshots)]
+pub struct RigidBox;
+
+/// The sum of the forces and torques on a body during the current step; zero between steps.
+#[derive(Component, Debug, Default, Clone, Copy, PartialEq)]
+pub struct ForceAccumulator(pub Wrench);
+
+/// The band: pulls `ends.local_point` on `body` toward the world point `ends.anchor`.
+#[derive(Component, Debug, Clone, Copy, PartialEq)]
+pub struct Band {
+    pub body: Entity,
+    pub ends: BandEnds,
+}
+
+/// A band that was pressed and released within one frame: it acts for exactly one fixed step,
+/// so that a quick click is never lost, and is then removed.
+#[derive(Component, Debug, Default)]
+pub struct Tap;
+
+/// The state before and after the latest fixed step, for drawing in between.
+#[derive(Component, Debug, Default, Clone, Copy)]
+pub struct RenderSnapshots {
+    pub previous: BodyState,
+    pub current: BodyState,
+}
+
+impl RenderSnapshots {
+    pub fn at_rest(state: BodyState) -> Self {
+        Self {
+            previous: state,
+            current: state,
+        }
+    }
+
+    /// The state a fraction `alpha` (0 to 1) of the way from the previous step to the current.
+    pub fn interpolate(&self, alpha: f64) -> BodyState {
+        let (a, b) = (&self.previous, &self.current);
+        BodyState {
+            linear: LinearState {
+                position: a.linear.position.lerp(b.linear.position, alpha),
+                velocity: a.linear.velocity.lerp(b.linear.velocity, alpha),
+            },
+            angular: AngularState {
+                orientation: lerp(a.angular.orientation, b.angular.orientation, alpha),
+                angular_velocity: lerp(
+                    a.angular.angular_velocity,
+                    b.angular.angular_velocity,
+                    alpha,
+                ),
+            },
+        }
+    }
+}
+
+fn lerp(a: f64, b: f64, t: f64) -> f64 {
+    a + (b - a) * t
+}
+
+/// Fixed steps run since start-up.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct StepCount(pub u64);
+
+/// Joins a body's two state components into the core's state.
+pub fn body_state(linear: &LinearState, angular: &AngularState) -> BodyState {
+    BodyState {
+        linear: *linear,
+        angular: *angular,
+    }
+}
+
+fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {
+    time.set_timestep(Duration::from_secs_f64(params.dt()));
+}
+
+/// Spawns the box at rest at the centre of the scene.
+pub fn spawn_box(mut commands: Commands, params: Res<SceneParams>) {
+    let mass = match params.mass_properties() {
+        Ok(mass) => mass,
+        Err(error) => {
+            error!("cannot spawn the box: {error}");
+            return;
+        }
+    };
+    let state = BodyState::at_rest(DVec2::ZERO);
+    commands.spawn((
+        Name::new("Box"),
+        RigidBox,
+        mass,
+        state.linear,
+        state.angular,
+        RenderSnapshots::at_rest(state),
+    ));
+}
+
+/// Band force k·(anchor − corner) at the corner, and its torque r × F.
+fn accumulate_band_force(
+    params: Res<SceneParams>,
+    bands: Query<&Band>,
+    mut bodies: Query<(&LinearState, &AngularState, &mut ForceAccumulator)>,
+) {
+    for band in &bands {
+        let Ok((linear, angular, mut accumulator)) = bodies.get_mut(band.body) else {
+            continue;
+        };
+        accumulator.0 += band
+            .ends
+            .wrench(&body_state(linear, angular), params.stiffness);
+    }
+}
+
+/// Drag force −b·v and drag torque −c·I·ω.
+fn accumulate_damping(
+    params: Res<SceneParams>,
+    mut bodies: Query<(
+        &LinearState,
+        &AngularState,
+        &MassProperties,
+        &mut ForceAccumulator,
+    )>,
+) {
+    for (linear, angular, mass, mut accumulator) in &mut bodies {
+        accumulator.0 += damping_wrench(
+            &body_state(linear, angular),
+            mass,
+            params.linear_damping,
+            params.angular_damping,
+        );
+    }
+}
+
+fn integrate(
+    time: Res<Time<Fixed>>,
+    mut bodies: Query<(
+        &mut LinearState,
+        &mut AngularState,
+        &MassProperties,
+        &mut ForceAccumulator,
+    )>,
+) {
+    let dt = time.timestep().as_secs_f64();
+    for (mut linear, mut angular, mass, mut accumulator) in &mut bodies {
+        let mut state = body_state(&linear, &angular);
+        symplectic_euler(&mut state, mass, accumulator.0, dt);
+        *linear = state.linear;
+        *angular = state.angular;
+        accumulator.0 = Wrench::ZERO;
+    }
+}
+
+fn publish_snapshots(mut bodies: Query<(&LinearState, &AngularState, &mut RenderSnapshots)>) {
+    for (linear, angular, mut snapshots) in &mut bodies {
+        snapshots.previous = snapshots.current;
+        snapshots.current = body_state(linear, angular);
+    }
+}
+
+/// A tap's band has had its one step: remove it.
+fn end_taps(mut commands: Commands, taps: Query<Entity, (With<Band>, With<Tap>)>) {
+    for band in &taps {
+        commands.entity(band).despawn();
+    }
+}
+
+fn count_step(mut steps: ResMut<StepCount>) {
+    steps.0 += 1;
+}

@@ -1,0 +1,206 @@
+//! The numerical core on its own: no `App`, no `World`.
+
+use bevy::math::DVec2;
+use rubber_band_box::physics::{
+    BandEnds, BodyState, MassProperties, ParamError, SceneParams, Simulation, Wrench,
+    damping_wrench, rotate, symplectic_euler,
+};
+
+#[test]
+fn seed_scene_converts_the_tutorials_per_frame_units() {
+    let p = SceneParams::seed();
+    assert_eq!(p.mass, 5.0);
+    assert_eq!(p.size, DVec2::new(60.0, 60.0));
+    assert!((p.stiffness - 20.0).abs() < 1e-12);
+    assert!((p.linear_damping - 5.0).abs() < 1e-12);
+    assert!((p.angular_damping - 2.020_270_731_751_944).abs() < 1e-12);
+    assert!(((-p.angular_damping * 0.01).exp() - 0.98).abs() < 1e-15);
+    assert_eq!(p.dt(), 0.01);
+    let mass = p.mass_properties().unwrap();
+    assert_eq!(mass.inertia(), 3000.0);
+    assert_eq!(mass.inverse_inertia(), 1.0 / 3000.0);
+    assert_eq!(mass.inverse_mass(), 0.2);
+}
+
+#[test]
+fn bad_parameters_are_refused_with_the_field_and_value() {
+    type Spoil = fn(&mut SceneParams);
+    let cases: [(Spoil, &str); 6] = [
+        (|p| p.mass = 0.0, "mass"),
+        (|p| p.mass = f64::NAN, "mass"),
+        (|p| p.size.y = -1.0, "height"),
+        (|p| p.stiffness = -2.0, "stiffness k"),
+        (|p| p.angular_damping = f64::INFINITY, "angular damping c"),
+        (|p| p.step_rate_hz = 0.0, "step rate"),
+    ];
+    for (spoil, field) in cases {
+        let mut params = SceneParams::seed();
+        spoil(&mut params);
+        let error: ParamError = params.validate().unwrap_err();
+        assert_eq!(error.field, field);
+        assert!(error.to_string().starts_with(field), "{error}");
+        assert!(Simulation::new(params).is_err());
+    }
+    assert!(SceneParams::seed().validate().is_ok());
+}
+
+#[test]
+fn rotation_is_counter_clockwise() {
+    let v = rotate(DVec2::X, std::f64::consts::FRAC_PI_2);
+    assert!((v - DVec2::Y).length() < 1e-15);
+}
+
+#[test]
+fn nearest_corner_follows_the_orientation_and_breaks_ties_in_tutorial_order() {
+    let mass = SceneParams::seed().mass_properties().unwrap();
+    let mut state = BodyState::at_rest(DVec2::new(100.0, 0.0));
+    assert_eq!(
+        mass.nearest_corner(&state, DVec2::new(200.0, 100.0)),
+        DVec2::new(30.0, 30.0)
+    );
+    assert_eq!(
+        mass.nearest_corner(&state, DVec2::new(0.0, -100.0)),
+        DVec2::new(-30.0, -30.0)
+    );
+    // Turned a quarter counter-clockwise, the body's upper-left corner is at the lower left.
+    state.angular.orientation = std::f64::consts::FRAC_PI_2;
+    assert_eq!(
+        mass.nearest_corner(&state, DVec2::new(0.0, -100.0)),
+        DVec2::new(-30.0, 30.0)
+    );
+    // From the centre all four are equally near: the first (upper-left) wins.
+    assert_eq!(
+        mass.nearest_corner(&BodyState::default(), DVec2::ZERO),
+        DVec2::new(-30.0, 30.0)
+    );
+}
+
+/// The tutorial's five steps by hand, for one state and band, against one core step.
+#[test]
+fn one_step_equals_the_five_step_total_reaction_by_hand() {
+    let params = SceneParams::seed();
+    let (m, inertia, k, b, c, dt) = (5.0, 3000.0, 20.0, 5.0, params.angular_damping, 0.01);
+    let (x, y, vx, vy, theta, omega) = (10.0, -5.0, 3.0, 4.0, 0.3_f64, 0.5);
+    let (local_x, local_y, anchor_x, anchor_y) = (30.0, 30.0, 100.0, 50.0);
+
+    // The corner in world coordinates, and the arm from the centre of mass.
+    let (s, co) = theta.sin_cos();
+    let (rx, ry) = (co * local_x - s * local_y, s * local_x + co * local_y);
+    let (band_x, band_y) = (k * (anchor_x - (x + rx)), k * (anchor_y - (y + ry)));
+    // 1. Sum all forces: band and drag.
+    let (fx, fy) = (band_x - b * vx, band_y - b * vy);
+    // 2. Linear acceleration.
+    let (ax, ay) = (fx / m, fy / m);
+    // 3. Total torque: r x F of the band, plus the drag torque.
+    let torque = rx * band_y - ry * band_x - c * inertia * omega;
+    // 4. Angular acceleration.
+    let alpha = torque / inertia;
+    // 5. Integrate: velocities first, then position and orientation.
+    let (vx1, vy1, omega1) = (vx + ax * dt, vy + ay * dt, omega + alpha * dt);
+    let (x1, y1, theta1) = (x + vx1 * dt, y + vy1 * dt, theta + omega1 * dt);
+
+    let mut sim = Simulation::new(params).unwrap();
+    sim.state.linear.position = DVec2::new(x, y);
+    sim.state.linear.velocity = DVec2::new(vx, vy);
+    sim.state.angular.orientation = theta;
+    sim.state.angular.angular_velocity = omega;
+    sim.band = Some(BandEnds {
+        local_point: DVec2::new(local_x, local_y),
+        anchor: DVec2::new(anchor_x, anchor_y),
+    });
+    sim.step(dt);
+
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1.0);
+    let s1 = sim.state;
+    assert!(close(s1.linear.velocity.x, vx1) && close(s1.linear.velocity.y, vy1));
+    assert!(close(s1.angular.angular_velocity, omega1));
+    assert!(close(s1.linear.position.x, x1) && close(s1.linear.position.y, y1));
+    assert!(close(s1.angular.orientation, theta1));
+}
+
+#[test]
+fn a_force_at_the_centre_makes_no_torque_and_an_off_centre_one_does() {
+    assert_eq!(
+        Wrench::at_arm(DVec2::new(3.0, 4.0), DVec2::ZERO).torque,
+        0.0
+    );
+    // Pushing +x on a point above the centre turns clockwise (negative).
+    assert_eq!(Wrench::at_arm(DVec2::X, DVec2::Y).torque, -1.0);
+}
+
+#[test]
+fn a_pull_along_the_diagonal_through_the_centre_never_turns_the_box() {
+    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
+    sim.grab(DVec2::new(150.0, 150.0));
+    assert_eq!(sim.band.unwrap().local_point, DVec2::new(30.0, 30.0));
+    for _ in 0..500 {
+        sim.step(0.01);
+        assert_eq!(sim.state.angular.angular_velocity, 0.0);
+        assert_eq!(sim.state.linear.position.x, sim.state.linear.position.y);
+    }
+    assert!(sim.state.linear.position.x > 50.0);
+}
+
+#[test]
+fn damping_alone_decays_each_step_by_one_minus_rate_times_dt() {
+    let params = SceneParams::seed();
+    let mass = params.mass_properties().unwrap();
+    let dt = params.dt();
+    let mut state = BodyState::at_rest(DVec2::ZERO);
+    state.linear.velocity = DVec2::new(120.0, -80.0);
+    state.angular.angular_velocity = 3.0;
+    for _ in 0..100 {
+        let before = state;
+        let wrench = damping_wrench(&state, &mass, params.linear_damping, params.angular_damping);
+        symplectic_euler(&mut state, &mass, wrench, dt);
+        let linear_ratio = state.linear.velocity / before.linear.velocity;
+        let angular_ratio = state.angular.angular_velocity / before.angular.angular_velocity;
+        let expected_linear = 1.0 - params.linear_damping / params.mass * dt;
+        assert!(
+            (linear_ratio - DVec2::splat(expected_linear))
+                .abs()
+                .max_element()
+                < 1e-13
+        );
+        assert!((angular_ratio - (1.0 - params.angular_damping * dt)).abs() < 1e-13);
+    }
+    // After 1 s the explicit decay is within its first-order error of exp(-rate t).
+    let omega_ratio = state.angular.angular_velocity / 3.0;
+    assert!((omega_ratio / (-params.angular_damping).exp() - 1.0).abs() < 0.03);
+}
+
+#[test]
+fn without_a_band_a_box_at_rest_stays_exactly_at_rest() {
+    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
+    let start = sim.state;
+    for _ in 0..1000 {
+        sim.step(0.01);
+    }
+    assert_eq!(sim.state, start);
+}
+
+#[test]
+fn undamped_band_energy_stays_bounded_under_symplectic_euler() {
+    let params = SceneParams {
+        linear_damping: 0.0,
+        angular_damping: 0.0,
+        ..SceneParams::seed()
+    };
+    let mut sim = Simulation::new(params).unwrap();
+    sim.grab(DVec2::new(150.0, 100.0));
+    let e0 = sim.energy();
+    let mut worst: f64 = 0.0;
+    for _ in 0..10_000 {
+        sim.step(0.01);
+        worst = worst.max((sim.energy() - e0).abs() / e0);
+    }
+    // Symplectic: the energy error oscillates at O(omega dt) and does not grow.
+    assert!(worst < 0.05, "relative energy error {worst}");
+}
+
+#[test]
+fn mass_properties_refuse_a_degenerate_box() {
+    assert!(MassProperties::rectangle(1.0, DVec2::new(0.0, 1.0)).is_err());
+    assert!(MassProperties::rectangle(-1.0, DVec2::ONE).is_err());
+    assert!(MassProperties::rectangle(1e-300, DVec2::splat(1e-200)).is_err());
+}

@@ -1,0 +1,509 @@
+//! Headless `App` tests of the schedule: `MinimalPlugins` plus the physics and pointer plugins,
+//! no window and no renderer. Time is driven by `TimeUpdateStrategy`, input by the same
+//! messages winit would send, and the cursor is turned into world coordinates by a camera set
+//! up exactly as the game's.
+
+use std::time::Duration;
+
+use bevy::camera::RenderTargetInfo;
+use bevy::input::ButtonState;
+use bevy::input::InputPlugin;
+use bevy::input::mouse::MouseButtonInput;
+use bevy::input::touch::{TouchInput, TouchPhase};
+use bevy::math::DVec2;
+use bevy::prelude::*;
+use bevy::time::TimeUpdateStrategy;
+use bevy::window::{ExitCondition, PrimaryWindow, WindowFocused, WindowPlugin, WindowResolution};
+
+use rubber_band_box::physics::{AngularState, LinearState, SceneParams, Simulation, Wrench};
+use rubber_band_box::pointer::{Grip, PointerPlugin, PointerSource};
+use rubber_band_box::simulation::{
+    Band, ForceAccumulator, PhysicsSystems, RigidBox, SimulationPlugin, StepCount,
+};
+use rubber_band_box::view::scene_projection;
+
+/// A 1280 x 720 window: the 640 x 480 scene fits its height, so one pixel is 2/3 of a world
+/// unit and the screen centre (640, 360) is the world origin.
+const WINDOW: UVec2 = UVec2::new(1280, 720);
+
+fn screen_to_world(screen: Vec2) -> DVec2 {
+    let scale = 480.0 / 720.0;
+    DVec2::new(
+        (screen.x as f64 - 640.0) * scale,
+        (360.0 - screen.y as f64) * scale,
+    )
+}
+
+fn world_to_screen(world: DVec2) -> Vec2 {
+    let scale = 720.0 / 480.0;
+    Vec2::new(
+        (640.0 + world.x * scale) as f32,
+        (360.0 - world.y * scale) as f32,
+    )
+}
+
+struct Game {
+    app: App,
+    window: Entity,
+}
+
+impl Game {
+    /// A headless game whose every `update()` advances the clock by `frame`.
+    fn new(frame: Duration) -> Self {
+        let mut app = App::new();
+        app.add_plugins((
+            MinimalPlugins,
+            InputPlugin,
+            WindowPlugin {
+                primary_window: None,
+                exit_condition: ExitCondition::DontExit,
+                close_when_requested: false,
+                ..default()
+            },
+            SimulationPlugin,
+            PointerPlugin,
+        ))
+        .insert_resource(TimeUpdateStrategy::ManualDuration(frame))
+        .init_resource::<AccumulatorAudit>()
+        .add_systems(
+            FixedUpdate,
+            audit_accumulators.after(PhysicsSystems::Integrate),
+        );
+
+        let window = app
+            .world_mut()
+            .spawn((
+                Window {
+                    resolution: WindowResolution::new(WINDOW.x, WINDOW.y),
+                    ..default()
+                },
+                PrimaryWindow,
+            ))
+            .id();
+        // What bevy_render's camera system would compute for this window.
+        let mut projection = scene_projection();
+        projection.update(WINDOW.x as f32, WINDOW.y as f32);
+        let mut camera = Camera::default();
+        camera.computed.clip_from_view = projection.get_clip_from_view();
+        camera.computed.target_info = Some(RenderTargetInfo {
+            physical_size: WINDOW,
+            scale_factor: 1.0,
+        });
+        app.world_mut()
+            .spawn((Camera2d, camera, projection, GlobalTransform::IDENTITY));
+
+        app.finish();
+        app.cleanup();
+        // The first update only starts the clock: it runs Startup and no fixed step.
+        app.update();
+        Self { app, window }
+    }
+
+    /// One fixed step (10 ms at the seed's 100 Hz) per update.
+    fn stepping() -> Self {
+        Self::new(Duration::from_millis(10))
+    }
+
+    fn world(&mut self) -> &mut World {
+        self.app.world_mut()
+    }
+
+    fn update(&mut self, frames: usize) {
+        for _ in 0..frames {
+            self.app.update();
+        }
+    }
+
+    fn cursor(&mut self, screen: Option<Vec2>) {
+        let window = self.window;
+        self.world()
+            .get_mut::<Window>(window)
+            .unwrap()
+            .set_cursor_position(screen);
+    }
+
+    fn mouse(&mut self, state: ButtonState) {
+        let window = self.window;
+        self.world().write_message(MouseButtonInput {
+            button: MouseButton::Left,
+            state,
+            window,
+        });
+    }
+
+    fn press_at(&mut self, world: DVec2) {
+        self.cursor(Some(world_to_screen(world)));
+        self.mouse(ButtonState::Pressed);
+    }
+
+    fn touch(&mut self, id: u64, phase: TouchPhase, world: DVec2) {
+        let window = self.window;
+        self.world().write_message(TouchInput {
+            phase,
+            position: world_to_screen(world),
+            window,
+            force: None,
+            id,
+        });
+    }
+
+    fn bands(&mut self) -> Vec<Band> {
+        let mut query = self.world().query::<&Band>();
+        query.iter(self.world()).copied().collect()
+    }
+
+    fn the_band(&mut self) -> Band {
+        let bands = self.bands();
+        assert_eq!(bands.len(), 1, "expected exactly one band");
+        bands[0]
+    }
+
+    fn state(&mut self) -> (LinearState, AngularState) {
+        let mut query = self
+            .world()
+            .query_filtered::<(&LinearState, &AngularState), With<RigidBox>>();
+        let (linear, angular) = query.single(self.world()).unwrap();
+        (*linear, *angular)
+    }
+
+    fn steps(&mut self) -> u64 {
+        self.world().resource::<StepCount>().0
+    }
+}
+
+/// The largest accumulator seen right after an integration step.
+#[derive(Resource, Default)]
+struct AccumulatorAudit {
+    steps: u64,
+    largest: f64,
+}
+
+fn audit_accumulators(bodies: Query<&ForceAccumulator>, mut audit: ResMut<AccumulatorAudit>) {
+    for accumulator in &bodies {
+        let Wrench { force, torque } = accumulator.0;
+        audit.steps += 1;
+        audit.largest = audit.largest.max(force.length()).max(torque.abs());
+    }
+}
+
+#[test]
+fn the_camera_maps_the_window_onto_the_scene() {
+    let mut game = Game::stepping();
+    game.cursor(Some(Vec2::new(640.0 + 90.0, 360.0 - 60.0)));
+    game.mouse(ButtonState::Pressed);
+    game.update(1);
+    let anchor = game.the_band().ends.anchor;
+    assert!(
+        (anchor - DVec2::new(60.0, 40.0)).length() < 1e-4,
+        "{anchor}"
+    );
+    assert_eq!(
+        screen_to_world(Vec2::new(730.0, 300.0)),
+        DVec2::new(60.0, 40.0)
+    );
+}
+
+#[test]
+fn a_press_spawns_one_band_at_the_nearest_corner_that_follows_the_cursor_until_release() {
+    let mut game = Game::stepping();
+    assert!(game.bands().is_empty());
+
+    game.press_at(DVec2::new(150.0, -120.0));
+    game.update(1);
+    let band = game.the_band();
+    assert_eq!(band.ends.local_point, DVec2::new(30.0, -30.0));
+    assert!((band.ends.anchor - DVec2::new(150.0, -120.0)).length() < 1e-4);
+
+    for target in [DVec2::new(0.0, 200.0), DVec2::new(-250.0, 10.0)] {
+        game.cursor(Some(world_to_screen(target)));
+        game.update(1);
+        let band = game.the_band();
+        assert!((band.ends.anchor - target).length() < 1e-4);
+        // The corner is chosen at the press and kept while held.
+        assert_eq!(band.ends.local_point, DVec2::new(30.0, -30.0));
+    }
+    assert_eq!(
+        game.world().resource::<Grip>().0,
+        Some(PointerSource::Mouse)
+    );
+
+    game.mouse(ButtonState::Released);
+    game.update(1);
+    assert!(game.bands().is_empty());
+    assert_eq!(game.world().resource::<Grip>().0, None);
+}
+
+#[test]
+fn with_no_band_the_box_stays_exactly_at_rest_and_accumulators_are_zero_after_every_step() {
+    let mut game = Game::stepping();
+    let start = game.state();
+    game.update(300);
+    assert_eq!(game.steps(), 300);
+    assert_eq!(game.state(), start);
+    assert_eq!(start.0.position, DVec2::ZERO);
+
+    game.press_at(DVec2::new(200.0, 150.0));
+    game.update(100);
+    assert_ne!(game.state(), start);
+    let audit = game.world().resource::<AccumulatorAudit>();
+    assert_eq!(audit.steps, 400);
+    assert_eq!(audit.largest, 0.0);
+}
+
+#[test]
+fn a_pull_turns_the_box_the_way_r_cross_f_says() {
+    // Pulling the upper-right corner (r = (30, 30)) to the right: r x F < 0, clockwise.
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(200.0, 30.0));
+    game.update(20);
+    let (linear, angular) = game.state();
+    assert!(linear.velocity.x > 0.0);
+    assert!(angular.angular_velocity < 0.0 && angular.orientation < 0.0);
+
+    // Pulling the same corner straight up: r x F > 0, counter-clockwise.
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(30.0, 200.0));
+    game.update(20);
+    let (linear, angular) = game.state();
+    assert!(linear.velocity.y > 0.0);
+    assert!(angular.angular_velocity > 0.0 && angular.orientation > 0.0);
+
+    // Pulling along the diagonal through the centre: no torque (up to the f32 pixels the
+    // pointer passes through; tests/core.rs checks the exact case).
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(150.0, 150.0));
+    game.update(50);
+    let (linear, angular) = game.state();
+    assert!(linear.velocity.x > 10.0);
+    assert!((linear.velocity.x - linear.velocity.y).abs() < 1e-4 * linear.velocity.x);
+    assert!(angular.angular_velocity.abs() < 1e-6);
+}
+
+#[test]
+fn after_release_the_velocities_decay_at_the_damping_rates() {
+    let params = SceneParams::seed();
+    let dt = params.dt();
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(200.0, 30.0));
+    game.update(30);
+    game.mouse(ButtonState::Released);
+    game.update(1);
+    assert!(game.bands().is_empty());
+
+    let (linear0, angular0) = game.state();
+    assert!(angular0.angular_velocity.abs() > 0.01);
+    let frames = 100;
+    let mut previous = (linear0, angular0);
+    for _ in 0..frames {
+        game.update(1);
+        let now = game.state();
+        let linear_ratio = now.0.velocity / previous.0.velocity;
+        let angular_ratio = now.1.angular_velocity / previous.1.angular_velocity;
+        let linear_rate = params.linear_damping / params.mass;
+        assert!(
+            (linear_ratio - DVec2::splat(1.0 - linear_rate * dt))
+                .abs()
+                .max_element()
+                < 1e-12
+        );
+        assert!((angular_ratio - (1.0 - params.angular_damping * dt)).abs() < 1e-12);
+        previous = now;
+    }
+    // Over one second: exp(-rate t), within the explicit step's first-order error.
+    let t = frames as f64 * dt;
+    let (linear1, angular1) = previous;
+    let angular_decay = angular1.angular_velocity / angular0.angular_velocity;
+    let linear_decay = linear1.velocity.length() / linear0.velocity.length();
+    assert!((angular_decay / (-params.angular_damping * t).exp() - 1.0).abs() < 0.03);
+    assert!((linear_decay / (-params.linear_damping / params.mass * t).exp() - 1.0).abs() < 0.01);
+}
+
+/// The same two seconds of input at several frame rates. Input events happen at times every
+/// frame rate reaches; each is delivered before the frame that starts at its time.
+fn play_script(frames_per_second: u32) -> (LinearState, AngularState, u64) {
+    let frame = Duration::from_nanos((1e9 / frames_per_second as f64).round() as u64);
+    let mut game = Game::new(frame);
+    let script: [(f64, Option<ButtonState>, DVec2); 6] = [
+        (0.2, Some(ButtonState::Pressed), DVec2::new(200.0, 100.0)),
+        (0.6, None, DVec2::new(-150.0, 180.0)),
+        (1.0, None, DVec2::new(-220.0, -160.0)),
+        (1.2, Some(ButtonState::Released), DVec2::new(-220.0, -160.0)),
+        (1.4, Some(ButtonState::Pressed), DVec2::new(40.0, -200.0)),
+        (1.8, Some(ButtonState::Released), DVec2::new(40.0, -200.0)),
+    ];
+    let total_frames = 2 * frames_per_second as usize;
+    for n in 0..total_frames {
+        let now = n as f64 / frames_per_second as f64;
+        for (at, button, cursor) in script {
+            if (at - now).abs() < 1e-9 {
+                game.cursor(Some(world_to_screen(cursor)));
+                if let Some(state) = button {
+                    game.mouse(state);
+                }
+            }
+        }
+        game.update(1);
+    }
+    let (linear, angular) = game.state();
+    (linear, angular, game.steps())
+}
+
+#[test]
+fn the_physics_is_independent_of_the_frame_rate() {
+    let reference = play_script(60);
+    assert_eq!(reference.2, 200);
+    assert!(reference.0.position.length() > 1.0);
+    for fps in [25, 240] {
+        assert_eq!(play_script(fps), reference, "{fps} frames per second");
+    }
+}
+
+#[test]
+fn the_schedule_steps_exactly_as_the_core_does() {
+    let mut game = Game::stepping();
+    let anchor = DVec2::new(-200.0, 120.0);
+    game.press_at(anchor);
+    game.update(150);
+    game.mouse(ButtonState::Released);
+    game.update(50);
+
+    // The pointer's anchor went through f32 screen coordinates: use the one the game saw.
+    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
+    let seen_anchor = {
+        let mut probe = Game::stepping();
+        probe.press_at(anchor);
+        probe.update(1);
+        probe.the_band().ends.anchor
+    };
+    sim.grab(seen_anchor);
+    for _ in 0..150 {
+        sim.step(0.01);
+    }
+    sim.release();
+    for _ in 0..50 {
+        sim.step(0.01);
+    }
+    let (linear, angular) = game.state();
+    assert_eq!((linear, angular), (sim.state.linear, sim.state.angular));
+}
+
+#[test]
+fn a_press_and_release_in_one_frame_pulls_for_exactly_one_step() {
+    let mut game = Game::stepping();
+    let anchor = DVec2::new(180.0, 90.0);
+    game.press_at(anchor);
+    game.mouse(ButtonState::Released);
+    game.update(1);
+    assert!(game.bands().is_empty(), "a tap's band lasts one step");
+    game.update(9);
+
+    let mut probe = Game::stepping();
+    probe.press_at(anchor);
+    probe.update(1);
+    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
+    sim.grab(probe.the_band().ends.anchor);
+    sim.step(0.01);
+    sim.release();
+    for _ in 0..9 {
+        sim.step(0.01);
+    }
+    let (linear, angular) = game.state();
+    assert!(linear.velocity.length() > 0.0);
+    assert_eq!((linear, angular), (sim.state.linear, sim.state.angular));
+}
+
+#[test]
+fn the_anchor_stays_put_while_the_cursor_is_outside_the_window() {
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(100.0, 100.0));
+    game.update(1);
+    let held = game.the_band().ends.anchor;
+    game.cursor(None);
+    game.update(5);
+    assert_eq!(game.the_band().ends.anchor, held);
+    let back = DVec2::new(-100.0, 50.0);
+    game.cursor(Some(world_to_screen(back)));
+    game.update(1);
+    assert!((game.the_band().ends.anchor - back).length() < 1e-4);
+}
+
+#[test]
+fn losing_focus_releases_the_band() {
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(100.0, 100.0));
+    game.update(3);
+    assert_eq!(game.bands().len(), 1);
+    let window = game.window;
+    game.world().write_message(WindowFocused {
+        window,
+        focused: false,
+    });
+    game.update(1);
+    assert!(game.bands().is_empty());
+    assert_eq!(game.world().resource::<Grip>().0, None);
+    // The button's release that arrives later changes nothing.
+    game.mouse(ButtonState::Released);
+    game.update(1);
+    assert!(game.bands().is_empty());
+}
+
+#[test]
+fn one_finger_holds_the_band_and_a_second_is_ignored() {
+    let mut game = Game::stepping();
+    game.touch(7, TouchPhase::Started, DVec2::new(-150.0, 100.0));
+    game.update(1);
+    let band = game.the_band();
+    assert_eq!(band.ends.local_point, DVec2::new(-30.0, 30.0));
+
+    game.touch(8, TouchPhase::Started, DVec2::new(200.0, -200.0));
+    game.touch(7, TouchPhase::Moved, DVec2::new(-160.0, 60.0));
+    game.update(1);
+    let band = game.the_band();
+    assert_eq!(band.ends.local_point, DVec2::new(-30.0, 30.0));
+    assert!((band.ends.anchor - DVec2::new(-160.0, 60.0)).length() < 1e-4);
+
+    game.touch(8, TouchPhase::Ended, DVec2::new(200.0, -200.0));
+    game.update(1);
+    assert_eq!(
+        game.bands().len(),
+        1,
+        "the other finger's lift changes nothing"
+    );
+
+    game.touch(7, TouchPhase::Ended, DVec2::new(-160.0, 60.0));
+    game.update(1);
+    assert!(game.bands().is_empty());
+}
+
+#[test]
+fn a_second_press_while_a_band_exists_replaces_it() {
+    let mut game = Game::stepping();
+    game.touch(1, TouchPhase::Started, DVec2::new(-150.0, 100.0));
+    game.update(2);
+    assert_eq!(game.the_band().ends.local_point, DVec2::new(-30.0, 30.0));
+
+    // The mouse presses while the finger still holds: the mouse takes over.
+    game.press_at(DVec2::new(200.0, -200.0));
+    game.update(1);
+    let band = game.the_band();
+    assert_eq!(band.ends.local_point, DVec2::new(30.0, -30.0));
+
+    // The finger's lift no longer owns the band.
+    game.touch(1, TouchPhase::Ended, DVec2::new(-150.0, 100.0));
+    game.update(1);
+    assert_eq!(game.bands().len(), 1);
+    game.mouse(ButtonState::Released);
+    game.update(1);
+    assert!(game.bands().is_empty());
+}
+
+#[test]
+fn a_long_frame_catches_up_a_bounded_number_of_steps() {
+    let mut game = Game::new(Duration::from_secs(10));
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(1);
+    // Bevy clamps a frame's virtual time to 250 ms: 25 steps, not 1000.
+    assert_eq!(game.steps(), 25);
+    let (linear, angular) = game.state();
+    assert!(linear.position.is_finite() && angular.orientation.is_finite());
+}
