@@ -6,9 +6,12 @@
 //! - [`pointer`]: mouse and touch to the band entity (headless);
 //! - [`view`] and [`draw`]: camera, interpolation and drawing (need a window).
 
+pub mod cli;
+pub mod controls;
 pub mod draw;
 pub mod physics;
 pub mod pointer;
+pub mod report;
 pub mod simulation;
 pub mod view;
 
@@ -22,6 +25,7 @@ impl Plugin for GamePlugin {
         app.add_plugins((
             simulation::SimulationPlugin,
             pointer::PointerPlugin,
+            controls::ControlsPlugin,
             view::ViewPlugin,
             draw::DrawPlugin,
         ));

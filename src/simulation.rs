@@ -9,8 +9,8 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 
 use crate::physics::{
-    AngularState, BandEnds, BodyState, LinearState, MassProperties, SceneParams, Wrench,
-    damping_wrench, symplectic_euler,
+    AngularState, BandEnds, BodyState, Forces, Integrator, LinearState, MassProperties,
+    SceneParams, damping_wrench,
 };
 
 pub struct SimulationPlugin;
@@ -18,6 +18,7 @@ pub struct SimulationPlugin;
 impl Plugin for SimulationPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<SceneParams>()
+            .init_resource::<Integrator>()
             .init_resource::<StepCount>()
             .configure_sets(
                 FixedUpdate,
@@ -49,7 +50,8 @@ impl Plugin for SimulationPlugin {
 pub enum PhysicsSystems {
     /// Sum every force and torque on each body into its [`ForceAccumulator`].
     Accumulate,
-    /// Advance each body by one fixed step from its accumulated force and torque, then clear it.
+    /// Advance each body by one fixed step with the [`Integrator`] resource, from its
+    /// accumulated forces, then clear the accumulator.
     Integrate,
     /// Hand the new state to the rest of the app (render snapshots, step counter).
     Publish,
@@ -60,9 +62,13 @@ pub enum PhysicsSystems {
 #[require(LinearState, AngularState, ForceAccumulator, RenderSnapshots)]
 pub struct RigidBox;
 
-/// The sum of the forces and torques on a body during the current step; zero between steps.
+/// What acts on a body during the current step: the summed forces and torques, and the band
+/// whose force the integrator evaluates again at its intermediate states. Empty between steps.
 #[derive(Component, Debug, Default, Clone, Copy, PartialEq)]
-pub struct ForceAccumulator(pub Wrench);
+pub struct ForceAccumulator {
+    pub forces: Forces,
+    pub band: Option<BandEnds>,
+}
 
 /// The band: pulls `ends.local_point` on `body` toward the world point `ends.anchor`.
 #[derive(Component, Debug, Clone, Copy, PartialEq)]
@@ -161,9 +167,15 @@ fn accumulate_band_force(
         let Ok((linear, angular, mut accumulator)) = bodies.get_mut(band.body) else {
             continue;
         };
-        accumulator.0 += band
+        if accumulator.band.is_some() {
+            // The scene has one band per body; the pointer never makes a second.
+            warn_once!("a second band on one body is ignored");
+            continue;
+        }
+        accumulator.forces.applied += band
             .ends
             .wrench(&body_state(linear, angular), params.stiffness);
+        accumulator.band = Some(band.ends);
     }
 }
 
@@ -178,7 +190,7 @@ fn accumulate_damping(
     )>,
 ) {
     for (linear, angular, mass, mut accumulator) in &mut bodies {
-        accumulator.0 += damping_wrench(
+        accumulator.forces.damping += damping_wrench(
             &body_state(linear, angular),
             mass,
             params.linear_damping,
@@ -189,6 +201,8 @@ fn accumulate_damping(
 
 fn integrate(
     time: Res<Time<Fixed>>,
+    params: Res<SceneParams>,
+    integrator: Res<Integrator>,
     mut bodies: Query<(
         &mut LinearState,
         &mut AngularState,
@@ -198,11 +212,12 @@ fn integrate(
 ) {
     let dt = time.timestep().as_secs_f64();
     for (mut linear, mut angular, mass, mut accumulator) in &mut bodies {
+        let model = params.force_model(*mass, accumulator.band);
         let mut state = body_state(&linear, &angular);
-        symplectic_euler(&mut state, mass, accumulator.0, dt);
+        integrator.step(&mut state, &model, accumulator.forces, dt);
         *linear = state.linear;
         *angular = state.angular;
-        accumulator.0 = Wrench::ZERO;
+        *accumulator = ForceAccumulator::default();
     }
 }
 

@@ -2,7 +2,7 @@
 
 use bevy::math::DVec2;
 use rubber_band_box::physics::{
-    BandEnds, BodyState, MassProperties, ParamError, SceneParams, Simulation, Wrench,
+    BandEnds, BodyState, Integrator, MassProperties, ParamError, SceneParams, Simulation, Wrench,
     damping_wrench, rotate, symplectic_euler,
 };
 
@@ -100,6 +100,7 @@ fn one_step_equals_the_five_step_total_reaction_by_hand() {
     let (x1, y1, theta1) = (x + vx1 * dt, y + vy1 * dt, theta + omega1 * dt);
 
     let mut sim = Simulation::new(params).unwrap();
+    sim.integrator = Integrator::Symplectic;
     sim.state.linear.position = DVec2::new(x, y);
     sim.state.linear.velocity = DVec2::new(vx, vy);
     sim.state.angular.orientation = theta;
@@ -187,6 +188,7 @@ fn undamped_band_energy_stays_bounded_under_symplectic_euler() {
         ..SceneParams::seed()
     };
     let mut sim = Simulation::new(params).unwrap();
+    sim.integrator = Integrator::Symplectic;
     sim.grab(DVec2::new(150.0, 100.0));
     let e0 = sim.energy();
     let mut worst: f64 = 0.0;

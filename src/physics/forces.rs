@@ -99,3 +99,76 @@ pub fn kinetic_energy(state: &BodyState, mass: &MassProperties) -> f64 {
     0.5 * mass.mass() * state.linear.velocity.length_squared()
         + 0.5 * mass.inertia() * state.angular.angular_velocity.powi(2)
 }
+
+/// What acts on a body during one step, kept in two parts because the integrators treat them
+/// differently: the forces the scene applies (the band), and damping.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Forces {
+    pub applied: Wrench,
+    pub damping: Wrench,
+}
+
+impl Forces {
+    pub const ZERO: Self = Self {
+        applied: Wrench::ZERO,
+        damping: Wrench::ZERO,
+    };
+
+    pub fn total(&self) -> Wrench {
+        self.applied + self.damping
+    }
+}
+
+/// Every force law acting on one body during a step, so that an integrator can evaluate the
+/// forces at any intermediate state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ForceModel {
+    pub mass: MassProperties,
+    pub band: Option<BandEnds>,
+    pub stiffness: f64,
+    pub linear_damping: f64,
+    pub angular_damping: f64,
+}
+
+impl ForceModel {
+    /// The band's force and torque (zero without a band).
+    pub fn applied(&self, state: &BodyState) -> Wrench {
+        self.band
+            .map_or(Wrench::ZERO, |band| band.wrench(state, self.stiffness))
+    }
+
+    pub fn damping(&self, state: &BodyState) -> Wrench {
+        damping_wrench(state, &self.mass, self.linear_damping, self.angular_damping)
+    }
+
+    /// Steps 1 and 3 of the total reaction at `state`: every force and torque.
+    pub fn forces(&self, state: &BodyState) -> Forces {
+        Forces {
+            applied: self.applied(state),
+            damping: self.damping(state),
+        }
+    }
+
+    /// Velocity decay rates: b/m for the linear velocity, c for the angular one.
+    pub fn damping_rates(&self) -> (f64, f64) {
+        (
+            self.linear_damping * self.mass.inverse_mass(),
+            self.angular_damping,
+        )
+    }
+
+    /// Band potential plus kinetic energy.
+    pub fn energy(&self, state: &BodyState) -> f64 {
+        kinetic_energy(state, &self.mass)
+            + self
+                .band
+                .map_or(0.0, |band| band.potential_energy(state, self.stiffness))
+    }
+}
+
+/// Angular momentum about a fixed world point: m (x − a) × v + I ω. The band's force passes
+/// through its anchor, so with no damping this is an invariant about the anchor.
+pub fn angular_momentum_about(state: &BodyState, mass: &MassProperties, point: DVec2) -> f64 {
+    mass.mass() * (state.linear.position - point).perp_dot(state.linear.velocity)
+        + mass.inertia() * state.angular.angular_velocity
+}

@@ -5,12 +5,16 @@
 
 pub mod body;
 pub mod forces;
-pub mod integrate;
+pub mod integrators;
+pub mod scenario;
 pub mod scene;
 pub mod simulation;
 
 pub use body::{AngularState, BodyState, LinearState, MassProperties, rotate};
-pub use forces::{BandEnds, Wrench, damping_wrench, kinetic_energy};
-pub use integrate::symplectic_euler;
+pub use forces::{
+    BandEnds, ForceModel, Forces, Wrench, angular_momentum_about, damping_wrench, kinetic_energy,
+};
+pub use integrators::{Integrator, UnknownIntegrator, symplectic_euler};
+pub use scenario::{Diverged, Drag, Run, Scenario};
 pub use scene::{ParamError, SCENE_SIZE, SceneParams};
 pub use simulation::Simulation;

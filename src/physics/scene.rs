@@ -7,6 +7,7 @@ use bevy::math::DVec2;
 use bevy::prelude::Resource;
 
 use super::body::MassProperties;
+use super::forces::{BandEnds, ForceModel};
 
 /// The tutorial runs one update per frame at this rate; its per-frame constants convert to
 /// per-second ones through it.
@@ -64,6 +65,17 @@ impl SceneParams {
         ParamError::check_non_negative("linear damping b", self.linear_damping)?;
         ParamError::check_non_negative("angular damping c", self.angular_damping)?;
         Ok(())
+    }
+
+    /// The force laws of this scene acting on a body, with or without a band.
+    pub fn force_model(&self, mass: MassProperties, band: Option<BandEnds>) -> ForceModel {
+        ForceModel {
+            mass,
+            band,
+            stiffness: self.stiffness,
+            linear_damping: self.linear_damping,
+            angular_damping: self.angular_damping,
+        }
     }
 
     /// The box's mass properties; fails on a bad mass or size.

@@ -4,8 +4,8 @@
 use bevy::math::DVec2;
 
 use super::body::{BodyState, MassProperties};
-use super::forces::{BandEnds, Wrench, damping_wrench, kinetic_energy};
-use super::integrate::symplectic_euler;
+use super::forces::{BandEnds, ForceModel, Forces};
+use super::integrators::Integrator;
 use super::scene::{ParamError, SceneParams};
 
 #[derive(Clone, Debug)]
@@ -14,6 +14,7 @@ pub struct Simulation {
     pub mass: MassProperties,
     pub state: BodyState,
     pub band: Option<BandEnds>,
+    pub integrator: Integrator,
 }
 
 impl Simulation {
@@ -25,6 +26,7 @@ impl Simulation {
             mass: params.mass_properties()?,
             state: BodyState::at_rest(DVec2::ZERO),
             band: None,
+            integrator: Integrator::default(),
         })
     }
 
@@ -40,26 +42,25 @@ impl Simulation {
         self.band = None;
     }
 
-    /// Steps 1 and 3 of the total reaction: the sum of all forces and of their torques.
-    pub fn total_wrench(&self) -> Wrench {
-        let p = &self.params;
-        let band = self
-            .band
-            .map_or(Wrench::ZERO, |band| band.wrench(&self.state, p.stiffness));
-        band + damping_wrench(&self.state, &self.mass, p.linear_damping, p.angular_damping)
+    /// Every force law acting on the box now.
+    pub fn model(&self) -> ForceModel {
+        self.params.force_model(self.mass, self.band)
     }
 
-    /// One fixed step of `dt` seconds.
+    /// Steps 1 and 3 of the total reaction: the sum of all forces and of their torques.
+    pub fn forces(&self) -> Forces {
+        self.model().forces(&self.state)
+    }
+
+    /// One step of `dt` seconds with the chosen integrator.
     pub fn step(&mut self, dt: f64) {
-        let total = self.total_wrench();
-        symplectic_euler(&mut self.state, &self.mass, total, dt);
+        let model = self.model();
+        let start = model.forces(&self.state);
+        self.integrator.step(&mut self.state, &model, start, dt);
     }
 
     /// Kinetic plus band energy.
     pub fn energy(&self) -> f64 {
-        kinetic_energy(&self.state, &self.mass)
-            + self.band.map_or(0.0, |band| {
-                band.potential_energy(&self.state, self.params.stiffness)
-            })
+        self.model().energy(&self.state)
     }
 }

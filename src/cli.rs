@@ -1,0 +1,263 @@
+//! The command line: play (the default), `simulate` and `report`.
+//!
+//! Every value is checked before anything runs: a bad argument gets a message naming it and
+//! exit status 2, never a panic.
+
+use std::io::{self, BufWriter, Write};
+
+use bevy::math::DVec2;
+use clap::{Args, Parser, Subcommand};
+
+use crate::physics::{
+    AngularState, BodyState, Diverged, Drag, Integrator, LinearState, Run, Scenario, SceneParams,
+};
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "rubber_band_box",
+    version,
+    about = "A 2D rigid box pulled by a rubber band. With no command, play."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Open the game window (the default).
+    Play(PlayArgs),
+    /// Run a scene headless and write its trajectory as CSV to stdout.
+    Simulate(Box<SimulateArgs>),
+    /// Measure each integrator's speed against its error; print and write tables and a plot.
+    Report(crate::report::ReportArgs),
+}
+
+#[derive(Args, Debug, Default)]
+pub struct PlayArgs {
+    /// Integrator to start with (the I key cycles them).
+    #[arg(long, value_parser = parse_integrator)]
+    pub integrator: Option<Integrator>,
+    /// Fixed physics steps per second.
+    #[arg(long, value_parser = positive)]
+    pub step_rate: Option<f64>,
+}
+
+#[derive(Args, Debug)]
+pub struct SimulateArgs {
+    /// Named scene: seed, diagonal, stiff, light, spin, spin-band, far, undamped,
+    /// zero-length, rest.
+    #[arg(long, default_value = "seed", value_parser = parse_scene)]
+    pub scene: Scenario,
+    /// euler, symplectic, verlet, rk4, implicit or seed [default: the game's].
+    #[arg(long, value_parser = parse_integrator)]
+    pub integrator: Option<Integrator>,
+    /// Fixed step in seconds.
+    #[arg(long, default_value_t = 0.01, value_parser = positive, allow_negative_numbers = true)]
+    pub dt: f64,
+    /// Number of steps.
+    #[arg(long, default_value_t = 600, allow_negative_numbers = true)]
+    pub steps: u64,
+    /// START:END:X,Y: from step START the band pulls the corner nearest (X,Y) toward (X,Y),
+    /// for steps START <= s < END. Repeatable; replaces the scene's own drags.
+    #[arg(long = "drag", value_parser = parse_drag, allow_hyphen_values = true)]
+    pub drags: Vec<Drag>,
+    /// Band stiffness k.
+    #[arg(long, value_parser = non_negative, allow_negative_numbers = true)]
+    pub k: Option<f64>,
+    /// Box mass.
+    #[arg(long, value_parser = positive, allow_negative_numbers = true)]
+    pub mass: Option<f64>,
+    /// Box width.
+    #[arg(long, value_parser = positive, allow_negative_numbers = true)]
+    pub width: Option<f64>,
+    /// Box height.
+    #[arg(long, value_parser = positive, allow_negative_numbers = true)]
+    pub height: Option<f64>,
+    /// Linear damping b (force −b·v).
+    #[arg(long, value_parser = non_negative, allow_negative_numbers = true)]
+    pub linear_damping: Option<f64>,
+    /// Angular damping rate c per second.
+    #[arg(long, value_parser = non_negative, allow_negative_numbers = true)]
+    pub angular_damping: Option<f64>,
+    /// X,Y,THETA,VX,VY,OMEGA: the initial state.
+    #[arg(long, value_parser = parse_init, allow_hyphen_values = true)]
+    pub init: Option<BodyState>,
+}
+
+impl SimulateArgs {
+    /// The scene's parameters with the overrides applied.
+    pub fn params(&self) -> SceneParams {
+        let mut params = self.scene.params;
+        if let Some(k) = self.k {
+            params.stiffness = k;
+        }
+        if let Some(mass) = self.mass {
+            params.mass = mass;
+        }
+        if let Some(width) = self.width {
+            params.size.x = width;
+        }
+        if let Some(height) = self.height {
+            params.size.y = height;
+        }
+        if let Some(b) = self.linear_damping {
+            params.linear_damping = b;
+        }
+        if let Some(c) = self.angular_damping {
+            params.angular_damping = c;
+        }
+        params.step_rate_hz = 1.0 / self.dt;
+        params
+    }
+
+    pub fn run(&self) -> Result<Run, String> {
+        let drags = if self.drags.is_empty() {
+            self.scene.drags_in_steps(self.dt)
+        } else {
+            self.drags.clone()
+        };
+        Run::new(
+            self.params(),
+            self.init.unwrap_or(self.scene.initial),
+            drags,
+            self.integrator.unwrap_or_default(),
+            self.dt,
+        )
+        .map_err(|error| error.to_string())
+    }
+}
+
+pub const CSV_HEADER: &str = "step,t,x,y,theta,vx,vy,omega,energy,band";
+
+/// One CSV row: the state after `run.step` steps.
+pub fn csv_row(run: &Run) -> String {
+    let s = &run.sim.state;
+    format!(
+        "{},{},{},{},{},{},{},{},{},{}",
+        run.step,
+        run.time(),
+        s.linear.position.x,
+        s.linear.position.y,
+        s.angular.orientation,
+        s.linear.velocity.x,
+        s.linear.velocity.y,
+        s.angular.angular_velocity,
+        run.sim.energy(),
+        u8::from(run.sim.band.is_some()),
+    )
+}
+
+/// Why `simulate` stopped early.
+#[derive(Debug)]
+pub enum SimulateError {
+    Arguments(String),
+    Diverged(Diverged),
+    Output(io::Error),
+}
+
+/// Writes the trajectory to `out`: the header, row 0 (the initial state), then a row per step.
+pub fn simulate(args: &SimulateArgs, out: impl Write) -> Result<(), SimulateError> {
+    let mut run = args.run().map_err(SimulateError::Arguments)?;
+    let mut out = BufWriter::new(out);
+    let write = |out: &mut BufWriter<_>, line: &str| writeln!(out, "{line}");
+    write(&mut out, CSV_HEADER).map_err(SimulateError::Output)?;
+    write(&mut out, &csv_row(&run)).map_err(SimulateError::Output)?;
+    for _ in 0..args.steps {
+        if let Err(diverged) = run.advance() {
+            out.flush().map_err(SimulateError::Output)?;
+            return Err(SimulateError::Diverged(diverged));
+        }
+        write(&mut out, &csv_row(&run)).map_err(SimulateError::Output)?;
+    }
+    out.flush().map_err(SimulateError::Output)
+}
+
+fn parse_number(text: &str) -> Result<f64, String> {
+    let value: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{text}' is not a number"))?;
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(format!("'{text}' is not a finite number"))
+    }
+}
+
+fn positive(text: &str) -> Result<f64, String> {
+    let value = parse_number(text)?;
+    if value > 0.0 {
+        Ok(value)
+    } else {
+        Err(format!("must be greater than zero, got {value}"))
+    }
+}
+
+fn non_negative(text: &str) -> Result<f64, String> {
+    let value = parse_number(text)?;
+    if value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(format!("must be zero or more, got {value}"))
+    }
+}
+
+fn parse_integrator(text: &str) -> Result<Integrator, String> {
+    text.parse().map_err(|error| format!("{error}"))
+}
+
+fn parse_scene(text: &str) -> Result<Scenario, String> {
+    Scenario::named(text).map_err(|error| error.to_string())
+}
+
+fn parse_numbers<const N: usize>(text: &str, what: &str) -> Result<[f64; N], String> {
+    let parts: Vec<&str> = text.split(',').collect();
+    if parts.len() != N {
+        return Err(format!(
+            "expected {what} ({N} numbers separated by commas), got '{text}'"
+        ));
+    }
+    let mut values = [0.0; N];
+    for (value, part) in values.iter_mut().zip(parts) {
+        *value = parse_number(part)?;
+    }
+    Ok(values)
+}
+
+fn parse_drag(text: &str) -> Result<Drag, String> {
+    let malformed = || format!("expected START:END:X,Y (for example 0:300:200,120), got '{text}'");
+    let mut parts = text.splitn(3, ':');
+    let (Some(start), Some(end), Some(target)) = (parts.next(), parts.next(), parts.next()) else {
+        return Err(malformed());
+    };
+    let step = |s: &str| {
+        s.trim()
+            .parse::<u64>()
+            .map_err(|_| format!("'{s}' is not a step number (in '{text}')"))
+    };
+    let (start, end) = (step(start)?, step(end)?);
+    if start >= end {
+        return Err(format!("the drag must end after it starts, got '{text}'"));
+    }
+    let [x, y] = parse_numbers::<2>(target, "X,Y")?;
+    Ok(Drag {
+        start,
+        end,
+        target: DVec2::new(x, y),
+    })
+}
+
+fn parse_init(text: &str) -> Result<BodyState, String> {
+    let [x, y, theta, vx, vy, omega] = parse_numbers::<6>(text, "X,Y,THETA,VX,VY,OMEGA")?;
+    Ok(BodyState {
+        linear: LinearState {
+            position: DVec2::new(x, y),
+            velocity: DVec2::new(vx, vy),
+        },
+        angular: AngularState {
+            orientation: theta,
+            angular_velocity: omega,
+        },
+    })
+}

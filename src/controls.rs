@@ -1,0 +1,35 @@
+//! Keyboard controls: `I` cycles the integrator. The window title names the one in use.
+
+use bevy::prelude::*;
+use bevy::window::PrimaryWindow;
+
+use crate::physics::Integrator;
+
+pub struct ControlsPlugin;
+
+impl Plugin for ControlsPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_systems(Update, (cycle_integrator, show_integrator_in_title).chain());
+    }
+}
+
+pub const CYCLE_INTEGRATOR: KeyCode = KeyCode::KeyI;
+
+/// The switch takes effect on the next fixed step.
+pub fn cycle_integrator(keys: Res<ButtonInput<KeyCode>>, mut integrator: ResMut<Integrator>) {
+    if keys.just_pressed(CYCLE_INTEGRATOR) {
+        *integrator = integrator.next();
+        info!("integrator: {}", *integrator);
+    }
+}
+
+fn show_integrator_in_title(
+    integrator: Res<Integrator>,
+    mut window: Option<Single<&mut Window, With<PrimaryWindow>>>,
+) {
+    if let Some(window) = window.as_deref_mut()
+        && integrator.is_changed()
+    {
+        window.title = format!("Rubber Band Box (integrator: {}, I to change)", *integrator);
+    }
+}

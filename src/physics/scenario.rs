@@ -1,0 +1,292 @@
+//! Scripted runs: a scene, an initial state, and drags of the band, stepped by one integrator.
+//! The `simulate` command, the report and the tests all run through [`Run`].
+
+use std::fmt;
+
+use bevy::math::DVec2;
+
+use super::body::BodyState;
+use super::integrators::Integrator;
+use super::scene::{ParamError, SceneParams};
+use super::simulation::Simulation;
+
+/// During steps `start <= s < end` the band pulls toward `target`, attached at the step
+/// `start` to the corner nearest `target`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Drag {
+    pub start: u64,
+    pub end: u64,
+    pub target: DVec2,
+}
+
+/// A named scene: parameters, initial state and drags given in seconds, so that the same
+/// scene can be run at any step.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scenario {
+    pub name: &'static str,
+    pub summary: &'static str,
+    pub params: SceneParams,
+    pub initial: BodyState,
+    /// (from, until, target) in seconds; `until` may be infinite.
+    pub drags: Vec<(f64, f64, DVec2)>,
+}
+
+/// Where the seed drag pulls: up and to the right of the box, off its diagonals.
+pub const SEED_DRAG_TARGET: DVec2 = DVec2::new(200.0, 120.0);
+
+impl Scenario {
+    pub const NAMES: [&'static str; 10] = [
+        "seed",
+        "diagonal",
+        "stiff",
+        "light",
+        "spin",
+        "spin-band",
+        "far",
+        "undamped",
+        "zero-length",
+        "rest",
+    ];
+
+    pub fn named(name: &str) -> Result<Self, UnknownScenario> {
+        let name = Self::NAMES
+            .into_iter()
+            .find(|&known| known == name)
+            .ok_or_else(|| UnknownScenario(name.to_owned()))?;
+        let seed = SceneParams::seed();
+        let at_rest = BodyState::default();
+        let spinning = {
+            let mut state = at_rest;
+            state.angular.angular_velocity = 100.0;
+            state
+        };
+        let held = f64::INFINITY;
+        let (summary, params, initial, drags) = match name {
+            "seed" => (
+                "the tutorial's scene: pulled for 2 s, then released",
+                seed,
+                at_rest,
+                vec![(0.0, 2.0, SEED_DRAG_TARGET)],
+            ),
+            "diagonal" => (
+                "pulled along the diagonal through the centre: no torque, a 1D damped oscillator",
+                seed,
+                at_rest,
+                vec![(0.0, held, DVec2::new(150.0, 150.0))],
+            ),
+            "stiff" => (
+                "a stiff band, k = 1e5 (omega dt = 2.83 at 100 Hz)",
+                SceneParams {
+                    stiffness: 1e5,
+                    ..seed
+                },
+                at_rest,
+                vec![(0.0, held, SEED_DRAG_TARGET)],
+            ),
+            "light" => (
+                "a light box, mass 1e-3, with the seed band",
+                SceneParams { mass: 1e-3, ..seed },
+                at_rest,
+                vec![(0.0, held, SEED_DRAG_TARGET)],
+            ),
+            "spin" => ("spinning at 100 rad/s, no band", seed, spinning, vec![]),
+            "spin-band" => (
+                "spinning at 100 rad/s, with the band",
+                seed,
+                spinning,
+                vec![(0.0, held, SEED_DRAG_TARGET)],
+            ),
+            "far" => (
+                "the anchor 1e6 units away",
+                seed,
+                at_rest,
+                vec![(0.0, held, DVec2::new(1e6, 0.0))],
+            ),
+            "undamped" => (
+                "no damping (b = c = 0), band held: energy and angular momentum are invariants",
+                SceneParams {
+                    linear_damping: 0.0,
+                    angular_damping: 0.0,
+                    ..seed
+                },
+                at_rest,
+                vec![(0.0, held, SEED_DRAG_TARGET)],
+            ),
+            "zero-length" => (
+                "the anchor exactly at the corner: no force at all",
+                seed,
+                at_rest,
+                vec![(0.0, held, DVec2::new(30.0, 30.0))],
+            ),
+            _ => ("the box at rest, no band", seed, at_rest, vec![]),
+        };
+        Ok(Self {
+            name,
+            summary,
+            params,
+            initial,
+            drags,
+        })
+    }
+
+    /// The drags in steps of `dt`.
+    pub fn drags_in_steps(&self, dt: f64) -> Vec<Drag> {
+        let to_step = |t: f64| {
+            if t.is_finite() {
+                (t / dt).round() as u64
+            } else {
+                u64::MAX
+            }
+        };
+        self.drags
+            .iter()
+            .map(|&(from, until, target)| Drag {
+                start: to_step(from),
+                end: to_step(until),
+                target,
+            })
+            .collect()
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UnknownScenario(pub String);
+
+impl fmt::Display for UnknownScenario {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "unknown scene '{}' (expected one of: {})",
+            self.0,
+            Scenario::NAMES.join(", ")
+        )
+    }
+}
+
+impl std::error::Error for UnknownScenario {}
+
+/// How far above the physically reachable energy a run may go before it counts as diverged.
+/// With damping b, c >= 0 and a fixed anchor the energy can only fall, so the reachable
+/// energy is the initial energy plus the band's energy at each attachment.
+pub const DIVERGENCE_FACTOR: f64 = 1e3;
+
+/// A run blew up: its state became non-finite or its energy left every physical bound.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Diverged {
+    pub integrator: Integrator,
+    pub step: u64,
+    pub time: f64,
+}
+
+impl fmt::Display for Diverged {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "integrator {} diverged at step {} (t = {} s)",
+            self.integrator, self.step, self.time
+        )
+    }
+}
+
+impl std::error::Error for Diverged {}
+
+/// One scripted run, stepped one fixed step at a time.
+#[derive(Clone, Debug)]
+pub struct Run {
+    pub sim: Simulation,
+    pub dt: f64,
+    /// Steps taken so far.
+    pub step: u64,
+    drags: Vec<Drag>,
+    active_drag: Option<usize>,
+    energy_budget: f64,
+}
+
+impl Run {
+    pub fn new(
+        params: SceneParams,
+        initial: BodyState,
+        drags: Vec<Drag>,
+        integrator: Integrator,
+        dt: f64,
+    ) -> Result<Self, ParamError> {
+        ParamError::check_positive("dt", dt)?;
+        let mut sim = Simulation::new(params)?;
+        sim.state = initial;
+        sim.integrator = integrator;
+        let energy_budget = sim.energy();
+        let mut run = Self {
+            sim,
+            dt,
+            step: 0,
+            drags,
+            active_drag: None,
+            energy_budget,
+        };
+        run.apply_drags();
+        Ok(run)
+    }
+
+    pub fn of(scenario: &Scenario, integrator: Integrator, dt: f64) -> Result<Self, ParamError> {
+        Self::new(
+            scenario.params,
+            scenario.initial,
+            scenario.drags_in_steps(dt),
+            integrator,
+            dt,
+        )
+    }
+
+    pub fn time(&self) -> f64 {
+        self.step as f64 * self.dt
+    }
+
+    /// Attaches or releases the band as the drags say for the coming step.
+    fn apply_drags(&mut self) {
+        let s = self.step;
+        let current = self
+            .drags
+            .iter()
+            .rposition(|drag| drag.start <= s && s < drag.end);
+        if current == self.active_drag {
+            return;
+        }
+        self.active_drag = current;
+        match current {
+            Some(index) => {
+                self.sim.grab(self.drags[index].target);
+                self.energy_budget += self.sim.model().band.map_or(0.0, |band| {
+                    band.potential_energy(&self.sim.state, self.sim.params.stiffness)
+                });
+            }
+            None => self.sim.release(),
+        }
+    }
+
+    /// One step; `Err` once the state is no longer finite or its energy left every bound.
+    pub fn advance(&mut self) -> Result<(), Diverged> {
+        self.sim.step(self.dt);
+        self.step += 1;
+        let energy = self.sim.energy();
+        if !self.sim.state.is_finite()
+            || !energy.is_finite()
+            || energy > DIVERGENCE_FACTOR * self.energy_budget + 1.0
+        {
+            return Err(Diverged {
+                integrator: self.sim.integrator,
+                step: self.step,
+                time: self.time(),
+            });
+        }
+        self.apply_drags();
+        Ok(())
+    }
+
+    /// `steps` more steps, or the divergence that stopped them.
+    pub fn advance_by(&mut self, steps: u64) -> Result<(), Diverged> {
+        for _ in 0..steps {
+            self.advance()?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,526 @@
+//! The speed-against-error report: a work-precision sweep, a stability table and the hard
+//! cases, for every integrator, measured in one process.
+//!
+//! Errors are final-pose errors: the largest distance between where a corner of the box is
+//! and where the reference says it should be (px). Costs are nanoseconds of this machine per
+//! simulated second (the median of repeated runs of the core alone, no `App`).
+
+use std::error::Error;
+use std::fmt::Write as _;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use bevy::math::DVec2;
+use clap::Args;
+use plotters::prelude::*;
+
+use crate::physics::{BodyState, Integrator, MassProperties, Run, Scenario, SceneParams};
+
+#[derive(Args, Debug)]
+pub struct ReportArgs {
+    /// Where to write the CSV files and the plot.
+    #[arg(long, default_value = "target/report")]
+    pub out: PathBuf,
+    /// A reduced sweep that runs in well under a minute (CI's smoke test).
+    #[arg(long)]
+    pub quick: bool,
+}
+
+/// The steps swept, from 1/30 s to 1/10000 s.
+fn steps_swept(quick: bool) -> Vec<f64> {
+    let rates: &[f64] = if quick {
+        &[30.0, 100.0, 1000.0]
+    } else {
+        &[30.0, 64.0, 100.0, 300.0, 1000.0, 3000.0, 10000.0]
+    };
+    rates.iter().map(|rate| 1.0 / rate).collect()
+}
+
+/// A scene of the work-precision sweep and how its reference is obtained.
+struct WorkScene {
+    scenario: Scenario,
+    /// Simulated time; short for the chaotic stiff band.
+    horizon: f64,
+    /// Step of the fine RK4 reference (unused where the answer is exact).
+    reference_step: f64,
+    exact: Option<fn(f64) -> BodyState>,
+    /// Report the energy drift (undamped scenes, where energy is an invariant).
+    energy_invariant: bool,
+}
+
+fn work_scenes() -> Vec<WorkScene> {
+    let named = |name: &str| Scenario::named(name).expect("a built-in scene");
+    vec![
+        WorkScene {
+            scenario: named("diagonal"),
+            horizon: 4.0,
+            reference_step: 0.0,
+            exact: Some(diagonal_exact),
+            energy_invariant: false,
+        },
+        WorkScene {
+            scenario: named("seed"),
+            horizon: 4.0,
+            reference_step: 1e-5,
+            exact: None,
+            energy_invariant: false,
+        },
+        WorkScene {
+            scenario: named("stiff"),
+            horizon: 0.1,
+            reference_step: 1e-6,
+            exact: None,
+            energy_invariant: false,
+        },
+        WorkScene {
+            scenario: named("undamped"),
+            horizon: 10.0,
+            reference_step: 1e-5,
+            exact: None,
+            energy_invariant: true,
+        },
+    ]
+}
+
+/// The diagonal pull in closed form: the corner (30, 30) pulled toward (150, 150) moves the
+/// box along the diagonal as m u'' + b u' + k u = 0 with u = x − 120, u(0) = −120, u'(0) = 0.
+pub fn diagonal_exact(t: f64) -> BodyState {
+    let p = SceneParams::seed();
+    let equilibrium = 150.0 - 30.0;
+    let u0 = -equilibrium;
+    let gamma = p.linear_damping / (2.0 * p.mass);
+    let omega_d = (p.stiffness / p.mass - gamma * gamma).sqrt();
+    let (sin, cos) = (omega_d * t).sin_cos();
+    let decay = (-gamma * t).exp();
+    let u = decay * (u0 * cos + gamma * u0 / omega_d * sin);
+    let du = decay * (-(gamma * gamma / omega_d + omega_d) * u0 * sin);
+    let mut state = BodyState::at_rest(DVec2::splat(equilibrium + u));
+    state.linear.velocity = DVec2::splat(du);
+    state
+}
+
+/// The largest distance between corresponding corners of two poses.
+pub fn pose_error(a: &BodyState, b: &BodyState, mass: &MassProperties) -> f64 {
+    mass.corners()
+        .iter()
+        .map(|&c| a.local_to_world(c).distance(b.local_to_world(c)))
+        .fold(0.0, f64::max)
+}
+
+/// A fine RK4 run of `scenario` to time `t`, with an even number of steps so that drags at
+/// whole seconds fall on step boundaries.
+pub fn reference_state(scenario: &Scenario, t: f64, step: f64) -> BodyState {
+    let n = ((t / step).ceil() as u64).max(2).next_multiple_of(2);
+    let mut run = Run::of(scenario, Integrator::Rk4, t / n as f64).expect("valid scene");
+    run.advance_by(n)
+        .expect("the reference converges on every built-in scene");
+    run.sim.state
+}
+
+#[derive(Clone, Debug)]
+pub struct WorkPoint {
+    pub scene: &'static str,
+    pub integrator: Integrator,
+    pub dt: f64,
+    pub steps: u64,
+    /// None where the run diverged.
+    pub error: Option<f64>,
+    pub diverged_at: Option<u64>,
+    pub energy_drift: Option<f64>,
+    pub ns_per_simulated_second: f64,
+}
+
+/// Median wall time of `reps` runs of `work`, in nanoseconds.
+fn median_ns(reps: usize, mut work: impl FnMut()) -> f64 {
+    let mut times: Vec<f64> = (0..reps)
+        .map(|_| {
+            let start = Instant::now();
+            work();
+            start.elapsed().as_nanos() as f64
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[times.len() / 2]
+}
+
+fn work_precision(quick: bool) -> Vec<WorkPoint> {
+    let mut points = Vec::new();
+    for scene in work_scenes() {
+        let name = scene.scenario.name;
+        let mass = scene.scenario.params.mass_properties().expect("valid");
+        for dt in steps_swept(quick) {
+            let steps = (scene.horizon / dt).round() as u64;
+            let t = steps as f64 * dt;
+            let reference = match scene.exact {
+                Some(exact) => exact(t),
+                None => reference_state(&scene.scenario, t, scene.reference_step),
+            };
+            for integrator in Integrator::ALL {
+                let fresh = || Run::of(&scene.scenario, integrator, dt).expect("valid");
+                let mut run = fresh();
+                let mut energy_drift: f64 = 0.0;
+                let e0 = run.sim.energy();
+                let mut outcome = Ok(());
+                for _ in 0..steps {
+                    outcome = run.advance();
+                    if outcome.is_err() {
+                        break;
+                    }
+                    energy_drift = energy_drift.max((run.sim.energy() - e0).abs() / e0);
+                }
+                let diverged_at = outcome.err().map(|d| d.step);
+                let reps = if quick { 3 } else { 7 };
+                let ns = median_ns(reps, || {
+                    let mut run = fresh();
+                    let _ = std::hint::black_box(run.advance_by(steps));
+                });
+                points.push(WorkPoint {
+                    scene: name,
+                    integrator,
+                    dt,
+                    steps,
+                    error: diverged_at
+                        .is_none()
+                        .then(|| pose_error(&run.sim.state, &reference, &mass)),
+                    diverged_at,
+                    energy_drift: (scene.energy_invariant && diverged_at.is_none())
+                        .then_some(energy_drift),
+                    ns_per_simulated_second: ns / t,
+                });
+            }
+        }
+    }
+    points
+}
+
+/// Whether the seed scene with the band held at stiffness `k` stays bounded for 20 s.
+fn stable_at(integrator: Integrator, k: f64, rate: f64) -> bool {
+    let mut scenario = Scenario::named("seed").expect("built-in");
+    scenario.params.stiffness = k;
+    scenario.drags = vec![(
+        0.0,
+        f64::INFINITY,
+        crate::physics::scenario::SEED_DRAG_TARGET,
+    )];
+    let dt = 1.0 / rate;
+    let mut run = Run::of(&scenario, integrator, dt).expect("valid");
+    run.advance_by((20.0 * rate) as u64).is_ok()
+}
+
+pub const STIFFEST_TRIED: f64 = 1e12;
+
+#[derive(Clone, Debug)]
+pub struct StabilityRow {
+    pub integrator: Integrator,
+    pub rate: f64,
+    /// None: stable at every k tried, up to [`STIFFEST_TRIED`].
+    pub largest_stable_k: Option<f64>,
+}
+
+impl StabilityRow {
+    /// ω·dt of the stiffest mode, ω = 2·sqrt(k/m), at the largest stable k.
+    pub fn omega_dt(&self) -> Option<f64> {
+        let mass = SceneParams::seed().mass;
+        self.largest_stable_k
+            .map(|k| 2.0 * (k / mass).sqrt() / self.rate)
+    }
+}
+
+/// Bisection on log10 k between 1e-2 and 1e12.
+fn stability_table() -> Vec<StabilityRow> {
+    let mut rows = Vec::new();
+    for rate in [64.0, 100.0] {
+        for integrator in Integrator::ALL {
+            let largest_stable_k = if stable_at(integrator, STIFFEST_TRIED, rate) {
+                None
+            } else {
+                let (mut low, mut high) = (-2.0_f64, STIFFEST_TRIED.log10());
+                for _ in 0..40 {
+                    let middle = 0.5 * (low + high);
+                    if stable_at(integrator, 10f64.powf(middle), rate) {
+                        low = middle;
+                    } else {
+                        high = middle;
+                    }
+                }
+                Some(10f64.powf(low))
+            };
+            rows.push(StabilityRow {
+                integrator,
+                rate,
+                largest_stable_k,
+            });
+        }
+    }
+    rows
+}
+
+/// The hard cases: for each, a scene, overrides and a length.
+pub struct HardCase {
+    pub name: String,
+    pub scenario: Scenario,
+    pub rate: f64,
+    pub steps: u64,
+}
+
+pub fn hard_cases(quick: bool) -> Vec<HardCase> {
+    let named = |name: &str| Scenario::named(name).expect("built-in");
+    let mut cases = Vec::new();
+    for rate in [100.0, 64.0] {
+        for k in [20.0, 1e3, 1e5, 1e7, 1e9] {
+            let mut scenario = named("stiff");
+            scenario.params.stiffness = k;
+            cases.push(HardCase {
+                name: format!("stiff band k = {k:e} at {rate} Hz"),
+                scenario,
+                rate,
+                steps: (10.0 * rate) as u64,
+            });
+        }
+    }
+    for (name, steps) in [
+        ("light", 1000),
+        ("spin", 1000),
+        ("spin-band", 1000),
+        ("far", 1000),
+        ("zero-length", 1000),
+        ("diagonal", 1000),
+        ("undamped", if quick { 100_000 } else { 1_000_000 }),
+    ] {
+        cases.push(HardCase {
+            name: format!("{name}: {}", named(name).summary),
+            scenario: named(name),
+            rate: 100.0,
+            steps,
+        });
+    }
+    cases
+}
+
+/// For each hard case and integrator: `None` if bounded throughout, else the diverging step.
+fn run_hard_cases(quick: bool) -> Vec<(HardCase, Vec<Option<u64>>)> {
+    hard_cases(quick)
+        .into_iter()
+        .map(|case| {
+            let outcomes = Integrator::ALL
+                .iter()
+                .map(|&integrator| {
+                    let mut run =
+                        Run::of(&case.scenario, integrator, 1.0 / case.rate).expect("valid");
+                    run.advance_by(case.steps).err().map(|d| d.step)
+                })
+                .collect();
+            (case, outcomes)
+        })
+        .collect()
+}
+
+fn format_option(value: Option<f64>, missing: &str) -> String {
+    value.map_or(missing.to_owned(), |v| format!("{v:.3e}"))
+}
+
+pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
+    fs::create_dir_all(&args.out)?;
+    let started = Instant::now();
+    let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
+
+    let points = work_precision(args.quick);
+    let mut table = String::new();
+    writeln!(
+        table,
+        "## Work-precision (final pose error in px; cost in ns per simulated second)\n"
+    )?;
+    writeln!(table, "| scene | dt (s) | {} |", names.join(" | "))?;
+    writeln!(table, "|---|---|{}", "---|".repeat(names.len()))?;
+    let mut csv = String::from(
+        "scene,integrator,dt,steps,error_px,energy_drift,ns_per_simulated_second,diverged_at_step\n",
+    );
+    for chunk in points.chunk_by(|a, b| a.scene == b.scene && a.dt == b.dt) {
+        let cells: Vec<String> = chunk
+            .iter()
+            .map(|p| match (p.error, p.diverged_at) {
+                (Some(error), _) => {
+                    let drift = p
+                        .energy_drift
+                        .map_or(String::new(), |d| format!(", dE {d:.1e}"));
+                    format!("{error:.1e}{drift} / {:.0}", p.ns_per_simulated_second)
+                }
+                (None, Some(step)) => format!("diverged @{step}"),
+                (None, None) => "?".to_owned(),
+            })
+            .collect();
+        writeln!(
+            table,
+            "| {} | 1/{:.0} | {} |",
+            chunk[0].scene,
+            1.0 / chunk[0].dt,
+            cells.join(" | ")
+        )?;
+        for p in chunk {
+            writeln!(
+                csv,
+                "{},{},{},{},{},{},{},{}",
+                p.scene,
+                p.integrator,
+                p.dt,
+                p.steps,
+                p.error.map_or(String::new(), |e| e.to_string()),
+                p.energy_drift.map_or(String::new(), |e| e.to_string()),
+                p.ns_per_simulated_second,
+                p.diverged_at.map_or(String::new(), |s| s.to_string()),
+            )?;
+        }
+    }
+    fs::write(args.out.join("work_precision.csv"), csv)?;
+
+    let stability = stability_table();
+    writeln!(
+        table,
+        "\n## Stability: largest stable k (seed scene, band held, 20 s)\n"
+    )?;
+    writeln!(
+        table,
+        "| integrator | k at 64 Hz | omega dt | k at 100 Hz | omega dt |"
+    )?;
+    writeln!(table, "|---|---|---|---|---|")?;
+    let mut csv = String::from("integrator,rate_hz,largest_stable_k,omega_dt\n");
+    for integrator in Integrator::ALL {
+        let rows: Vec<&StabilityRow> = stability
+            .iter()
+            .filter(|r| r.integrator == integrator)
+            .collect();
+        let cell = |r: &StabilityRow| {
+            format!(
+                "{} | {}",
+                format_option(r.largest_stable_k, &format!("> {STIFFEST_TRIED:e}")),
+                format_option(r.omega_dt(), "any")
+            )
+        };
+        writeln!(
+            table,
+            "| {integrator} | {} | {} |",
+            cell(rows[0]),
+            cell(rows[1])
+        )?;
+        for r in rows {
+            writeln!(
+                csv,
+                "{},{},{},{}",
+                integrator,
+                r.rate,
+                r.largest_stable_k
+                    .map_or("inf".to_owned(), |k| k.to_string()),
+                r.omega_dt().map_or("inf".to_owned(), |w| w.to_string()),
+            )?;
+        }
+    }
+    fs::write(args.out.join("stability.csv"), csv)?;
+
+    let hard = run_hard_cases(args.quick);
+    writeln!(
+        table,
+        "\n## Hard cases: bounded (ok) or diverged at step N\n"
+    )?;
+    writeln!(table, "| case | steps | {} |", names.join(" | "))?;
+    writeln!(table, "|---|---|{}", "---|".repeat(names.len()))?;
+    let mut csv = String::from("case,rate_hz,steps,integrator,diverged_at_step\n");
+    for (case, outcomes) in &hard {
+        let cells: Vec<String> = outcomes
+            .iter()
+            .map(|o| o.map_or("ok".to_owned(), |s| format!("diverged @{s}")))
+            .collect();
+        writeln!(
+            table,
+            "| {} | {} | {} |",
+            case.name,
+            case.steps,
+            cells.join(" | ")
+        )?;
+        for (integrator, outcome) in Integrator::ALL.iter().zip(outcomes) {
+            writeln!(
+                csv,
+                "\"{}\",{},{},{},{}",
+                case.name,
+                case.rate,
+                case.steps,
+                integrator,
+                outcome.map_or(String::new(), |s| s.to_string())
+            )?;
+        }
+    }
+    fs::write(args.out.join("hard_cases.csv"), csv)?;
+
+    plot_work_precision(&points, &args.out.join("work_precision.svg"))?;
+    writeln!(
+        table,
+        "\nWritten to {} in {:.1} s.",
+        args.out.display(),
+        started.elapsed().as_secs_f64()
+    )?;
+    fs::write(args.out.join("report.md"), &table)?;
+    print!("{table}");
+    Ok(())
+}
+
+/// Error (log x) against cost (log y), a panel per scene, a line per integrator; diverged
+/// runs are red crosses at the right edge.
+fn plot_work_precision(points: &[WorkPoint], path: &Path) -> Result<(), Box<dyn Error>> {
+    let root = SVGBackend::new(path, (1400, 1000)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let scenes: Vec<&str> = work_scenes().iter().map(|s| s.scenario.name).collect();
+    let panels = root.split_evenly((2, 2));
+    for (panel, scene) in panels.iter().zip(&scenes) {
+        let here: Vec<&WorkPoint> = points.iter().filter(|p| p.scene == *scene).collect();
+        let errors = here.iter().filter_map(|p| p.error).map(|e| e.max(1e-16));
+        let (mut x_min, mut x_max) = (f64::INFINITY, 0.0_f64);
+        for e in errors {
+            x_min = x_min.min(e);
+            x_max = x_max.max(e);
+        }
+        let x_min = (x_min / 3.0).min(1e-12);
+        let x_max = x_max.max(1.0) * 30.0;
+        let costs = here.iter().map(|p| p.ns_per_simulated_second);
+        let y_min = costs.clone().fold(f64::INFINITY, f64::min) / 2.0;
+        let y_max = costs.fold(0.0, f64::max) * 2.0;
+        let mut chart = ChartBuilder::on(panel)
+            .caption(format!("{scene}: cost against error"), ("sans-serif", 20))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d((x_min..x_max).log_scale(), (y_min..y_max).log_scale())?;
+        chart
+            .configure_mesh()
+            .x_desc("final pose error (px)")
+            .y_desc("ns per simulated second")
+            .x_label_formatter(&|x| format!("{x:.0e}"))
+            .y_label_formatter(&|y| format!("{y:.0e}"))
+            .draw()?;
+        for (index, integrator) in Integrator::ALL.iter().enumerate() {
+            let colour = Palette99::pick(index).to_rgba();
+            let line: Vec<(f64, f64)> = here
+                .iter()
+                .filter(|p| p.integrator == *integrator)
+                .filter_map(|p| p.error.map(|e| (e.max(1e-16), p.ns_per_simulated_second)))
+                .collect();
+            chart
+                .draw_series(LineSeries::new(line.clone(), colour.stroke_width(2)))?
+                .label(integrator.name())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
+            chart.draw_series(line.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+            let diverged = here
+                .iter()
+                .filter(|p| p.integrator == *integrator && p.diverged_at.is_some())
+                .map(|p| Cross::new((x_max / 2.0, p.ns_per_simulated_second), 5, RED));
+            chart.draw_series(diverged)?;
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .position(SeriesLabelPosition::UpperLeft)
+            .draw()?;
+    }
+    root.present()?;
+    Ok(())
+}

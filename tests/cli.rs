@@ -1,0 +1,152 @@
+//! The `simulate` command, run as a user runs it.
+
+use std::process::{Command, Output};
+
+fn simulate(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
+        .arg("simulate")
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8(output.stdout.clone()).unwrap()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8(output.stderr.clone()).unwrap()
+}
+
+#[test]
+fn simulate_writes_a_header_and_a_row_per_step_from_the_initial_state() {
+    let output = simulate(&["--steps", "10"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(lines[0].starts_with("step,t,x,y,theta,vx,vy,omega,energy"));
+    assert_eq!(lines.len(), 1 + 11);
+    let row0: Vec<f64> = lines[1].split(',').map(|v| v.parse().unwrap()).collect();
+    assert_eq!(&row0[..8], &[0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+    let last: Vec<f64> = lines[11].split(',').map(|v| v.parse().unwrap()).collect();
+    assert_eq!(last[0], 10.0);
+    assert!((last[1] - 0.1).abs() < 1e-12);
+    // The seed drag pulls up and to the right.
+    assert!(last[2] > 0.0 && last[3] > 0.0);
+}
+
+#[test]
+fn simulate_is_bit_identical_across_runs() {
+    let args = [
+        "--integrator",
+        "rk4",
+        "--steps",
+        "300",
+        "--drag",
+        "0:100:-200,80",
+        "--drag",
+        "150:250:100,-150",
+    ];
+    let first = simulate(&args);
+    let second = simulate(&args);
+    assert!(first.status.success());
+    assert_eq!(first.stdout, second.stdout);
+}
+
+#[test]
+fn simulate_applies_overrides_initial_state_and_drags() {
+    let output = simulate(&[
+        "--scene",
+        "rest",
+        "--integrator",
+        "symplectic",
+        "--init",
+        "10,-20,0.5,3,4,-1",
+        "--linear-damping",
+        "0",
+        "--angular-damping",
+        "0",
+        "--steps",
+        "2",
+        "--dt",
+        "0.5",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(&rows[0][2..8], &[10.0, -20.0, 0.5, 3.0, 4.0, -1.0]);
+    // No force: uniform motion.
+    assert_eq!(&rows[2][2..8], &[13.0, -16.0, -0.5, 3.0, 4.0, -1.0]);
+}
+
+#[test]
+fn a_drag_pulls_only_during_its_steps() {
+    let output = simulate(&["--scene", "rest", "--steps", "6", "--drag", "2:4:100,0"]);
+    assert!(output.status.success());
+    let text = stdout(&output);
+    let band: Vec<&str> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.rsplit(',').next().unwrap())
+        .collect();
+    // Row s shows whether the band pulls during step s (from row s to row s + 1).
+    assert_eq!(band, ["0", "0", "1", "1", "0", "0", "0"]);
+}
+
+#[test]
+fn bad_arguments_get_a_clear_message_and_a_non_zero_exit() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["--scene", "moon"], "unknown scene 'moon'"),
+        (&["--integrator", "rk5"], "unknown integrator 'rk5'"),
+        (&["--dt", "NaN"], "not a finite number"),
+        (&["--dt", "0"], "greater than zero"),
+        (&["--mass", "-5"], "greater than zero"),
+        (&["--width", "0"], "greater than zero"),
+        (&["--k", "-1"], "zero or more"),
+        (&["--angular-damping", "inf"], "not a finite number"),
+        (&["--drag", "10:5:1,2"], "must end after it starts"),
+        (&["--drag", "0:5"], "expected START:END:X,Y"),
+        (&["--drag", "0:5:1"], "expected X,Y"),
+        (&["--drag", "a:5:1,2"], "not a step number"),
+        (&["--init", "1,2,3"], "expected X,Y,THETA,VX,VY,OMEGA"),
+        (&["--steps", "-3"], "--steps"),
+        (&["--frobnicate"], "--frobnicate"),
+    ];
+    for (args, message) in cases {
+        let output = simulate(args);
+        assert!(!output.status.success(), "{args:?} should fail");
+        assert!(output.stdout.is_empty(), "{args:?} wrote output");
+        let err = stderr(&output);
+        assert!(err.contains(message), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn a_mass_too_small_for_its_size_is_refused_by_validation() {
+    let output = simulate(&[
+        "--mass", "1e-300", "--width", "1e-200", "--height", "1e-200",
+    ]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        stderr(&output).contains("moment of inertia"),
+        "{}",
+        stderr(&output)
+    );
+}
+
+#[test]
+fn a_divergence_is_reported_with_the_integrator_and_step() {
+    let output = simulate(&["--scene", "stiff", "--k", "1e9", "--integrator", "euler"]);
+    assert_eq!(output.status.code(), Some(3));
+    let err = stderr(&output);
+    assert!(err.contains("integrator euler diverged at step"), "{err}");
+    // The rows before the divergence were written, all finite.
+    let text = stdout(&output);
+    assert!(text.lines().count() > 1);
+    assert!(!text.contains("NaN") && !text.contains("inf"));
+}

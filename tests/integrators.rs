@@ -1,0 +1,354 @@
+//! The integrators against closed forms, invariants, the tutorial and the hard cases.
+
+use bevy::math::DVec2;
+use rubber_band_box::physics::scenario::SEED_DRAG_TARGET;
+use rubber_band_box::physics::{
+    BodyState, Drag, Integrator, Run, Scenario, SceneParams, angular_momentum_about,
+};
+use rubber_band_box::report::{diagonal_exact, pose_error};
+
+/// The largest pose error against the closed form over 2 s of the diagonal pull.
+fn diagonal_error(integrator: Integrator, dt: f64) -> f64 {
+    let scenario = Scenario::named("diagonal").unwrap();
+    let mass = scenario.params.mass_properties().unwrap();
+    let mut run = Run::of(&scenario, integrator, dt).unwrap();
+    let steps = (2.0 / dt).round() as u64;
+    let mut worst: f64 = 0.0;
+    for _ in 0..steps {
+        run.advance().unwrap();
+        let exact = diagonal_exact(run.time());
+        worst = worst.max(pose_error(&run.sim.state, &exact, &mass));
+    }
+    worst
+}
+
+#[test]
+fn each_integrator_converges_on_the_diagonal_pull_at_its_order() {
+    for integrator in Integrator::ALL {
+        let errors: Vec<f64> = [0.02, 0.01, 0.005]
+            .iter()
+            .map(|&dt| diagonal_error(integrator, dt))
+            .collect();
+        let expected = integrator.order() as f64;
+        for pair in errors.windows(2) {
+            let observed = (pair[0] / pair[1]).log2();
+            assert!(
+                (observed - expected).abs() < 0.3,
+                "{integrator}: errors {errors:?}, observed order {observed}"
+            );
+        }
+        // And the error is small where it should be: the higher the order, the smaller.
+        let bound = match integrator.order() {
+            1 => 3.0,
+            2 => 0.05,
+            _ => 1e-4,
+        };
+        assert!(
+            errors[1] < bound,
+            "{integrator}: error {} at 100 Hz",
+            errors[1]
+        );
+    }
+}
+
+#[test]
+fn no_integrator_turns_the_box_on_the_diagonal_pull() {
+    for integrator in Integrator::ALL {
+        let mut run = Run::of(&Scenario::named("diagonal").unwrap(), integrator, 0.01).unwrap();
+        for _ in 0..500 {
+            run.advance().unwrap();
+            let s = run.sim.state;
+            assert_eq!(s.angular.angular_velocity, 0.0, "{integrator}");
+            assert_eq!(s.angular.orientation, 0.0, "{integrator}");
+            assert_eq!(s.linear.position.x, s.linear.position.y, "{integrator}");
+        }
+    }
+}
+
+/// Energy and angular momentum about the anchor over `steps` of the undamped scene.
+struct InvariantDrift {
+    energy_start: f64,
+    energy_end: f64,
+    /// Largest |E − E0| / E0 over the first and the last tenth of the run.
+    energy_error_early: f64,
+    energy_error_late: f64,
+    momentum_error: f64,
+}
+
+fn undamped_drift(integrator: Integrator, steps: u64) -> Result<InvariantDrift, u64> {
+    let scenario = Scenario::named("undamped").unwrap();
+    let mut run = Run::of(&scenario, integrator, 0.01).unwrap();
+    let mass = run.sim.mass;
+    let anchor = SEED_DRAG_TARGET;
+    let e0 = run.sim.energy();
+    let l0 = angular_momentum_about(&run.sim.state, &mass, anchor);
+    let tenth = steps / 10;
+    let mut drift = InvariantDrift {
+        energy_start: e0,
+        energy_end: e0,
+        energy_error_early: 0.0,
+        energy_error_late: 0.0,
+        momentum_error: 0.0,
+    };
+    for step in 1..=steps {
+        run.advance().map_err(|d| d.step)?;
+        let e = run.sim.energy();
+        let error = (e - e0).abs() / e0;
+        if step <= tenth {
+            drift.energy_error_early = drift.energy_error_early.max(error);
+        } else if step > steps - tenth {
+            drift.energy_error_late = drift.energy_error_late.max(error);
+        }
+        let l = angular_momentum_about(&run.sim.state, &mass, anchor);
+        drift.momentum_error = drift.momentum_error.max((l - l0).abs());
+        drift.energy_end = e;
+    }
+    Ok(drift)
+}
+
+#[test]
+fn symplectic_methods_keep_the_invariants_over_a_million_steps() {
+    for integrator in [Integrator::Symplectic, Integrator::Verlet] {
+        let drift = undamped_drift(integrator, 1_000_000).unwrap();
+        // Angular momentum about the anchor: kept to round-off (it starts at zero).
+        assert!(
+            drift.momentum_error < 1e-6,
+            "{integrator}: {}",
+            drift.momentum_error
+        );
+        // Energy: bounded, and no drift: the late error is no larger than the early one.
+        assert!(drift.energy_error_early < 0.05, "{integrator}");
+        assert!(
+            drift.energy_error_late < 1.5 * drift.energy_error_early,
+            "{integrator}: early {} late {}",
+            drift.energy_error_early,
+            drift.energy_error_late
+        );
+    }
+}
+
+#[test]
+fn explicit_euler_gains_energy_rk4_and_implicit_lose_it() {
+    // Forward Euler's energy grows every step until it diverges.
+    let euler = undamped_drift(Integrator::Euler, 1_000_000);
+    assert!(euler.is_err(), "explicit Euler should blow up undamped");
+    let early = undamped_drift(Integrator::Euler, 10_000).unwrap();
+    assert!(early.energy_end > 2.0 * early.energy_start);
+
+    // RK4 loses a little energy, slowly; backward Euler damps it away.
+    let rk4 = undamped_drift(Integrator::Rk4, 100_000).unwrap();
+    assert!(rk4.energy_end < rk4.energy_start);
+    assert!(rk4.energy_end > 0.99 * rk4.energy_start);
+    let implicit = undamped_drift(Integrator::Implicit, 100_000).unwrap();
+    assert!(implicit.energy_end < 0.01 * implicit.energy_start);
+    // Both keep the angular momentum about the anchor only approximately.
+    assert!(rk4.momentum_error > 0.0 && implicit.momentum_error > 0.0);
+}
+
+/// The tutorial's own update (tests/fixtures/tutorial_reference.py), in its per-frame units
+/// on its y-down screen: frame, then position, orientation, velocity, angular velocity.
+const TUTORIAL_FRAMES: [(u64, [f64; 6]); 6] = [
+    (
+        1,
+        [
+            320.068,
+            239.964,
+            0.0016000000000000005,
+            0.068,
+            -0.036,
+            0.0016000000000000005,
+        ],
+    ),
+    (
+        2,
+        [
+            320.2032736153682,
+            239.89235518464818,
+            0.004757121285187285,
+            0.13527361536818874,
+            -0.07164481535180472,
+            0.003157121285187284,
+        ],
+    ),
+    (
+        10,
+        [
+            323.60829768994404,
+            238.0761454777484,
+            0.07799525872265455,
+            0.6430798911444234,
+            -0.34489016744326745,
+            0.01303283590573738,
+        ],
+    ),
+    (
+        30,
+        [
+            347.47630753624463,
+            224.71482786848014,
+            0.36735881415071736,
+            1.62143836543809,
+            -0.9386651459010016,
+            0.009906700928932134,
+        ],
+    ),
+    (
+        31,
+        [
+            349.0815315180283,
+            223.78554937403814,
+            0.37706738106107085,
+            1.605223981783709,
+            -0.9292784944419916,
+            0.00970856691035349,
+        ],
+    ),
+    (
+        50,
+        [
+            376.70632260478084,
+            207.79331118068248,
+            0.528711326484906,
+            1.3261856879781275,
+            -0.7677407349131463,
+            0.006613792513948689,
+        ],
+    ),
+];
+
+#[test]
+fn seed_reproduces_the_tutorials_trajectory_to_round_off() {
+    // Screen (520, 120) is world (200, 120); pressed for 30 frames.
+    let drags = vec![Drag {
+        start: 0,
+        end: 30,
+        target: DVec2::new(200.0, 120.0),
+    }];
+    let mut run = Run::new(
+        SceneParams::seed(),
+        BodyState::default(),
+        drags,
+        Integrator::Seed,
+        0.01,
+    )
+    .unwrap();
+    for (frame, [x, y, theta, vx, vy, omega]) in TUTORIAL_FRAMES {
+        run.advance_by(frame - run.step).unwrap();
+        let s = run.sim.state;
+        // y down to y up, per frame to per second.
+        let expected = [
+            x - 320.0,
+            240.0 - y,
+            -theta,
+            vx * 100.0,
+            -vy * 100.0,
+            -omega * 100.0,
+        ];
+        let got = [
+            s.linear.position.x,
+            s.linear.position.y,
+            s.angular.orientation,
+            s.linear.velocity.x,
+            s.linear.velocity.y,
+            s.angular.angular_velocity,
+        ];
+        for (g, e) in got.iter().zip(expected) {
+            assert!(
+                (g - e).abs() <= 1e-12 * e.abs().max(1.0),
+                "frame {frame}: got {got:?}, tutorial {expected:?}"
+            );
+        }
+    }
+}
+
+fn hard_case_runs() -> Vec<(String, Scenario, f64, u64)> {
+    let named = |name: &str| Scenario::named(name).unwrap();
+    let mut cases = Vec::new();
+    for rate in [100.0, 64.0] {
+        for k in [20.0, 1e3, 1e5, 1e7, 1e9] {
+            let mut scenario = named("stiff");
+            scenario.params.stiffness = k;
+            cases.push((format!("k = {k:e} at {rate} Hz"), scenario, rate, 1000));
+        }
+    }
+    for name in [
+        "light",
+        "spin",
+        "spin-band",
+        "far",
+        "zero-length",
+        "diagonal",
+    ] {
+        cases.push((name.to_owned(), named(name), 100.0, 1000));
+    }
+    cases.push(("undamped".to_owned(), named("undamped"), 100.0, 100_000));
+    cases
+}
+
+#[test]
+fn the_default_integrator_never_diverges_on_a_hard_case() {
+    let default = Integrator::default();
+    for (name, scenario, rate, steps) in hard_case_runs() {
+        let mut run = Run::of(&scenario, default, 1.0 / rate).unwrap();
+        run.advance_by(steps)
+            .unwrap_or_else(|d| panic!("{name}: {d}"));
+        assert!(run.sim.state.is_finite());
+    }
+}
+
+#[test]
+fn every_integrator_stays_bounded_or_reports_its_divergence() {
+    let mut diverged = Vec::new();
+    for (name, scenario, rate, steps) in hard_case_runs() {
+        for integrator in Integrator::ALL {
+            let mut run = Run::of(&scenario, integrator, 1.0 / rate).unwrap();
+            match run.advance_by(steps) {
+                Ok(()) => assert!(run.sim.state.is_finite(), "{name} {integrator}"),
+                Err(d) => {
+                    assert_eq!(d.integrator, integrator);
+                    assert!(d.step <= steps);
+                    diverged.push((name.clone(), integrator));
+                }
+            }
+        }
+    }
+    // The explicit methods cannot hold a band this stiff; divergence is detected, not missed.
+    for integrator in [Integrator::Euler, Integrator::Symplectic, Integrator::Rk4] {
+        assert!(diverged.contains(&("k = 1e9 at 100 Hz".to_owned(), integrator)));
+    }
+}
+
+#[test]
+fn a_zero_length_band_exerts_nothing() {
+    for integrator in Integrator::ALL {
+        let mut run = Run::of(&Scenario::named("zero-length").unwrap(), integrator, 0.01).unwrap();
+        run.advance_by(100).unwrap();
+        assert_eq!(run.sim.state, BodyState::default(), "{integrator}");
+    }
+}
+
+#[test]
+fn the_implicit_step_holds_a_very_stiff_band_at_its_corner() {
+    let mut scenario = Scenario::named("stiff").unwrap();
+    scenario.params.stiffness = 1e9;
+    let mut run = Run::of(&scenario, Integrator::Implicit, 1.0 / 64.0).unwrap();
+    run.advance_by(640).unwrap();
+    let band = run.sim.band.unwrap();
+    assert!(band.length(&run.sim.state) < 1e-3);
+    // The box hangs from the corner, its centre on the line through the anchor.
+    assert!(run.sim.state.linear.velocity.length() < 1.0);
+}
+
+#[test]
+fn integrator_names_round_trip_and_unknown_names_are_refused() {
+    for integrator in Integrator::ALL {
+        assert_eq!(integrator.name().parse::<Integrator>(), Ok(integrator));
+    }
+    let error = "rk5".parse::<Integrator>().unwrap_err().to_string();
+    assert!(error.contains("rk5") && error.contains("verlet"), "{error}");
+    let mut seen = Integrator::default();
+    for _ in 0..Integrator::ALL.len() {
+        seen = seen.next();
+    }
+    assert_eq!(seen, Integrator::default());
+}
