@@ -9,7 +9,12 @@ pub struct ControlsPlugin;
 
 impl Plugin for ControlsPlugin {
     fn build(&self, app: &mut App) {
-        app.add_systems(Update, (cycle_integrator, show_integrator_in_title).chain());
+        // Before the fixed loop, like the pointer, so a key acts on the very next step.
+        app.add_systems(
+            RunFixedMainLoop,
+            cycle_integrator.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+        )
+        .add_systems(Update, show_integrator_in_title);
     }
 }
 

@@ -484,13 +484,18 @@ fn plot_work_precision(points: &[WorkPoint], path: &Path) -> Result<(), Box<dyn 
         let y_min = costs.clone().fold(f64::INFINITY, f64::min) / 2.0;
         let y_max = costs.fold(0.0, f64::max) * 2.0;
         let mut chart = ChartBuilder::on(panel)
-            .caption(format!("{scene}: cost against error"), ("sans-serif", 20))
+            .caption(
+                format!("{scene}: cost against error (x: diverged)"),
+                ("sans-serif", 20),
+            )
             .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(70)
+            .x_label_area_size(45)
+            .y_label_area_size(90)
             .build_cartesian_2d((x_min..x_max).log_scale(), (y_min..y_max).log_scale())?;
         chart
             .configure_mesh()
+            .light_line_style(RGBColor(240, 240, 240))
+            .bold_line_style(RGBColor(200, 200, 200))
             .x_desc("final pose error (px)")
             .y_desc("ns per simulated second")
             .x_label_formatter(&|x| format!("{x:.0e}"))

@@ -5,7 +5,7 @@ use rubber_band_box::physics::scenario::SEED_DRAG_TARGET;
 use rubber_band_box::physics::{
     BodyState, Drag, Integrator, Run, Scenario, SceneParams, angular_momentum_about,
 };
-use rubber_band_box::report::{diagonal_exact, pose_error};
+use rubber_band_box::report::{diagonal_exact, hard_cases, pose_error};
 
 /// The largest pose error against the closed form over 2 s of the diagonal pull.
 fn diagonal_error(integrator: Integrator, dt: f64) -> f64 {
@@ -261,37 +261,13 @@ fn seed_reproduces_the_tutorials_trajectory_to_round_off() {
     }
 }
 
-fn hard_case_runs() -> Vec<(String, Scenario, f64, u64)> {
-    let named = |name: &str| Scenario::named(name).unwrap();
-    let mut cases = Vec::new();
-    for rate in [100.0, 64.0] {
-        for k in [20.0, 1e3, 1e5, 1e7, 1e9] {
-            let mut scenario = named("stiff");
-            scenario.params.stiffness = k;
-            cases.push((format!("k = {k:e} at {rate} Hz"), scenario, rate, 1000));
-        }
-    }
-    for name in [
-        "light",
-        "spin",
-        "spin-band",
-        "far",
-        "zero-length",
-        "diagonal",
-    ] {
-        cases.push((name.to_owned(), named(name), 100.0, 1000));
-    }
-    cases.push(("undamped".to_owned(), named("undamped"), 100.0, 100_000));
-    cases
-}
-
 #[test]
 fn the_default_integrator_never_diverges_on_a_hard_case() {
     let default = Integrator::default();
-    for (name, scenario, rate, steps) in hard_case_runs() {
-        let mut run = Run::of(&scenario, default, 1.0 / rate).unwrap();
-        run.advance_by(steps)
-            .unwrap_or_else(|d| panic!("{name}: {d}"));
+    for case in hard_cases(true) {
+        let mut run = Run::of(&case.scenario, default, 1.0 / case.rate).unwrap();
+        run.advance_by(case.steps)
+            .unwrap_or_else(|d| panic!("{}: {d}", case.name));
         assert!(run.sim.state.is_finite());
     }
 }
@@ -299,22 +275,23 @@ fn the_default_integrator_never_diverges_on_a_hard_case() {
 #[test]
 fn every_integrator_stays_bounded_or_reports_its_divergence() {
     let mut diverged = Vec::new();
-    for (name, scenario, rate, steps) in hard_case_runs() {
+    for case in hard_cases(true) {
         for integrator in Integrator::ALL {
-            let mut run = Run::of(&scenario, integrator, 1.0 / rate).unwrap();
-            match run.advance_by(steps) {
-                Ok(()) => assert!(run.sim.state.is_finite(), "{name} {integrator}"),
+            let mut run = Run::of(&case.scenario, integrator, 1.0 / case.rate).unwrap();
+            match run.advance_by(case.steps) {
+                Ok(()) => assert!(run.sim.state.is_finite(), "{} {integrator}", case.name),
                 Err(d) => {
                     assert_eq!(d.integrator, integrator);
-                    assert!(d.step <= steps);
-                    diverged.push((name.clone(), integrator));
+                    assert!(d.step <= case.steps);
+                    diverged.push((case.name.clone(), integrator));
                 }
             }
         }
     }
     // The explicit methods cannot hold a band this stiff; divergence is detected, not missed.
     for integrator in [Integrator::Euler, Integrator::Symplectic, Integrator::Rk4] {
-        assert!(diverged.contains(&("k = 1e9 at 100 Hz".to_owned(), integrator)));
+        let case = "stiff band k = 1e9 at 100 Hz".to_owned();
+        assert!(diverged.contains(&(case, integrator)), "{integrator}");
     }
 }
 

@@ -8,6 +8,7 @@ use std::time::Duration;
 use bevy::camera::RenderTargetInfo;
 use bevy::input::ButtonState;
 use bevy::input::InputPlugin;
+use bevy::input::keyboard::{Key, KeyboardInput};
 use bevy::input::mouse::MouseButtonInput;
 use bevy::input::touch::{TouchInput, TouchPhase};
 use bevy::math::DVec2;
@@ -15,6 +16,7 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use bevy::window::{ExitCondition, PrimaryWindow, WindowFocused, WindowPlugin, WindowResolution};
 
+use rubber_band_box::controls::{CYCLE_INTEGRATOR, ControlsPlugin};
 use rubber_band_box::physics::{
     AngularState, Integrator, LinearState, SceneParams, Simulation, Wrench,
 };
@@ -64,6 +66,7 @@ impl Game {
             },
             SimulationPlugin,
             PointerPlugin,
+            ControlsPlugin,
         ))
         .insert_resource(TimeUpdateStrategy::ManualDuration(frame))
         .init_resource::<AccumulatorAudit>()
@@ -136,6 +139,18 @@ impl Game {
     fn press_at(&mut self, world: DVec2) {
         self.cursor(Some(world_to_screen(world)));
         self.mouse(ButtonState::Pressed);
+    }
+
+    fn key(&mut self, key_code: KeyCode, state: ButtonState) {
+        let window = self.window;
+        self.world().write_message(KeyboardInput {
+            key_code,
+            logical_key: Key::Character("i".into()),
+            state,
+            text: None,
+            repeat: false,
+            window,
+        });
     }
 
     fn touch(&mut self, id: u64, phase: TouchPhase, world: DVec2) {
@@ -522,4 +537,37 @@ fn a_long_frame_catches_up_a_bounded_number_of_steps() {
     assert_eq!(game.steps(), 25);
     let (linear, angular) = game.state();
     assert!(linear.position.is_finite() && angular.orientation.is_finite());
+}
+
+#[test]
+fn the_integrator_key_switches_on_the_next_step_and_names_it_in_the_title() {
+    let mut game = Game::stepping();
+    assert_eq!(
+        *game.world().resource::<Integrator>(),
+        Integrator::default()
+    );
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(20);
+    let expected_next = Integrator::default().next();
+
+    // Replay the same 20 steps in the core, then one step of each integrator from there.
+    let mut probe = Game::stepping();
+    probe.press_at(DVec2::new(200.0, 100.0));
+    probe.update(1);
+    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
+    sim.grab(probe.the_band().ends.anchor);
+    for _ in 0..20 {
+        sim.step(0.01);
+    }
+    sim.integrator = expected_next;
+    sim.step(0.01);
+
+    game.key(CYCLE_INTEGRATOR, ButtonState::Pressed);
+    game.update(1);
+    assert_eq!(*game.world().resource::<Integrator>(), expected_next);
+    let (linear, angular) = game.state();
+    assert_eq!((linear, angular), (sim.state.linear, sim.state.angular));
+    let window = game.window;
+    let title = game.world().get::<Window>(window).unwrap().title.clone();
+    assert!(title.contains(expected_next.name()), "{title}");
 }
