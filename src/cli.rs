@@ -80,6 +80,12 @@ pub struct SimulateArgs {
     /// Angular damping rate c per second.
     #[arg(long, value_parser = non_negative, allow_negative_numbers = true)]
     pub angular_damping: Option<f64>,
+    /// `auto`: target error per step (px).
+    #[arg(long, value_parser = positive, allow_negative_numbers = true)]
+    pub auto_tolerance: Option<f64>,
+    /// `auto`: most RK4 substeps per step before falling back to `implicit`.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+    pub auto_max_substeps: Option<u32>,
     /// X,Y,THETA,VX,VY,OMEGA: the initial state.
     #[arg(long, value_parser = parse_init, allow_hyphen_values = true)]
     pub init: Option<BodyState>,
@@ -117,24 +123,31 @@ impl SimulateArgs {
         } else {
             self.drags.clone()
         };
-        Run::new(
+        let mut run = Run::new(
             self.params(),
             self.init.unwrap_or(self.scene.initial),
             drags,
             self.integrator.unwrap_or_default(),
             self.dt,
         )
-        .map_err(|error| error.to_string())
+        .map_err(|error| error.to_string())?;
+        if let Some(tolerance) = self.auto_tolerance {
+            run.sim.auto.tolerance = tolerance;
+        }
+        if let Some(max) = self.auto_max_substeps {
+            run.sim.auto.max_substeps = max;
+        }
+        Ok(run)
     }
 }
 
-pub const CSV_HEADER: &str = "step,t,x,y,theta,vx,vy,omega,energy,band";
+pub const CSV_HEADER: &str = "step,t,x,y,theta,vx,vy,omega,energy,band,substeps,fallbacks";
 
 /// One CSV row: the state after `run.step` steps.
 pub fn csv_row(run: &Run) -> String {
     let s = &run.sim.state;
     format!(
-        "{},{},{},{},{},{},{},{},{},{}",
+        "{},{},{},{},{},{},{},{},{},{},{},{}",
         run.step,
         run.time(),
         s.linear.position.x,
@@ -145,6 +158,8 @@ pub fn csv_row(run: &Run) -> String {
         s.angular.angular_velocity,
         run.sim.energy(),
         u8::from(run.sim.band.is_some()),
+        run.last_step.substeps,
+        run.fallbacks,
     )
 }
 

@@ -4,6 +4,7 @@ use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 
 use crate::physics::Integrator;
+use crate::simulation::StepStats;
 
 pub struct ControlsPlugin;
 
@@ -28,13 +29,27 @@ pub fn cycle_integrator(keys: Res<ButtonInput<KeyCode>>, mut integrator: ResMut<
     }
 }
 
+/// "Rubber Band Box (integrator: auto, 2 substeps, 0 fall-backs; I to change)".
 fn show_integrator_in_title(
     integrator: Res<Integrator>,
+    stats: Res<StepStats>,
     mut window: Option<Single<&mut Window, With<PrimaryWindow>>>,
 ) {
-    if let Some(window) = window.as_deref_mut()
-        && integrator.is_changed()
-    {
-        window.title = format!("Rubber Band Box (integrator: {}, I to change)", *integrator);
+    let Some(window) = window.as_deref_mut() else {
+        return;
+    };
+    let detail = match *integrator {
+        Integrator::Auto => format!(
+            ", {} substeps, {} fall-backs",
+            stats.substeps, stats.fallbacks
+        ),
+        _ => String::new(),
+    };
+    let title = format!(
+        "Rubber Band Box (integrator: {}{detail}; I to change)",
+        *integrator
+    );
+    if window.title != title {
+        window.title = title;
     }
 }

@@ -6,11 +6,13 @@
 //! - [`pointer`]: mouse and touch to the band entity (headless);
 //! - [`view`] and [`draw`]: camera, interpolation and drawing (need a window).
 
+#[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
 pub mod controls;
 pub mod draw;
 pub mod physics;
 pub mod pointer;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod report;
 pub mod simulation;
 pub mod view;

@@ -1,19 +1,31 @@
-use std::io;
 use std::process::ExitCode;
 
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::ShapePlugin;
-use clap::Parser;
 
 use rubber_band_box::GamePlugin;
-use rubber_band_box::cli::{Cli, Command, PlayArgs, SimulateError, simulate};
-use rubber_band_box::physics::SceneParams;
+use rubber_band_box::physics::{Integrator, SceneParams};
 
+/// How to start the game: `play` on the command line, defaults on the web.
+#[derive(Debug, Default)]
+struct PlayArgs {
+    integrator: Option<Integrator>,
+    step_rate: Option<f64>,
+}
+
+#[cfg(not(target_arch = "wasm32"))]
 fn main() -> ExitCode {
+    use clap::Parser;
+    use rubber_band_box::cli::{Cli, Command, SimulateError, simulate};
+    use std::io;
+
     let cli = Cli::parse();
     match cli.command {
         None => play(PlayArgs::default()),
-        Some(Command::Play(args)) => play(args),
+        Some(Command::Play(args)) => play(PlayArgs {
+            integrator: args.integrator,
+            step_rate: args.step_rate,
+        }),
         Some(Command::Simulate(args)) => match simulate(&args, io::stdout().lock()) {
             Ok(()) => ExitCode::SUCCESS,
             Err(SimulateError::Arguments(message)) => {
@@ -43,6 +55,12 @@ fn main() -> ExitCode {
     }
 }
 
+/// The web build has no command line: it plays.
+#[cfg(target_arch = "wasm32")]
+fn main() -> ExitCode {
+    play(PlayArgs::default())
+}
+
 fn play(args: PlayArgs) -> ExitCode {
     let mut params = SceneParams::seed();
     if let Some(rate) = args.step_rate {
@@ -56,6 +74,11 @@ fn play(args: PlayArgs) -> ExitCode {
             primary_window: Some(Window {
                 title: "Rubber Band Box".into(),
                 resolution: (960, 720).into(),
+                // On the web: draw into the page's canvas, fill its parent, keep the
+                // browser's own gestures (scroll, zoom) off the canvas.
+                canvas: Some("#bevy".into()),
+                fit_canvas_to_parent: true,
+                prevent_default_event_handling: true,
                 ..default()
             }),
             ..default()

@@ -15,7 +15,10 @@ use bevy::math::DVec2;
 use clap::Args;
 use plotters::prelude::*;
 
-use crate::physics::{BodyState, Integrator, MassProperties, Run, Scenario, SceneParams};
+use crate::physics::scenario::SEED_DRAG_TARGET;
+use crate::physics::{
+    BodyState, Integrator, MassProperties, Run, Scenario, SceneParams, angular_momentum_about,
+};
 
 #[derive(Args, Debug)]
 pub struct ReportArgs {
@@ -198,11 +201,7 @@ fn work_precision(quick: bool) -> Vec<WorkPoint> {
 fn stable_at(integrator: Integrator, k: f64, rate: f64) -> bool {
     let mut scenario = Scenario::named("seed").expect("built-in");
     scenario.params.stiffness = k;
-    scenario.drags = vec![(
-        0.0,
-        f64::INFINITY,
-        crate::physics::scenario::SEED_DRAG_TARGET,
-    )];
+    scenario.drags = vec![(0.0, f64::INFINITY, SEED_DRAG_TARGET)];
     let dt = 1.0 / rate;
     let mut run = Run::of(&scenario, integrator, dt).expect("valid");
     run.advance_by((20.0 * rate) as u64).is_ok()
@@ -312,6 +311,104 @@ fn run_hard_cases(quick: bool) -> Vec<(HardCase, Vec<Option<u64>>)> {
                 })
                 .collect();
             (case, outcomes)
+        })
+        .collect()
+}
+
+/// One integrator at one stiffness and rate: ten fixed steps of the stiff scene.
+#[derive(Clone, Debug)]
+pub struct StiffPoint {
+    pub k: f64,
+    pub rate: f64,
+    pub integrator: Integrator,
+    pub ns_per_tick: f64,
+    /// Pose error after ten steps against a tight RK4 reference; None if diverged.
+    pub error: Option<f64>,
+    pub diverged_at: Option<u64>,
+    pub mean_substeps: f64,
+    pub fallbacks: u64,
+}
+
+pub const TICKS_PER_STIFF_RUN: u64 = 10;
+
+fn stiffness_sweep(quick: bool) -> Vec<StiffPoint> {
+    let ks: &[f64] = if quick {
+        &[20.0, 1e5, 1e9]
+    } else {
+        &[20.0, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9]
+    };
+    let mut points = Vec::new();
+    for rate in [100.0, 64.0] {
+        for &k in ks {
+            let mut scenario = Scenario::named("stiff").expect("built-in");
+            scenario.params.stiffness = k;
+            let mass = scenario.params.mass_properties().expect("valid");
+            let dt = 1.0 / rate;
+            let t = TICKS_PER_STIFF_RUN as f64 * dt;
+            // The stiffest mode resolved a hundred times over.
+            let omega = 2.0 * (k / scenario.params.mass).sqrt();
+            let reference = reference_state(&scenario, t, (0.01 / omega).min(1e-4));
+            for integrator in Integrator::ALL {
+                let fresh = || Run::of(&scenario, integrator, dt).expect("valid");
+                let mut run = fresh();
+                let mut substeps = 0u64;
+                let mut outcome = Ok(());
+                for _ in 0..TICKS_PER_STIFF_RUN {
+                    outcome = run.advance();
+                    substeps += u64::from(run.last_step.substeps);
+                    if outcome.is_err() {
+                        break;
+                    }
+                }
+                let diverged_at = outcome.err().map(|d| d.step);
+                let ns = median_ns(if quick { 3 } else { 15 }, || {
+                    let mut run = fresh();
+                    let _ = std::hint::black_box(run.advance_by(TICKS_PER_STIFF_RUN));
+                });
+                points.push(StiffPoint {
+                    k,
+                    rate,
+                    integrator,
+                    ns_per_tick: ns / TICKS_PER_STIFF_RUN as f64,
+                    error: diverged_at
+                        .is_none()
+                        .then(|| pose_error(&run.sim.state, &reference, &mass)),
+                    diverged_at,
+                    mean_substeps: substeps as f64 / run.step.max(1) as f64,
+                    fallbacks: run.fallbacks,
+                });
+            }
+        }
+    }
+    points
+}
+
+/// The undamped stiff band (k = 1e5, 100 Hz, 10 s): the largest energy error relative to the
+/// energy the band put in, and the largest change of the angular momentum about the anchor.
+/// Largest energy error and angular momentum change, or the step where the run diverged.
+type InvariantDrift = Result<(f64, f64), u64>;
+
+fn stiff_invariants(quick: bool) -> Vec<(Integrator, InvariantDrift)> {
+    let mut scenario = Scenario::named("undamped").expect("built-in");
+    scenario.params.stiffness = 1e5;
+    let steps = if quick { 100 } else { 1000 };
+    Integrator::ALL
+        .iter()
+        .map(|&integrator| {
+            let mut run = Run::of(&scenario, integrator, 0.01).expect("valid");
+            let mass = run.sim.mass;
+            let e0 = run.sim.energy();
+            let l0 = angular_momentum_about(&run.sim.state, &mass, SEED_DRAG_TARGET);
+            let (mut energy, mut momentum) = (0.0_f64, 0.0_f64);
+            for _ in 0..steps {
+                if let Err(d) = run.advance() {
+                    return (integrator, Err(d.step));
+                }
+                energy = energy.max((run.sim.energy() - e0).abs() / e0);
+                let l = angular_momentum_about(&run.sim.state, &mass, SEED_DRAG_TARGET);
+                momentum = momentum.max((l - l0).abs());
+            }
+            (integrator, Ok((energy, momentum)))
         })
         .collect()
 }
@@ -451,7 +548,75 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     }
     fs::write(args.out.join("hard_cases.csv"), csv)?;
 
+    let sweep = stiffness_sweep(args.quick);
+    writeln!(
+        table,
+        "\n## Stiffness sweep: {TICKS_PER_STIFF_RUN} fixed steps of the stiff scene \
+         (error in px against a tight RK4 / ns per step; auto: mean substeps, fall-backs)\n"
+    )?;
+    writeln!(table, "| k | rate | {} |", names.join(" | "))?;
+    writeln!(table, "|---|---|{}", "---|".repeat(names.len()))?;
+    let mut csv = String::from(
+        "k,rate_hz,integrator,ns_per_tick,error_px,diverged_at_step,mean_substeps,fallbacks\n",
+    );
+    for chunk in sweep.chunk_by(|a, b| a.k == b.k && a.rate == b.rate) {
+        let cells: Vec<String> = chunk
+            .iter()
+            .map(|p| {
+                let auto = if p.integrator == Integrator::Auto {
+                    format!(" ({:.0}, {})", p.mean_substeps, p.fallbacks)
+                } else {
+                    String::new()
+                };
+                match (p.error, p.diverged_at) {
+                    (Some(e), _) => format!("{e:.1e} / {:.0}{auto}", p.ns_per_tick),
+                    (None, Some(s)) => format!("diverged @{s}"),
+                    (None, None) => "?".to_owned(),
+                }
+            })
+            .collect();
+        writeln!(
+            table,
+            "| {:e} | {} Hz | {} |",
+            chunk[0].k,
+            chunk[0].rate,
+            cells.join(" | ")
+        )?;
+        for p in chunk {
+            writeln!(
+                csv,
+                "{},{},{},{},{},{},{},{}",
+                p.k,
+                p.rate,
+                p.integrator,
+                p.ns_per_tick,
+                p.error.map_or(String::new(), |e| e.to_string()),
+                p.diverged_at.map_or(String::new(), |s| s.to_string()),
+                p.mean_substeps,
+                p.fallbacks
+            )?;
+        }
+    }
+    fs::write(args.out.join("stiffness.csv"), csv)?;
+
+    writeln!(
+        table,
+        "\n## Undamped stiff band (k = 1e5, 100 Hz, 10 s): largest energy error relative to \
+         the energy put in, and largest change of angular momentum about the anchor\n"
+    )?;
+    writeln!(table, "| integrator | energy | angular momentum |")?;
+    writeln!(table, "|---|---|---|")?;
+    for (integrator, outcome) in stiff_invariants(args.quick) {
+        match outcome {
+            Ok((energy, momentum)) => {
+                writeln!(table, "| {integrator} | {energy:.1e} | {momentum:.1e} |")?
+            }
+            Err(step) => writeln!(table, "| {integrator} | diverged @{step} | |")?,
+        }
+    }
+
     plot_work_precision(&points, &args.out.join("work_precision.svg"))?;
+    plot_stiffness(&sweep, &args.out.join("stiffness.svg"))?;
     writeln!(
         table,
         "\nWritten to {} in {:.1} s.",
@@ -518,6 +683,64 @@ fn plot_work_precision(points: &[WorkPoint], path: &Path) -> Result<(), Box<dyn 
                 .filter(|p| p.integrator == *integrator && p.diverged_at.is_some())
                 .map(|p| Cross::new((x_max / 2.0, p.ns_per_simulated_second), 5, RED));
             chart.draw_series(diverged)?;
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .position(SeriesLabelPosition::UpperLeft)
+            .draw()?;
+    }
+    root.present()?;
+    Ok(())
+}
+
+/// Cost per step and error against k at 100 Hz, a line per integrator.
+fn plot_stiffness(points: &[StiffPoint], path: &Path) -> Result<(), Box<dyn Error>> {
+    let root = SVGBackend::new(path, (1400, 550)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let panels = root.split_evenly((1, 2));
+    let at_100: Vec<&StiffPoint> = points.iter().filter(|p| p.rate == 100.0).collect();
+    type Value = fn(&StiffPoint) -> Option<f64>;
+    let views: [(&str, &str, Value); 2] = [
+        ("cost per fixed step at 100 Hz", "ns per step", |p| {
+            Some(p.ns_per_tick)
+        }),
+        ("error after 10 steps at 100 Hz", "pose error (px)", |p| {
+            p.error.map(|e| e.max(1e-14))
+        }),
+    ];
+    for (panel, (title, y_desc, value)) in panels.iter().zip(views) {
+        let values: Vec<f64> = at_100.iter().filter_map(|p| value(p)).collect();
+        let y_min = values.iter().copied().fold(f64::INFINITY, f64::min) / 3.0;
+        let y_max = values.iter().copied().fold(0.0, f64::max) * 3.0;
+        let mut chart = ChartBuilder::on(panel)
+            .caption(title, ("sans-serif", 20))
+            .margin(12)
+            .x_label_area_size(45)
+            .y_label_area_size(90)
+            .build_cartesian_2d((10.0..2e9).log_scale(), (y_min..y_max).log_scale())?;
+        chart
+            .configure_mesh()
+            .light_line_style(RGBColor(240, 240, 240))
+            .bold_line_style(RGBColor(200, 200, 200))
+            .x_desc("band stiffness k")
+            .y_desc(y_desc)
+            .x_label_formatter(&|x| format!("{x:.0e}"))
+            .y_label_formatter(&|y| format!("{y:.0e}"))
+            .draw()?;
+        for (index, integrator) in Integrator::ALL.iter().enumerate() {
+            let colour = Palette99::pick(index).to_rgba();
+            let line: Vec<(f64, f64)> = at_100
+                .iter()
+                .filter(|p| p.integrator == *integrator)
+                .filter_map(|p| value(p).map(|v| (p.k, v)))
+                .collect();
+            chart
+                .draw_series(LineSeries::new(line.clone(), colour.stroke_width(2)))?
+                .label(integrator.name())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
+            chart.draw_series(line.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
         }
         chart
             .configure_series_labels()

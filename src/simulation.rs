@@ -9,8 +9,8 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 
 use crate::physics::{
-    AngularState, BandEnds, BodyState, Forces, Integrator, LinearState, MassProperties,
-    SceneParams, damping_wrench,
+    AngularState, AutoSettings, BandEnds, BodyState, Forces, Integrator, LinearState,
+    MassProperties, SceneParams, damping_wrench,
 };
 
 pub struct SimulationPlugin;
@@ -19,6 +19,8 @@ impl Plugin for SimulationPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<SceneParams>()
             .init_resource::<Integrator>()
+            .init_resource::<AutoSettings>()
+            .init_resource::<StepStats>()
             .init_resource::<StepCount>()
             .configure_sets(
                 FixedUpdate,
@@ -121,6 +123,14 @@ fn lerp(a: f64, b: f64, t: f64) -> f64 {
     a + (b - a) * t
 }
 
+/// What the integrator did: the latest step's substeps (most over the bodies), and the steps
+/// where `auto` fell back to `implicit` since start-up.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct StepStats {
+    pub substeps: u32,
+    pub fallbacks: u64,
+}
+
 /// Fixed steps run since start-up.
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
 pub struct StepCount(pub u64);
@@ -203,6 +213,8 @@ fn integrate(
     time: Res<Time<Fixed>>,
     params: Res<SceneParams>,
     integrator: Res<Integrator>,
+    auto: Res<AutoSettings>,
+    mut stats: ResMut<StepStats>,
     mut bodies: Query<(
         &mut LinearState,
         &mut AngularState,
@@ -211,10 +223,13 @@ fn integrate(
     )>,
 ) {
     let dt = time.timestep().as_secs_f64();
+    stats.substeps = 0;
     for (mut linear, mut angular, mass, mut accumulator) in &mut bodies {
         let model = params.force_model(*mass, accumulator.band);
         let mut state = body_state(&linear, &angular);
-        integrator.step(&mut state, &model, accumulator.forces, dt);
+        let info = integrator.step_with(&mut state, &model, accumulator.forces, dt, &auto);
+        stats.substeps = stats.substeps.max(info.substeps);
+        stats.fallbacks += u64::from(info.fell_back);
         *linear = state.linear;
         *angular = state.angular;
         *accumulator = ForceAccumulator::default();

@@ -88,10 +88,17 @@ fn a_drag_pulls_only_during_its_steps() {
     let output = simulate(&["--scene", "rest", "--steps", "6", "--drag", "2:4:100,0"]);
     assert!(output.status.success());
     let text = stdout(&output);
+    let column = text
+        .lines()
+        .next()
+        .unwrap()
+        .split(',')
+        .position(|name| name == "band")
+        .unwrap();
     let band: Vec<&str> = text
         .lines()
         .skip(1)
-        .map(|l| l.rsplit(',').next().unwrap())
+        .map(|l| l.split(',').nth(column).unwrap())
         .collect();
     // Row s shows whether the band pulls during step s (from row s to row s + 1).
     assert_eq!(band, ["0", "0", "1", "1", "0", "0", "0"]);

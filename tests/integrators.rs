@@ -3,7 +3,7 @@
 use bevy::math::DVec2;
 use rubber_band_box::physics::scenario::SEED_DRAG_TARGET;
 use rubber_band_box::physics::{
-    BodyState, Drag, Integrator, Run, Scenario, SceneParams, angular_momentum_about,
+    AutoSettings, BodyState, Drag, Integrator, Run, Scenario, SceneParams, angular_momentum_about,
 };
 use rubber_band_box::report::{diagonal_exact, hard_cases, pose_error};
 
@@ -24,7 +24,11 @@ fn diagonal_error(integrator: Integrator, dt: f64) -> f64 {
 
 #[test]
 fn each_integrator_converges_on_the_diagonal_pull_at_its_order() {
-    for integrator in Integrator::ALL {
+    // `auto` picks its substeps for a target error, so it has no fixed order in dt: see below.
+    for integrator in Integrator::ALL
+        .into_iter()
+        .filter(|&i| i != Integrator::Auto)
+    {
         let errors: Vec<f64> = [0.02, 0.01, 0.005]
             .iter()
             .map(|&dt| diagonal_error(integrator, dt))
@@ -328,4 +332,62 @@ fn integrator_names_round_trip_and_unknown_names_are_refused() {
         seen = seen.next();
     }
     assert_eq!(seen, Integrator::default());
+}
+
+#[test]
+fn auto_meets_its_tolerance_at_any_step() {
+    // On the diagonal pull, whatever the fixed step, the error stays near the tolerance per
+    // step times the number of steps, far below plain RK4 at the coarse steps.
+    for dt in [1.0 / 30.0, 0.01, 0.001] {
+        let auto = diagonal_error(Integrator::Auto, dt);
+        assert!(auto < 1e-5, "dt {dt}: auto error {auto}");
+        if dt > 0.02 {
+            assert!(auto < diagonal_error(Integrator::Rk4, dt) / 10.0);
+        }
+    }
+}
+
+#[test]
+fn auto_takes_more_substeps_for_a_stiffer_band_and_falls_back_beyond_its_budget() {
+    let settings = AutoSettings::default();
+    let substeps_at = |k: f64| {
+        let mut scenario = Scenario::named("stiff").unwrap();
+        scenario.params.stiffness = k;
+        let mut run = Run::of(&scenario, Integrator::Auto, 0.01).unwrap();
+        run.advance().unwrap();
+        run.last_step
+    };
+    let soft = substeps_at(20.0);
+    let stiff = substeps_at(1e5);
+    let stiffest = substeps_at(1e9);
+    assert!(
+        soft.substeps >= 1 && soft.substeps <= 4 && !soft.fell_back,
+        "{soft:?}"
+    );
+    assert!(
+        stiff.substeps > soft.substeps && !stiff.fell_back,
+        "{stiff:?}"
+    );
+    assert!(stiff.substeps <= settings.max_substeps);
+    assert!(stiffest.fell_back, "{stiffest:?}");
+
+    // Fall-backs are counted, and the run stays bounded.
+    let mut scenario = Scenario::named("stiff").unwrap();
+    scenario.params.stiffness = 1e9;
+    let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / 64.0).unwrap();
+    run.advance_by(640).unwrap();
+    assert!(run.fallbacks > 0 && run.fallbacks <= 640);
+}
+
+#[test]
+fn a_tighter_budget_makes_auto_fall_back_sooner() {
+    let mut scenario = Scenario::named("stiff").unwrap();
+    scenario.params.stiffness = 1e5;
+    let mut run = Run::of(&scenario, Integrator::Auto, 0.01).unwrap();
+    run.sim.auto = AutoSettings {
+        max_substeps: 4,
+        ..AutoSettings::default()
+    };
+    run.advance_by(10).unwrap();
+    assert_eq!(run.fallbacks, 10);
 }

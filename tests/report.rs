@@ -33,7 +33,7 @@ fn the_quick_report_writes_tables_and_a_plot_that_parse() {
     };
     let work = csv("work_precision.csv", 8);
     // scenes x steps x integrators, each with a finite cost and an error or a divergence.
-    assert_eq!(work.len() - 1, 4 * 3 * 6);
+    assert_eq!(work.len() - 1, 4 * 3 * 7);
     for row in &work[1..] {
         let cost: f64 = row[6].parse().unwrap();
         assert!(cost.is_finite() && cost > 0.0);
@@ -43,7 +43,7 @@ fn the_quick_report_writes_tables_and_a_plot_that_parse() {
         );
     }
     let stability = csv("stability.csv", 4);
-    assert_eq!(stability.len() - 1, 2 * 6);
+    assert_eq!(stability.len() - 1, 2 * 7);
     let implicit: Vec<_> = stability.iter().filter(|r| r[0] == "implicit").collect();
     assert!(
         implicit.iter().all(|r| r[2] == "inf"),

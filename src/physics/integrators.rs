@@ -13,6 +13,7 @@ use std::str::FromStr;
 use bevy::math::{DMat3, DVec2, DVec3};
 use bevy::prelude::Resource;
 
+use super::auto::{AutoSettings, StepInfo, auto_step};
 use super::body::{AngularState, BodyState, LinearState, MassProperties};
 use super::forces::{ForceModel, Forces, Wrench};
 
@@ -28,20 +29,24 @@ pub enum Integrator {
     Rk4,
     /// Backward Euler, solved by minimising the step's incremental potential with Newton's
     /// method: stable for any stiffness and step, and it damps the stiff band's ringing.
-    #[default]
     Implicit,
     /// Exactly the tutorial's per-frame update, in its order, in per-second units.
     Seed,
+    /// RK4 substeps chosen per step for a target error, within a budget; `implicit` where the
+    /// budget binds (see [`super::auto`]). The game's default.
+    #[default]
+    Auto,
 }
 
 impl Integrator {
-    pub const ALL: [Self; 6] = [
+    pub const ALL: [Self; 7] = [
         Self::Euler,
         Self::Symplectic,
         Self::Verlet,
         Self::Rk4,
         Self::Implicit,
         Self::Seed,
+        Self::Auto,
     ];
 
     pub fn name(self) -> &'static str {
@@ -52,6 +57,7 @@ impl Integrator {
             Self::Rk4 => "rk4",
             Self::Implicit => "implicit",
             Self::Seed => "seed",
+            Self::Auto => "auto",
         }
     }
 
@@ -59,7 +65,7 @@ impl Integrator {
     pub fn order(self) -> u32 {
         match self {
             Self::Verlet => 2,
-            Self::Rk4 => 4,
+            Self::Rk4 | Self::Auto => 4,
             _ => 1,
         }
     }
@@ -71,7 +77,25 @@ impl Integrator {
     }
 
     /// Advances `state` by `dt`; `start` holds the forces summed at `state`.
-    pub fn step(self, state: &mut BodyState, model: &ForceModel, start: Forces, dt: f64) {
+    pub fn step(
+        self,
+        state: &mut BodyState,
+        model: &ForceModel,
+        start: Forces,
+        dt: f64,
+    ) -> StepInfo {
+        self.step_with(state, model, start, dt, &AutoSettings::default())
+    }
+
+    /// [`Self::step`] with `auto`'s settings given.
+    pub fn step_with(
+        self,
+        state: &mut BodyState,
+        model: &ForceModel,
+        start: Forces,
+        dt: f64,
+        auto: &AutoSettings,
+    ) -> StepInfo {
         match self {
             Self::Euler => euler(state, &model.mass, start.total(), dt),
             Self::Symplectic => symplectic_euler(state, &model.mass, start.total(), dt),
@@ -79,7 +103,11 @@ impl Integrator {
             Self::Rk4 => runge_kutta_4(state, model, start, dt),
             Self::Implicit => backward_euler(state, model, dt),
             Self::Seed => tutorial_update(state, model, start, dt),
+            Self::Auto => {
+                return auto_step(state, model, start, dt, auto, runge_kutta_4, backward_euler);
+            }
         }
+        StepInfo::SINGLE
     }
 }
 

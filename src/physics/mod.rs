@@ -3,6 +3,7 @@
 //! The Bevy plugins, the tests and the benchmarks all call into this module, so that there is
 //! one implementation of each force law and each integration step.
 
+pub mod auto;
 pub mod body;
 pub mod forces;
 pub mod integrators;
@@ -10,6 +11,7 @@ pub mod scenario;
 pub mod scene;
 pub mod simulation;
 
+pub use auto::{AutoSettings, StepInfo};
 pub use body::{AngularState, BodyState, LinearState, MassProperties, rotate};
 pub use forces::{
     BandEnds, ForceModel, Forces, Wrench, angular_momentum_about, damping_wrench, kinetic_energy,

@@ -5,6 +5,7 @@ use std::fmt;
 
 use bevy::math::DVec2;
 
+use super::auto::StepInfo;
 use super::body::BodyState;
 use super::integrators::Integrator;
 use super::scene::{ParamError, SceneParams};
@@ -200,6 +201,9 @@ pub struct Run {
     drags: Vec<Drag>,
     active_drag: Option<usize>,
     energy_budget: f64,
+    /// The latest step's substeps, and how many steps fell back to `implicit` so far.
+    pub last_step: StepInfo,
+    pub fallbacks: u64,
 }
 
 impl Run {
@@ -222,6 +226,8 @@ impl Run {
             drags,
             active_drag: None,
             energy_budget,
+            last_step: StepInfo::SINGLE,
+            fallbacks: 0,
         };
         run.apply_drags();
         Ok(run)
@@ -265,7 +271,8 @@ impl Run {
 
     /// One step; `Err` once the state is no longer finite or its energy left every bound.
     pub fn advance(&mut self) -> Result<(), Diverged> {
-        self.sim.step(self.dt);
+        self.last_step = self.sim.step(self.dt);
+        self.fallbacks += u64::from(self.last_step.fell_back);
         self.step += 1;
         let energy = self.sim.energy();
         if !self.sim.state.is_finite()

@@ -3,6 +3,7 @@
 
 use bevy::math::DVec2;
 
+use super::auto::{AutoSettings, StepInfo};
 use super::body::{BodyState, MassProperties};
 use super::forces::{BandEnds, ForceModel, Forces};
 use super::integrators::Integrator;
@@ -15,6 +16,7 @@ pub struct Simulation {
     pub state: BodyState,
     pub band: Option<BandEnds>,
     pub integrator: Integrator,
+    pub auto: AutoSettings,
 }
 
 impl Simulation {
@@ -27,6 +29,7 @@ impl Simulation {
             state: BodyState::at_rest(DVec2::ZERO),
             band: None,
             integrator: Integrator::default(),
+            auto: AutoSettings::default(),
         })
     }
 
@@ -53,10 +56,11 @@ impl Simulation {
     }
 
     /// One step of `dt` seconds with the chosen integrator.
-    pub fn step(&mut self, dt: f64) {
+    pub fn step(&mut self, dt: f64) -> StepInfo {
         let model = self.model();
         let start = model.forces(&self.state);
-        self.integrator.step(&mut self.state, &model, start, dt);
+        self.integrator
+            .step_with(&mut self.state, &model, start, dt, &self.auto)
     }
 
     /// Kinetic plus band energy.

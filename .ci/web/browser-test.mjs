@@ -1,0 +1,107 @@
+// Loads the built site (site/) in headless Chromium with software WebGL2, checks that the
+// page starts without console errors and draws the box, then drags the band with the mouse
+// and checks that the band is drawn while pressed and that the box has moved and turned.
+// Screenshots go to site/screens/. Run: node .ci/web/browser-test.mjs [site-dir]
+import { chromium } from "playwright-core";
+import { PNG } from "pngjs";
+import http from "node:http";
+import fs from "node:fs";
+import path from "node:path";
+
+const site = path.resolve(process.argv[2] ?? "site");
+const screens = path.join(site, "screens");
+fs.mkdirSync(screens, { recursive: true });
+
+const types = { ".html": "text/html", ".js": "text/javascript", ".wasm": "application/wasm", ".png": "image/png" };
+const server = http.createServer((request, response) => {
+  const file = path.join(site, decodeURIComponent(new URL(request.url, "http://x").pathname));
+  const target = file.endsWith("/") ? path.join(file, "index.html") : file;
+  if (!target.startsWith(site) || !fs.existsSync(target)) {
+    response.writeHead(404).end();
+    return;
+  }
+  response.writeHead(200, { "content-type": types[path.extname(target)] ?? "application/octet-stream" });
+  fs.createReadStream(target).pipe(response);
+});
+await new Promise((resolve) => server.listen(0, "127.0.0.1", resolve));
+const url = `http://127.0.0.1:${server.address().port}/`;
+
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+  args: [
+    "--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader", "--ignore-gpu-blocklist",
+    "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
+  ],
+});
+const failures = [];
+const check = (ok, message) => { console.log(`${ok ? "ok  " : "FAIL"} ${message}`); if (!ok) failures.push(message); };
+
+try {
+  const width = 960, height = 720;
+  const page = await browser.newPage({ viewport: { width, height } });
+  const errors = [];
+  page.on("console", (m) => { if (m.type() === "error") errors.push(m.text()); });
+  page.on("pageerror", (e) => { if (!String(e).includes("Using exceptions for control flow")) errors.push(String(e)); });
+
+  const shot = async (name) => {
+    const buffer = await page.screenshot({ path: path.join(screens, `${name}.png`) });
+    return PNG.sync.read(buffer);
+  };
+  // The box's fill, sRGB (0.16, 0.42, 0.72), give or take the rasteriser.
+  const isBox = (png, i) => Math.abs(png.data[i] - 41) < 30 && Math.abs(png.data[i + 1] - 107) < 30 && Math.abs(png.data[i + 2] - 184) < 30;
+  const isBand = (png, i) => png.data[i] > 180 && png.data[i + 1] < 80 && png.data[i + 2] > 40;
+  const pixels = (png, test) => {
+    const found = [];
+    for (let y = 0; y < png.height; y++) for (let x = 0; x < png.width; x++) if (test(png, (y * png.width + x) * 4)) found.push([x, y]);
+    return found;
+  };
+  // Centre, and how much of its bounding box the box fills (1 square, 0.5 at 45 degrees).
+  const boxPose = (png) => {
+    const p = pixels(png, isBox);
+    if (p.length === 0) return null;
+    const xs = p.map((q) => q[0]), ys = p.map((q) => q[1]);
+    const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+    return { x: xs.reduce((a, b) => a + b) / p.length, y: ys.reduce((a, b) => a + b) / p.length, fill: p.length / ((x1 - x0 + 1) * (y1 - y0 + 1)) };
+  };
+
+  const started = Date.now();
+  await page.goto(url);
+  let first = null;
+  for (let i = 0; i < 300 && !first; i++) {
+    const png = await shot("first-frame");
+    const centre = ((height / 2) * width + width / 2) * 4;
+    if (isBox(png, centre)) first = png;
+    else await page.waitForTimeout(100);
+  }
+  const firstFrameMs = Date.now() - started;
+  check(first !== null, `the box is drawn at the centre (first frame after ${firstFrameMs} ms)`);
+  const before = first && boxPose(first);
+
+  // Press right of and above the box, drag, and look while pressed.
+  await page.mouse.move(width / 2 + 200, height / 2 - 150);
+  await page.mouse.down();
+  for (let i = 1; i <= 10; i++) {
+    await page.mouse.move(width / 2 + 200 + 10 * i, height / 2 - 150 + 5 * i);
+    await page.waitForTimeout(50);
+  }
+  const pressed = await shot("pressed");
+  const band = pixels(pressed, isBand).length;
+  check(band > 30, `the band is drawn while pressed (${band} band pixels)`);
+  await page.mouse.up();
+  await page.waitForTimeout(1500);
+  const after = boxPose(await shot("released"));
+  await page.waitForTimeout(500);
+  const afterBand = pixels(await shot("later"), isBand).length;
+  check(afterBand < 5, `the band is gone after release (${afterBand} band pixels)`);
+
+  const moved = before && after ? Math.hypot(after.x - before.x, after.y - before.y) : 0;
+  check(moved > 20, `the box moved (${moved.toFixed(1)} px)`);
+  check(after && before && before.fill > 0.95 && after.fill < 0.95,
+    `the box turned (fills ${before?.fill.toFixed(2)} then ${after?.fill.toFixed(2)} of its bounding box)`);
+  check(errors.length === 0, `no console errors${errors.length ? ": " + errors.join(" | ") : ""}`);
+  console.log(`first frame: ${firstFrameMs} ms after navigation`);
+} finally {
+  await browser.close();
+  server.close();
+}
+process.exit(failures.length === 0 ? 0 : 1);

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Builds the web version into site/: index.html, the JS glue and the .wasm.
+# Needs only the Rust toolchain: it installs the wasm target and a wasm-bindgen-cli whose
+# version equals the wasm-bindgen in Cargo.lock (a mismatch fails at bind time).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/rubber-band-box/target}"
+site="${1:-site}"
+
+rustup target add wasm32-unknown-unknown
+version=$(grep -A1 '^name = "wasm-bindgen"$' Cargo.lock | sed -n 's/^version = "\(.*\)"$/\1/p')
+if ! wasm-bindgen --version 2>/dev/null | grep -qx "wasm-bindgen $version"; then
+    cargo install wasm-bindgen-cli --version "$version"
+fi
+
+start=$(date +%s)
+cargo build --profile wasm-release --target wasm32-unknown-unknown
+echo "cargo build: $(( $(date +%s) - start )) s"
+
+rm -rf "$site"
+mkdir -p "$site"
+wasm-bindgen --target web --out-dir "$site/pkg" --no-typescript \
+    --remove-name-section --remove-producers-section \
+    "$CARGO_TARGET_DIR/wasm32-unknown-unknown/wasm-release/rubber_band_box.wasm"
+cp assets/web/index.html "$site/"
+wasm="$site/pkg/rubber_band_box_bg.wasm"
+echo "site: $site ($(stat -c %s "$wasm") bytes of wasm, $(gzip -9 -c "$wasm" | wc -c) gzipped)"
+echo "serve it with: python3 -m http.server --directory $site 8000"
