@@ -21,8 +21,8 @@ pub struct AutoSettings {
 impl Default for AutoSettings {
     fn default() -> Self {
         Self {
-            tolerance: 1e-7,
-            max_substeps: 512,
+            tolerance: 1e-8,
+            max_substeps: 2048,
         }
     }
 }
@@ -41,49 +41,59 @@ impl StepInfo {
     };
 }
 
-/// The fastest rate in the system right now (per second): the band's stiffest mode
-/// ω = sqrt(k (1/m + |r|²/I)) (2·sqrt(k/m) for a square pulled at a corner), the damping
-/// rates, and the spin.
-pub fn fastest_rate(state: &BodyState, model: &ForceModel) -> f64 {
+/// The band's stiffest mode: ω = sqrt(k (1/m + |r|²/I)), 2·sqrt(k/m) for a square pulled at
+/// a corner.
+pub fn band_rate(model: &ForceModel) -> f64 {
     let mass = &model.mass;
-    let band = model.band.map_or(0.0, |band| {
+    model.band.map_or(0.0, |band| {
         let arm_squared = band.local_point.length_squared();
         (model.stiffness * (mass.inverse_mass() + arm_squared * mass.inverse_inertia())).sqrt()
-    });
+    })
+}
+
+/// C in RK4's local error C·h⁵ per substep of length h, from the motion now.
+///
+/// Each mode of rate λ and amplitude A contributes A λ⁵ / 120 (the first term RK4 drops):
+/// the band's oscillation (amplitude: its stretch plus how far the corner's speed carries it
+/// on the band's time scale), the band's force turning with the spin ω (its displacement scale
+/// A λ²/ω² changing at the rate ω: A λ² ω³), and the two decays of the velocities.
+fn error_coefficient(state: &BodyState, model: &ForceModel) -> f64 {
+    let lambda = band_rate(model);
+    let spin = state.angular.angular_velocity.abs();
     let (linear_rate, angular_rate) = model.damping_rates();
-    band.max(linear_rate)
-        .max(angular_rate)
-        .max(state.angular.angular_velocity.abs())
-}
-
-/// How far the step's error can reach (px): the band's stretch, the distance the velocities
-/// cover on the fastest time scale, and the corners' reach.
-fn length_scale(state: &BodyState, model: &ForceModel, rate: f64) -> f64 {
-    let stretch = model.band.map_or(0.0, |band| band.length(state));
     let reach = 0.5 * model.mass.size().length();
-    let speed = state.linear.velocity.length() + reach * state.angular.angular_velocity.abs();
-    stretch + speed / rate.max(1.0) + reach
+    let band = model.band.map_or(0.0, |band| {
+        let corner_speed = state.linear.velocity.length() + reach * spin;
+        let amplitude = band.length(state) + corner_speed / lambda.max(1e-300) + reach;
+        amplitude * (lambda.powi(5) + lambda * lambda * spin.powi(3))
+    });
+    let decay =
+        state.linear.velocity.length() * linear_rate.powi(4) + reach * spin * angular_rate.powi(4);
+    (band + decay) / 120.0
 }
 
-/// RK4's local error on a mode of rate λ over a substep h is about A (λh)⁵ / 120 for a motion
-/// of amplitude A; over n substeps of dt/n, n A (λ dt/n)⁵ / 120 <= tolerance gives n.
+/// Substeps for the error per step to stay under the tolerance: n substeps of dt/n make an
+/// error of about n C (dt/n)⁵, so n⁴ >= C dt⁵ / tolerance. Never a substep near RK4's
+/// stability limit (λh < 2.78) either.
 pub fn substeps_needed(
     state: &BodyState,
     model: &ForceModel,
     dt: f64,
     settings: &AutoSettings,
 ) -> u64 {
-    let rate = fastest_rate(state, model);
-    let amplitude = length_scale(state, model, rate);
-    let x = rate * dt; // λ·dt of the whole step
-    if !(x.is_finite() && amplitude.is_finite()) {
-        return u64::MAX;
+    let (linear_rate, angular_rate) = model.damping_rates();
+    let fastest = band_rate(model)
+        .max(linear_rate)
+        .max(angular_rate)
+        .max(state.angular.angular_velocity.abs());
+    let accurate = (error_coefficient(state, model) * dt.powi(5) / settings.tolerance).powf(0.25);
+    let stable = fastest * dt / 1.5;
+    let n = accurate.max(stable).ceil();
+    if n.is_finite() {
+        n.clamp(1.0, u64::MAX as f64) as u64
+    } else {
+        u64::MAX
     }
-    // n⁴ >= A x⁵ / (120 tol)
-    let n = (amplitude * x.powi(5) / (120.0 * settings.tolerance)).powf(0.25);
-    // RK4 is stable for λh < 2.78: never take a substep near that.
-    let stable = x / 2.0;
-    n.max(stable).ceil().clamp(1.0, u64::MAX as f64) as u64
 }
 
 /// One fixed step of `auto`.
