@@ -49,7 +49,8 @@ try {
   };
   // The box's fill, sRGB (0.16, 0.42, 0.72), give or take the rasteriser.
   const isBox = (png, i) => Math.abs(png.data[i] - 41) < 30 && Math.abs(png.data[i + 1] - 107) < 30 && Math.abs(png.data[i + 2] - 184) < 30;
-  const isBand = (png, i) => png.data[i] > 180 && png.data[i + 1] < 80 && png.data[i + 2] > 40;
+  // The band: red turning magenta as it stretches.
+  const isBand = (png, i) => png.data[i] > 120 && png.data[i + 1] < 60 && png.data[i + 2] > 30;
   const pixels = (png, test) => {
     const found = [];
     for (let y = 0; y < png.height; y++) for (let x = 0; x < png.width; x++) if (test(png, (y * png.width + x) * 4)) found.push([x, y]);
@@ -67,24 +68,26 @@ try {
   const started = Date.now();
   await page.goto(url);
   let first = null;
-  for (let i = 0; i < 300 && !first; i++) {
+  for (let i = 0; i < 600 && !first; i++) {
     const png = await shot("first-frame");
-    const centre = ((height / 2) * width + width / 2) * 4;
-    if (isBox(png, centre)) first = png;
+    // Inside the box, clear of the cross at its centre.
+    const inside = ((height / 2 + 20) * width + width / 2 + 20) * 4;
+    if (isBox(png, inside)) first = png;
     else await page.waitForTimeout(100);
   }
   const firstFrameMs = Date.now() - started;
   check(first !== null, `the box is drawn at the centre (first frame after ${firstFrameMs} ms)`);
   const before = first && boxPose(first);
 
-  // Press right of and above the box, drag, and look while pressed.
-  await page.mouse.move(width / 2 + 200, height / 2 - 150);
+  // Press well right of and above the box, look while pressed, then drag on.
+  await page.mouse.move(width / 2 + 330, height / 2 - 250);
   await page.mouse.down();
+  await page.mouse.move(width / 2 + 320, height / 2 - 240);
+  const pressed = await shot("pressed");
   for (let i = 1; i <= 10; i++) {
-    await page.mouse.move(width / 2 + 200 + 10 * i, height / 2 - 150 + 5 * i);
+    await page.mouse.move(width / 2 + 320 - 20 * i, height / 2 - 240 + 10 * i);
     await page.waitForTimeout(50);
   }
-  const pressed = await shot("pressed");
   const band = pixels(pressed, isBand).length;
   check(band > 30, `the band is drawn while pressed (${band} band pixels)`);
   await page.mouse.up();
