@@ -91,16 +91,22 @@ try {
   const band = pixels(pressed, isBand).length;
   check(band > 30, `the band is drawn while pressed (${band} band pixels)`);
   await page.mouse.up();
-  await page.waitForTimeout(1500);
-  const after = boxPose(await shot("released"));
+  // A turning square lines up with the axes now and then: look several times.
+  const poses = [];
+  for (let i = 0; i < 6; i++) {
+    await page.waitForTimeout(250);
+    poses.push(boxPose(await shot(`released-${i}`)));
+  }
+  const after = poses.filter(Boolean).reduce((a, b) => (b.fill < a.fill ? b : a), { fill: 2 });
   await page.waitForTimeout(500);
   const afterBand = pixels(await shot("later"), isBand).length;
   check(afterBand < 5, `the band is gone after release (${afterBand} band pixels)`);
 
-  const moved = before && after ? Math.hypot(after.x - before.x, after.y - before.y) : 0;
+  const last = poses.filter(Boolean).at(-1);
+  const moved = before && last ? Math.hypot(last.x - before.x, last.y - before.y) : 0;
   check(moved > 20, `the box moved (${moved.toFixed(1)} px)`);
-  check(after && before && before.fill > 0.95 && after.fill < 0.95,
-    `the box turned (fills ${before?.fill.toFixed(2)} then ${after?.fill.toFixed(2)} of its bounding box)`);
+  check(before && before.fill > 0.95 && after.fill < 0.95,
+    `the box turned (fills ${before?.fill.toFixed(2)} of its bounding box, then as little as ${after.fill.toFixed(2)})`);
   check(errors.length === 0, `no console errors${errors.length ? ": " + errors.join(" | ") : ""}`);
   console.log(`first frame: ${firstFrameMs} ms after navigation`);
 } finally {
