@@ -38,13 +38,16 @@ fn show_integrator_in_title(
     let Some(window) = window.as_deref_mut() else {
         return;
     };
-    let detail = match *integrator {
+    let mut detail = match *integrator {
         Integrator::Auto => format!(
             ", {} substeps, {} fall-backs",
             stats.substeps, stats.fallbacks
         ),
         _ => String::new(),
     };
+    if let Some((diverged, step)) = stats.divergence {
+        detail += &format!(", {diverged} diverged at step {step}: steps refused");
+    }
     let title = format!(
         "Rubber Band Box (integrator: {}{detail}; I to change)",
         *integrator

@@ -123,12 +123,14 @@ fn lerp(a: f64, b: f64, t: f64) -> f64 {
     a + (b - a) * t
 }
 
-/// What the integrator did: the latest step's substeps (most over the bodies), and the steps
-/// where `auto` fell back to `implicit` since start-up.
+/// What the integrator did: the latest step's substeps (most over the bodies), the steps
+/// where `auto` fell back to `implicit` since start-up, and the latest step refused because
+/// it would have left the state non-finite (which integrator, which step).
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
 pub struct StepStats {
     pub substeps: u32,
     pub fallbacks: u64,
+    pub divergence: Option<(Integrator, u64)>,
 }
 
 /// Fixed steps run since start-up.
@@ -214,6 +216,7 @@ fn integrate(
     params: Res<SceneParams>,
     integrator: Res<Integrator>,
     auto: Res<AutoSettings>,
+    steps: Res<StepCount>,
     mut stats: ResMut<StepStats>,
     mut bodies: Query<(
         &mut LinearState,
@@ -230,6 +233,20 @@ fn integrate(
         let info = integrator.step_with(&mut state, &model, accumulator.forces, dt, &auto);
         stats.substeps = stats.substeps.max(info.substeps);
         stats.fallbacks += u64::from(info.fell_back);
+        // A divergent explicit method (a stiff band) must not put NaN, infinity or an absurd
+        // value into a component: refuse the step, keep the last sane state, and say so.
+        if !state.is_sane() {
+            let step = steps.0 + 1;
+            if stats.divergence.is_none() {
+                warn!(
+                    "integrator {} diverged at step {step}: step refused",
+                    *integrator
+                );
+            }
+            stats.divergence = Some((*integrator, step));
+            *accumulator = ForceAccumulator::default();
+            continue;
+        }
         *linear = state.linear;
         *angular = state.angular;
         *accumulator = ForceAccumulator::default();

@@ -22,7 +22,7 @@ use rubber_band_box::physics::{
 };
 use rubber_band_box::pointer::{Grip, PointerPlugin, PointerSource};
 use rubber_band_box::simulation::{
-    Band, ForceAccumulator, PhysicsSystems, RigidBox, SimulationPlugin, StepCount,
+    Band, ForceAccumulator, PhysicsSystems, RigidBox, SimulationPlugin, StepCount, StepStats,
 };
 use rubber_band_box::view::scene_projection;
 
@@ -577,4 +577,26 @@ fn the_integrator_key_switches_on_the_next_step_and_names_it_in_the_title() {
     let window = game.window;
     let title = game.world().get::<Window>(window).unwrap().title.clone();
     assert!(title.contains(expected_next.name()), "{title}");
+}
+
+#[test]
+fn a_diverging_step_is_refused_and_the_state_stays_finite() {
+    let mut game = Game::stepping();
+    game.world().insert_resource(Integrator::Euler);
+    game.world().resource_mut::<SceneParams>().stiffness = 1e9;
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(30);
+    let (linear, angular) = game.state();
+    let finite = linear.position.is_finite()
+        && linear.velocity.is_finite()
+        && angular.orientation.is_finite()
+        && angular.angular_velocity.is_finite();
+    assert!(finite, "{linear:?} {angular:?}");
+    let stats = *game.world().resource::<StepStats>();
+    let (integrator, step) = stats.divergence.expect("the divergence is reported");
+    assert_eq!(integrator, Integrator::Euler);
+    assert!((1..=30).contains(&step), "{step}");
+    let window = game.window;
+    let title = game.world().get::<Window>(window).unwrap().title.clone();
+    assert!(title.contains("euler diverged at step"), "{title}");
 }

@@ -49,6 +49,15 @@ impl BodyState {
         self.linear.position + rotate(local, self.angular.orientation)
     }
 
+    /// Finite, and every component within [`STATE_LIMIT`]: what the game accepts from a step.
+    pub fn is_sane(&self) -> bool {
+        self.is_finite()
+            && self.linear.position.abs().max_element() <= STATE_LIMIT
+            && self.linear.velocity.abs().max_element() <= STATE_LIMIT
+            && self.angular.orientation.abs() <= STATE_LIMIT
+            && self.angular.angular_velocity.abs() <= STATE_LIMIT
+    }
+
     pub fn is_finite(&self) -> bool {
         self.linear.position.is_finite()
             && self.linear.velocity.is_finite()
@@ -56,6 +65,11 @@ impl BodyState {
             && self.angular.angular_velocity.is_finite()
     }
 }
+
+/// No component of a sane state exceeds this: a billion times the scene, far beyond any hard
+/// case (the far anchor is 1e6 away; a band of k = 1e9 moves the box at about 6e6 px/s), and
+/// still inside f32's range for drawing. A step past it has diverged.
+pub const STATE_LIMIT: f64 = 1e12;
 
 /// Rotates `v` counter-clockwise by `angle` radians, written out as the tutorial's
 /// `rotateCopy` does so that the two round the same way.

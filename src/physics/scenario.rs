@@ -171,7 +171,8 @@ impl std::error::Error for UnknownScenario {}
 /// energy is the initial energy plus the band's energy at each attachment.
 pub const DIVERGENCE_FACTOR: f64 = 1e3;
 
-/// A run blew up: its state became non-finite or its energy left every physical bound.
+/// A run blew up: its state left [`super::body::STATE_LIMIT`] (or became non-finite), or its
+/// energy left every physical bound.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Diverged {
     pub integrator: Integrator,
@@ -275,7 +276,7 @@ impl Run {
         self.fallbacks += u64::from(self.last_step.fell_back);
         self.step += 1;
         let energy = self.sim.energy();
-        if !self.sim.state.is_finite()
+        if !self.sim.state.is_sane()
             || !energy.is_finite()
             || energy > DIVERGENCE_FACTOR * self.energy_budget + 1.0
         {
