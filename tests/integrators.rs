@@ -391,3 +391,34 @@ fn a_tighter_budget_makes_auto_fall_back_sooner() {
     run.advance_by(10).unwrap();
     assert_eq!(run.fallbacks, 10);
 }
+
+/// The soak (long mode, not in CI): 1e7 steps of the default integrator on the undamped seed
+/// scene with the band held. Run: `cargo test --release --test integrators -- --ignored soak --nocapture`.
+#[test]
+#[ignore]
+fn soak_ten_million_undamped_steps() {
+    let steps = 10_000_000;
+    let scenario = Scenario::named("undamped").unwrap();
+    let mut run = Run::of(&scenario, Integrator::default(), 0.01).unwrap();
+    let mass = run.sim.mass;
+    let e0 = run.sim.energy();
+    let l0 = angular_momentum_about(&run.sim.state, &mass, SEED_DRAG_TARGET);
+    let (mut energy, mut momentum) = (0.0_f64, 0.0_f64);
+    let started = std::time::Instant::now();
+    for _ in 0..steps {
+        run.advance().unwrap();
+        energy = energy.max((run.sim.energy() - e0).abs() / e0);
+        let l = angular_momentum_about(&run.sim.state, &mass, SEED_DRAG_TARGET);
+        momentum = momentum.max((l - l0).abs());
+    }
+    let final_energy = (run.sim.energy() - e0) / e0;
+    println!(
+        "soak: {steps} steps of {} in {:.1} s; energy: largest relative error {energy:.2e}, \
+         final {final_energy:.2e}; angular momentum about the anchor: largest change \
+         {momentum:.2e} (from {l0}); fall-backs {}",
+        Integrator::default(),
+        started.elapsed().as_secs_f64(),
+        run.fallbacks
+    );
+    assert!(energy < 1e-3 && momentum < 1.0);
+}

@@ -1,0 +1,219 @@
+//! The headless game shared by the schedule and property tests: `MinimalPlugins`, input and
+//! window messages, the physics, pointer and controls plugins, and a camera set up as the game's.
+#![allow(dead_code, unused_imports)]
+
+pub use std::time::Duration;
+
+pub use bevy::camera::RenderTargetInfo;
+pub use bevy::input::ButtonState;
+pub use bevy::input::InputPlugin;
+pub use bevy::input::keyboard::{Key, KeyboardInput};
+pub use bevy::input::mouse::MouseButtonInput;
+pub use bevy::input::touch::{TouchInput, TouchPhase};
+pub use bevy::math::DVec2;
+pub use bevy::prelude::*;
+pub use bevy::time::TimeUpdateStrategy;
+pub use bevy::window::{
+    ExitCondition, PrimaryWindow, WindowFocused, WindowPlugin, WindowResolution,
+};
+
+pub use rubber_band_box::controls::{CYCLE_INTEGRATOR, ControlsPlugin};
+pub use rubber_band_box::physics::{
+    AngularState, Integrator, LinearState, SceneParams, Simulation, Wrench,
+};
+pub use rubber_band_box::pointer::{Grip, PointerPlugin, PointerSource};
+pub use rubber_band_box::simulation::{
+    Band, ForceAccumulator, PhysicsSystems, RigidBox, SimulationPlugin, StepCount, StepStats,
+};
+pub use rubber_band_box::view::scene_projection;
+
+/// A 1280 x 720 window: the 640 x 480 scene fits its height, so one pixel is 2/3 of a world
+/// unit and the screen centre (640, 360) is the world origin.
+pub const WINDOW: UVec2 = UVec2::new(1280, 720);
+
+pub fn screen_to_world(screen: Vec2) -> DVec2 {
+    let scale = 480.0 / 720.0;
+    DVec2::new(
+        (screen.x as f64 - 640.0) * scale,
+        (360.0 - screen.y as f64) * scale,
+    )
+}
+
+pub fn world_to_screen(world: DVec2) -> Vec2 {
+    let scale = 720.0 / 480.0;
+    Vec2::new(
+        (640.0 + world.x * scale) as f32,
+        (360.0 - world.y * scale) as f32,
+    )
+}
+
+pub struct Game {
+    pub app: App,
+    pub window: Entity,
+}
+
+impl Game {
+    /// A headless game whose every `update()` advances the clock by `frame`.
+    pub fn new(frame: Duration) -> Self {
+        let mut app = App::new();
+        app.add_plugins((
+            MinimalPlugins,
+            InputPlugin,
+            WindowPlugin {
+                primary_window: None,
+                exit_condition: ExitCondition::DontExit,
+                close_when_requested: false,
+                ..default()
+            },
+            SimulationPlugin,
+            PointerPlugin,
+            ControlsPlugin,
+        ))
+        .insert_resource(TimeUpdateStrategy::ManualDuration(frame))
+        .init_resource::<AccumulatorAudit>()
+        .add_systems(
+            FixedUpdate,
+            audit_accumulators.after(PhysicsSystems::Integrate),
+        );
+
+        let window = app
+            .world_mut()
+            .spawn((
+                Window {
+                    resolution: WindowResolution::new(WINDOW.x, WINDOW.y),
+                    ..default()
+                },
+                PrimaryWindow,
+            ))
+            .id();
+        // What bevy_render's camera system would compute for this window.
+        let mut projection = scene_projection();
+        projection.update(WINDOW.x as f32, WINDOW.y as f32);
+        let mut camera = Camera::default();
+        camera.computed.clip_from_view = projection.get_clip_from_view();
+        camera.computed.target_info = Some(RenderTargetInfo {
+            physical_size: WINDOW,
+            scale_factor: 1.0,
+        });
+        app.world_mut()
+            .spawn((Camera2d, camera, projection, GlobalTransform::IDENTITY));
+
+        app.finish();
+        app.cleanup();
+        // The first update only starts the clock: it runs Startup and no fixed step.
+        app.update();
+        Self { app, window }
+    }
+
+    /// One fixed step (10 ms at the seed's 100 Hz) per update.
+    pub fn stepping() -> Self {
+        Self::new(Duration::from_millis(10))
+    }
+
+    pub fn world(&mut self) -> &mut World {
+        self.app.world_mut()
+    }
+
+    pub fn update(&mut self, frames: usize) {
+        for _ in 0..frames {
+            self.app.update();
+        }
+    }
+
+    pub fn cursor(&mut self, screen: Option<Vec2>) {
+        let window = self.window;
+        self.world()
+            .get_mut::<Window>(window)
+            .unwrap()
+            .set_cursor_position(screen);
+    }
+
+    pub fn mouse(&mut self, state: ButtonState) {
+        let window = self.window;
+        self.world().write_message(MouseButtonInput {
+            button: MouseButton::Left,
+            state,
+            window,
+        });
+    }
+
+    pub fn press_at(&mut self, world: DVec2) {
+        self.cursor(Some(world_to_screen(world)));
+        self.mouse(ButtonState::Pressed);
+    }
+
+    pub fn key(&mut self, key_code: KeyCode, state: ButtonState) {
+        let window = self.window;
+        self.world().write_message(KeyboardInput {
+            key_code,
+            logical_key: Key::Character("i".into()),
+            state,
+            text: None,
+            repeat: false,
+            window,
+        });
+    }
+
+    /// A touch at a screen position (the property tests' fingers may land outside the window).
+    pub fn touch_screen(&mut self, id: u64, phase: TouchPhase, position: Vec2) {
+        let window = self.window;
+        self.world().write_message(TouchInput {
+            phase,
+            position,
+            window,
+            force: None,
+            id,
+        });
+    }
+
+    pub fn touch(&mut self, id: u64, phase: TouchPhase, world: DVec2) {
+        let window = self.window;
+        self.world().write_message(TouchInput {
+            phase,
+            position: world_to_screen(world),
+            window,
+            force: None,
+            id,
+        });
+    }
+
+    pub fn bands(&mut self) -> Vec<Band> {
+        let mut query = self.world().query::<&Band>();
+        query.iter(self.world()).copied().collect()
+    }
+
+    pub fn the_band(&mut self) -> Band {
+        let bands = self.bands();
+        assert_eq!(bands.len(), 1, "expected exactly one band");
+        bands[0]
+    }
+
+    pub fn state(&mut self) -> (LinearState, AngularState) {
+        let mut query = self
+            .world()
+            .query_filtered::<(&LinearState, &AngularState), With<RigidBox>>();
+        let (linear, angular) = query.single(self.world()).unwrap();
+        (*linear, *angular)
+    }
+
+    pub fn steps(&mut self) -> u64 {
+        self.world().resource::<StepCount>().0
+    }
+}
+
+/// The largest accumulator seen right after an integration step.
+#[derive(Resource, Default)]
+pub struct AccumulatorAudit {
+    pub steps: u64,
+    pub largest: f64,
+    pub bands_left: usize,
+}
+
+pub fn audit_accumulators(bodies: Query<&ForceAccumulator>, mut audit: ResMut<AccumulatorAudit>) {
+    for accumulator in &bodies {
+        let Wrench { force, torque } = accumulator.forces.total();
+        audit.steps += 1;
+        audit.largest = audit.largest.max(force.length()).max(torque.abs());
+        audit.bands_left += usize::from(accumulator.band.is_some());
+    }
+}
