@@ -53,35 +53,35 @@ pub struct SimulateArgs {
     #[arg(long, value_parser = parse_integrator)]
     pub integrator: Option<Integrator>,
     /// Fixed step in seconds.
-    #[arg(long, default_value_t = 0.01, value_parser = positive, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.01, value_parser = positive, allow_hyphen_values = true)]
     pub dt: f64,
     /// Number of steps.
-    #[arg(long, default_value_t = 600, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 600, allow_hyphen_values = true)]
     pub steps: u64,
     /// START:END:X,Y: from step START the band pulls the corner nearest (X,Y) toward (X,Y),
     /// for steps START <= s < END. Repeatable; replaces the scene's own drags.
     #[arg(long = "drag", value_parser = parse_drag, allow_hyphen_values = true)]
     pub drags: Vec<Drag>,
     /// Band stiffness k.
-    #[arg(long, value_parser = non_negative, allow_negative_numbers = true)]
+    #[arg(long, value_parser = non_negative, allow_hyphen_values = true)]
     pub k: Option<f64>,
     /// Box mass.
-    #[arg(long, value_parser = positive, allow_negative_numbers = true)]
+    #[arg(long, value_parser = positive, allow_hyphen_values = true)]
     pub mass: Option<f64>,
     /// Box width.
-    #[arg(long, value_parser = positive, allow_negative_numbers = true)]
+    #[arg(long, value_parser = positive, allow_hyphen_values = true)]
     pub width: Option<f64>,
     /// Box height.
-    #[arg(long, value_parser = positive, allow_negative_numbers = true)]
+    #[arg(long, value_parser = positive, allow_hyphen_values = true)]
     pub height: Option<f64>,
     /// Linear damping b (force −b·v).
-    #[arg(long, value_parser = non_negative, allow_negative_numbers = true)]
+    #[arg(long, value_parser = non_negative, allow_hyphen_values = true)]
     pub linear_damping: Option<f64>,
     /// Angular damping rate c per second.
-    #[arg(long, value_parser = non_negative, allow_negative_numbers = true)]
+    #[arg(long, value_parser = non_negative, allow_hyphen_values = true)]
     pub angular_damping: Option<f64>,
     /// `auto`: target error per step (px).
-    #[arg(long, value_parser = positive, allow_negative_numbers = true)]
+    #[arg(long, value_parser = positive, allow_hyphen_values = true)]
     pub auto_tolerance: Option<f64>,
     /// `auto`: most RK4 substeps per step before falling back to `implicit`.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]

@@ -121,6 +121,9 @@ fn bad_arguments_get_a_clear_message_and_a_non_zero_exit() {
         (&["--drag", "a:5:1,2"], "not a step number"),
         (&["--init", "1,2,3"], "expected X,Y,THETA,VX,VY,OMEGA"),
         (&["--steps", "-3"], "--steps"),
+        (&["--k", "abc"], "'abc' is not a number"),
+        (&["--auto-max-substeps", "0"], "--auto-max-substeps"),
+        (&["--auto-tolerance", "-1e-8"], "greater than zero"),
         (&["--frobnicate"], "--frobnicate"),
     ];
     for (args, message) in cases {
@@ -156,4 +159,33 @@ fn a_divergence_is_reported_with_the_integrator_and_step() {
     let text = stdout(&output);
     assert!(text.lines().count() > 1);
     assert!(!text.contains("NaN") && !text.contains("inf"));
+}
+
+#[test]
+fn a_failed_write_is_reported_not_panicked() {
+    let Ok(full) = std::fs::File::create("/dev/full") else {
+        return; // not on this system
+    };
+    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
+        .args(["simulate", "--steps", "100000"])
+        .stdout(full)
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let err = stderr(&output);
+    assert!(err.contains("cannot write the trajectory"), "{err}");
+}
+
+#[test]
+fn the_report_says_when_it_cannot_write_its_files() {
+    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
+        .args(["report", "--quick", "--out", "/dev/null/report"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let err = stderr(&output);
+    assert!(
+        err.starts_with("error: ") && !err.contains("panicked"),
+        "{err}"
+    );
 }
