@@ -8,11 +8,13 @@
 use std::error::Error;
 use std::fmt::Write as _;
 use std::fs;
+use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use bevy::math::DVec2;
 use clap::Args;
+use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use crate::physics::scenario::SEED_DRAG_TARGET;
@@ -414,6 +416,11 @@ fn stiff_invariants(quick: bool) -> Vec<(Integrator, InvariantDrift)> {
         .collect()
 }
 
+/// An optional CSV field: empty when absent.
+fn optional(value: Option<impl ToString>) -> String {
+    value.map_or(String::new(), |v| v.to_string())
+}
+
 fn format_option(value: Option<f64>, missing: &str) -> String {
     value.map_or(missing.to_owned(), |v| format!("{v:.3e}"))
 }
@@ -463,10 +470,10 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
                 p.integrator,
                 p.dt,
                 p.steps,
-                p.error.map_or(String::new(), |e| e.to_string()),
-                p.energy_drift.map_or(String::new(), |e| e.to_string()),
+                optional(p.error),
+                optional(p.energy_drift),
                 p.ns_per_simulated_second,
-                p.diverged_at.map_or(String::new(), |s| s.to_string()),
+                optional(p.diverged_at),
             )?;
         }
     }
@@ -543,7 +550,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
                 case.rate,
                 case.steps,
                 integrator,
-                outcome.map_or(String::new(), |s| s.to_string())
+                optional(*outcome)
             )?;
         }
     }
@@ -591,8 +598,8 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
                 p.rate,
                 p.integrator,
                 p.ns_per_tick,
-                p.error.map_or(String::new(), |e| e.to_string()),
-                p.diverged_at.map_or(String::new(), |s| s.to_string()),
+                optional(p.error),
+                optional(p.diverged_at),
                 p.mean_substeps,
                 p.fallbacks
             )?;
@@ -629,68 +636,100 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     Ok(())
 }
 
+/// One log-log panel: a line with dots per integrator, a legend, and red crosses.
+struct Panel<'a> {
+    title: String,
+    x: (&'a str, Range<f64>),
+    y: (&'a str, Range<f64>),
+    lines: Vec<(Integrator, Vec<(f64, f64)>)>,
+    crosses: Vec<(f64, f64)>,
+}
+
+fn draw_panel(
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+    panel: Panel,
+) -> Result<(), Box<dyn Error>> {
+    let mut chart = ChartBuilder::on(area)
+        .caption(panel.title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(90)
+        .build_cartesian_2d(panel.x.1.log_scale(), panel.y.1.log_scale())?;
+    chart
+        .configure_mesh()
+        .light_line_style(RGBColor(240, 240, 240))
+        .bold_line_style(RGBColor(200, 200, 200))
+        .x_desc(panel.x.0)
+        .y_desc(panel.y.0)
+        .x_label_formatter(&|x| format!("{x:.0e}"))
+        .y_label_formatter(&|y| format!("{y:.0e}"))
+        .draw()?;
+    for (integrator, line) in panel.lines {
+        let index = Integrator::ALL
+            .iter()
+            .position(|&i| i == integrator)
+            .unwrap_or(0);
+        let colour = Palette99::pick(index).to_rgba();
+        chart
+            .draw_series(LineSeries::new(line.clone(), colour.stroke_width(2)))?
+            .label(integrator.name())
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
+        chart.draw_series(line.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+    }
+    chart.draw_series(panel.crosses.iter().map(|&p| Cross::new(p, 5, RED)))?;
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperLeft)
+        .draw()?;
+    Ok(())
+}
+
+/// Smallest and largest of some positive values.
+fn extent(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    values.fold((f64::INFINITY, 0.0), |(low, high), v| {
+        (low.min(v), high.max(v))
+    })
+}
+
 /// Error (log x) against cost (log y), a panel per scene, a line per integrator; diverged
 /// runs are red crosses at the right edge.
 fn plot_work_precision(points: &[WorkPoint], path: &Path) -> Result<(), Box<dyn Error>> {
     let root = SVGBackend::new(path, (1400, 1000)).into_drawing_area();
     root.fill(&WHITE)?;
     let scenes: Vec<&str> = work_scenes().iter().map(|s| s.scenario.name).collect();
-    let panels = root.split_evenly((2, 2));
-    for (panel, scene) in panels.iter().zip(&scenes) {
+    for (area, scene) in root.split_evenly((2, 2)).iter().zip(&scenes) {
         let here: Vec<&WorkPoint> = points.iter().filter(|p| p.scene == *scene).collect();
-        let errors = here.iter().filter_map(|p| p.error).map(|e| e.max(1e-16));
-        let (mut x_min, mut x_max) = (f64::INFINITY, 0.0_f64);
-        for e in errors {
-            x_min = x_min.min(e);
-            x_max = x_max.max(e);
-        }
-        let x_min = (x_min / 3.0).min(1e-12);
+        let (x_min, x_max) = extent(here.iter().filter_map(|p| p.error).map(|e| e.max(1e-16)));
         let x_max = x_max.max(1.0) * 30.0;
-        let costs = here.iter().map(|p| p.ns_per_simulated_second);
-        let y_min = costs.clone().fold(f64::INFINITY, f64::min) / 2.0;
-        let y_max = costs.fold(0.0, f64::max) * 2.0;
-        let mut chart = ChartBuilder::on(panel)
-            .caption(
-                format!("{scene}: cost against error (x: diverged)"),
-                ("sans-serif", 20),
-            )
-            .margin(12)
-            .x_label_area_size(45)
-            .y_label_area_size(90)
-            .build_cartesian_2d((x_min..x_max).log_scale(), (y_min..y_max).log_scale())?;
-        chart
-            .configure_mesh()
-            .light_line_style(RGBColor(240, 240, 240))
-            .bold_line_style(RGBColor(200, 200, 200))
-            .x_desc("final pose error (px)")
-            .y_desc("ns per simulated second")
-            .x_label_formatter(&|x| format!("{x:.0e}"))
-            .y_label_formatter(&|y| format!("{y:.0e}"))
-            .draw()?;
-        for (index, integrator) in Integrator::ALL.iter().enumerate() {
-            let colour = Palette99::pick(index).to_rgba();
-            let line: Vec<(f64, f64)> = here
-                .iter()
-                .filter(|p| p.integrator == *integrator)
-                .filter_map(|p| p.error.map(|e| (e.max(1e-16), p.ns_per_simulated_second)))
-                .collect();
-            chart
-                .draw_series(LineSeries::new(line.clone(), colour.stroke_width(2)))?
-                .label(integrator.name())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
-            chart.draw_series(line.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
-            let diverged = here
-                .iter()
-                .filter(|p| p.integrator == *integrator && p.diverged_at.is_some())
-                .map(|p| Cross::new((x_max / 2.0, p.ns_per_simulated_second), 5, RED));
-            chart.draw_series(diverged)?;
-        }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperLeft)
-            .draw()?;
+        let (y_min, y_max) = extent(here.iter().map(|p| p.ns_per_simulated_second));
+        let lines = Integrator::ALL
+            .iter()
+            .map(|&integrator| {
+                let line = here
+                    .iter()
+                    .filter(|p| p.integrator == integrator)
+                    .filter_map(|p| p.error.map(|e| (e.max(1e-16), p.ns_per_simulated_second)))
+                    .collect();
+                (integrator, line)
+            })
+            .collect();
+        let crosses = here
+            .iter()
+            .filter(|p| p.diverged_at.is_some())
+            .map(|p| (x_max / 2.0, p.ns_per_simulated_second))
+            .collect();
+        draw_panel(
+            area,
+            Panel {
+                title: format!("{scene}: cost against error (x: diverged)"),
+                x: ("final pose error (px)", (x_min / 3.0).min(1e-12)..x_max),
+                y: ("ns per simulated second", y_min / 2.0..y_max * 2.0),
+                lines,
+                crosses,
+            },
+        )?;
     }
     root.present()?;
     Ok(())
@@ -700,55 +739,40 @@ fn plot_work_precision(points: &[WorkPoint], path: &Path) -> Result<(), Box<dyn 
 fn plot_stiffness(points: &[StiffPoint], path: &Path) -> Result<(), Box<dyn Error>> {
     let root = SVGBackend::new(path, (1400, 550)).into_drawing_area();
     root.fill(&WHITE)?;
-    let panels = root.split_evenly((1, 2));
     let at_100: Vec<&StiffPoint> = points.iter().filter(|p| p.rate == 100.0).collect();
     type Value = fn(&StiffPoint) -> Option<f64>;
     let views: [(&str, &str, Value); 2] = [
+        // A diverged run stops early and looks cheap: leave it out.
         ("cost per fixed step at 100 Hz", "ns per step", |p| {
-            Some(p.ns_per_tick)
+            p.diverged_at.is_none().then_some(p.ns_per_tick)
         }),
         ("error after 10 steps at 100 Hz", "pose error (px)", |p| {
             p.error.map(|e| e.max(1e-14))
         }),
     ];
-    for (panel, (title, y_desc, value)) in panels.iter().zip(views) {
-        let values: Vec<f64> = at_100.iter().filter_map(|p| value(p)).collect();
-        let y_min = values.iter().copied().fold(f64::INFINITY, f64::min) / 3.0;
-        let y_max = values.iter().copied().fold(0.0, f64::max) * 3.0;
-        let mut chart = ChartBuilder::on(panel)
-            .caption(title, ("sans-serif", 20))
-            .margin(12)
-            .x_label_area_size(45)
-            .y_label_area_size(90)
-            .build_cartesian_2d((10.0..2e9).log_scale(), (y_min..y_max).log_scale())?;
-        chart
-            .configure_mesh()
-            .light_line_style(RGBColor(240, 240, 240))
-            .bold_line_style(RGBColor(200, 200, 200))
-            .x_desc("band stiffness k")
-            .y_desc(y_desc)
-            .x_label_formatter(&|x| format!("{x:.0e}"))
-            .y_label_formatter(&|y| format!("{y:.0e}"))
-            .draw()?;
-        for (index, integrator) in Integrator::ALL.iter().enumerate() {
-            let colour = Palette99::pick(index).to_rgba();
-            let line: Vec<(f64, f64)> = at_100
-                .iter()
-                .filter(|p| p.integrator == *integrator)
-                .filter_map(|p| value(p).map(|v| (p.k, v)))
-                .collect();
-            chart
-                .draw_series(LineSeries::new(line.clone(), colour.stroke_width(2)))?
-                .label(integrator.name())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
-            chart.draw_series(line.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
-        }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperLeft)
-            .draw()?;
+    for (area, (title, y_desc, value)) in root.split_evenly((1, 2)).iter().zip(views) {
+        let (y_min, y_max) = extent(at_100.iter().filter_map(|p| value(p)));
+        let lines = Integrator::ALL
+            .iter()
+            .map(|&integrator| {
+                let line = at_100
+                    .iter()
+                    .filter(|p| p.integrator == integrator)
+                    .filter_map(|p| value(p).map(|v| (p.k, v)))
+                    .collect();
+                (integrator, line)
+            })
+            .collect();
+        draw_panel(
+            area,
+            Panel {
+                title: title.to_owned(),
+                x: ("band stiffness k", 10.0..2e9),
+                y: (y_desc, y_min / 3.0..y_max * 3.0),
+                lines,
+                crosses: Vec::new(),
+            },
+        )?;
     }
     root.present()?;
     Ok(())
