@@ -66,6 +66,10 @@ fn play(args: PlayArgs) -> ExitCode {
     if let Some(rate) = args.step_rate {
         params.step_rate_hz = rate;
     }
+    if let Err(error) = params.validate() {
+        eprintln!("error: {error}");
+        return ExitCode::from(2);
+    }
     App::new()
         .insert_resource(ClearColor(Color::BLACK))
         .insert_resource(params)

@@ -145,8 +145,26 @@ pub fn body_state(linear: &LinearState, angular: &AngularState) -> BodyState {
     }
 }
 
+/// Bevy's fixed clock counts whole nanoseconds and panics on a zero step: a rate it cannot
+/// represent is refused with a message, and the clock keeps its step.
 fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {
-    time.set_timestep(Duration::from_secs_f64(params.dt()));
+    let step = params
+        .validate()
+        .map_err(|error| error.to_string())
+        .and_then(|()| Duration::try_from_secs_f64(params.dt()).map_err(|e| e.to_string()))
+        .and_then(|step| {
+            (!step.is_zero())
+                .then_some(step)
+                .ok_or_else(|| "the step is shorter than a nanosecond".to_owned())
+        });
+    match step {
+        Ok(step) => time.set_timestep(step),
+        Err(error) => error!(
+            "refusing the step rate {} Hz ({error}); keeping {:?}",
+            params.step_rate_hz,
+            time.timestep()
+        ),
+    }
 }
 
 /// Spawns the box at rest at the centre of the scene.

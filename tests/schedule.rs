@@ -402,3 +402,18 @@ fn a_diverging_step_is_refused_and_the_state_stays_finite() {
     let title = game.world().get::<Window>(window).unwrap().title.clone();
     assert!(title.contains("euler diverged at step"), "{title}");
 }
+
+#[test]
+fn a_step_rate_the_clock_cannot_hold_is_refused_without_a_panic() {
+    for rate in [1e300, f64::NAN, -5.0, 0.0] {
+        let mut app = App::new();
+        app.add_plugins((MinimalPlugins, SimulationPlugin))
+            .insert_resource(SceneParams {
+                step_rate_hz: rate,
+                ..SceneParams::seed()
+            });
+        app.update();
+        let step = app.world().resource::<Time<Fixed>>().timestep();
+        assert!(!step.is_zero(), "{rate}");
+    }
+}
