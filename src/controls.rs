@@ -1,25 +1,71 @@
-//! Keyboard controls: `I` cycles the integrator. The window title names the one in use.
+//! Keyboard controls, each applied before the fixed loop so it acts on the very next step.
+//! The window title shows the state they set.
+//!
+//! | key | effect |
+//! |---|---|
+//! | Space | pause / resume |
+//! | N | one fixed step while paused |
+//! | R | reset: the box at rest at the centre, no band |
+//! | I | next integrator |
+//! | `[` / `]` | band stiffness k ÷10 / ×10 (1e-2 to 1e12) |
+//! | `-` / `=` | time scale ÷2 / ×2 (1/16 to 16) |
+//! | PageDown / PageUp | fixed step rate ÷2 / ×2 (8 to 4096 Hz) |
+//! | V | force and velocity vectors |
+//! | T | trail of the pulled corner |
 
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 
-use crate::physics::Integrator;
-use crate::simulation::StepStats;
+use crate::physics::{BodyState, Integrator, SceneParams};
+use crate::pointer::Grip;
+use crate::simulation::{
+    Band, ForceAccumulator, RenderSnapshots, RigidBox, StepStats, apply_step_rate,
+};
 
 pub struct ControlsPlugin;
 
 impl Plugin for ControlsPlugin {
     fn build(&self, app: &mut App) {
-        // Before the fixed loop, like the pointer, so a key acts on the very next step.
-        app.add_systems(
-            RunFixedMainLoop,
-            cycle_integrator.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
-        )
-        .add_systems(Update, show_integrator_in_title);
+        app.init_resource::<Overlays>()
+            .add_systems(
+                RunFixedMainLoop,
+                (
+                    cycle_integrator,
+                    pause_and_step,
+                    reset_scene,
+                    tune_parameters,
+                    toggle_overlays,
+                )
+                    .before(apply_step_rate)
+                    .in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+            )
+            .add_systems(Update, show_state_in_title);
     }
 }
 
 pub const CYCLE_INTEGRATOR: KeyCode = KeyCode::KeyI;
+pub const PAUSE: KeyCode = KeyCode::Space;
+pub const SINGLE_STEP: KeyCode = KeyCode::KeyN;
+pub const RESET: KeyCode = KeyCode::KeyR;
+pub const SOFTER: KeyCode = KeyCode::BracketLeft;
+pub const STIFFER: KeyCode = KeyCode::BracketRight;
+pub const SLOWER: KeyCode = KeyCode::Minus;
+pub const FASTER: KeyCode = KeyCode::Equal;
+pub const FEWER_STEPS: KeyCode = KeyCode::PageDown;
+pub const MORE_STEPS: KeyCode = KeyCode::PageUp;
+pub const VECTORS: KeyCode = KeyCode::KeyV;
+pub const TRAIL: KeyCode = KeyCode::KeyT;
+
+pub const STIFFNESS_RANGE: (f64, f64) = (1e-2, 1e12);
+pub const TIME_SCALE_RANGE: (f64, f64) = (1.0 / 16.0, 16.0);
+pub const STEP_RATE_RANGE: (f64, f64) = (8.0, 4096.0);
+
+/// What the drawing shows besides the box and the band.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct Overlays {
+    pub vectors: bool,
+    pub trail: bool,
+}
 
 /// The switch takes effect on the next fixed step.
 pub fn cycle_integrator(keys: Res<ButtonInput<KeyCode>>, mut integrator: ResMut<Integrator>) {
@@ -29,29 +75,136 @@ pub fn cycle_integrator(keys: Res<ButtonInput<KeyCode>>, mut integrator: ResMut<
     }
 }
 
-/// "Rubber Band Box (integrator: auto, 2 substeps, 0 fall-backs; I to change)".
-fn show_integrator_in_title(
+/// Pausing stops the virtual clock, so no fixed step runs; a single step feeds the fixed clock
+/// exactly one step of time.
+fn pause_and_step(
+    keys: Res<ButtonInput<KeyCode>>,
+    mut virtual_time: ResMut<Time<Virtual>>,
+    mut fixed_time: ResMut<Time<Fixed>>,
+) {
+    if keys.just_pressed(PAUSE) {
+        if virtual_time.is_paused() {
+            virtual_time.unpause();
+        } else {
+            virtual_time.pause();
+        }
+    }
+    if keys.just_pressed(SINGLE_STEP) && virtual_time.is_paused() {
+        let step = fixed_time.timestep();
+        fixed_time.accumulate_overstep(step);
+    }
+}
+
+fn reset_scene(
+    keys: Res<ButtonInput<KeyCode>>,
+    mut commands: Commands,
+    bands: Query<Entity, With<Band>>,
+    mut boxes: Query<
+        (
+            &mut crate::physics::LinearState,
+            &mut crate::physics::AngularState,
+            &mut ForceAccumulator,
+            &mut RenderSnapshots,
+        ),
+        With<RigidBox>,
+    >,
+    mut grip: ResMut<Grip>,
+    mut stats: ResMut<StepStats>,
+) {
+    if !keys.just_pressed(RESET) {
+        return;
+    }
+    for band in &bands {
+        commands.entity(band).despawn();
+    }
+    let rest = BodyState::default();
+    for (mut linear, mut angular, mut accumulator, mut snapshots) in &mut boxes {
+        *linear = rest.linear;
+        *angular = rest.angular;
+        *accumulator = ForceAccumulator::default();
+        *snapshots = RenderSnapshots::at_rest(rest);
+    }
+    grip.0 = None;
+    *stats = StepStats::default();
+}
+
+/// k, the time scale and the step rate move by factors, so that a player reaches the hard
+/// cases in a few presses; each stays inside its range and valid.
+fn tune_parameters(
+    keys: Res<ButtonInput<KeyCode>>,
+    mut params: ResMut<SceneParams>,
+    mut virtual_time: ResMut<Time<Virtual>>,
+) {
+    let scaled =
+        |value: f64, factor: f64, (low, high): (f64, f64)| (value * factor).clamp(low, high);
+    let mut next = *params;
+    if keys.just_pressed(SOFTER) {
+        next.stiffness = scaled(next.stiffness, 0.1, STIFFNESS_RANGE);
+    }
+    if keys.just_pressed(STIFFER) {
+        next.stiffness = scaled(next.stiffness.max(STIFFNESS_RANGE.0), 10.0, STIFFNESS_RANGE);
+    }
+    if keys.just_pressed(FEWER_STEPS) {
+        next.step_rate_hz = scaled(next.step_rate_hz, 0.5, STEP_RATE_RANGE);
+    }
+    if keys.just_pressed(MORE_STEPS) {
+        next.step_rate_hz = scaled(next.step_rate_hz, 2.0, STEP_RATE_RANGE);
+    }
+    if next != *params {
+        match next.validate() {
+            Ok(()) => *params = next,
+            Err(error) => warn!("refused: {error}"),
+        }
+    }
+    let speed = virtual_time.relative_speed_f64();
+    if keys.just_pressed(SLOWER) {
+        virtual_time.set_relative_speed_f64(scaled(speed, 0.5, TIME_SCALE_RANGE));
+    }
+    if keys.just_pressed(FASTER) {
+        virtual_time.set_relative_speed_f64(scaled(speed, 2.0, TIME_SCALE_RANGE));
+    }
+}
+
+fn toggle_overlays(keys: Res<ButtonInput<KeyCode>>, mut overlays: ResMut<Overlays>) {
+    if keys.just_pressed(VECTORS) {
+        overlays.vectors = !overlays.vectors;
+    }
+    if keys.just_pressed(TRAIL) {
+        overlays.trail = !overlays.trail;
+    }
+}
+
+/// "Rubber Band Box: auto (2 substeps, 0 fall-backs), k 20, 100 Hz, time ×1, paused".
+fn show_state_in_title(
     integrator: Res<Integrator>,
     stats: Res<StepStats>,
+    params: Res<SceneParams>,
+    virtual_time: Res<Time<Virtual>>,
     mut window: Option<Single<&mut Window, With<PrimaryWindow>>>,
 ) {
     let Some(window) = window.as_deref_mut() else {
         return;
     };
-    let mut detail = match *integrator {
-        Integrator::Auto => format!(
-            ", {} substeps, {} fall-backs",
+    let mut title = format!("Rubber Band Box: {}", *integrator);
+    if *integrator == Integrator::Auto {
+        title += &format!(
+            " ({} substeps, {} fall-backs)",
             stats.substeps, stats.fallbacks
-        ),
-        _ => String::new(),
-    };
-    if let Some((diverged, step)) = stats.divergence {
-        detail += &format!(", {diverged} diverged at step {step}: steps refused");
+        );
     }
-    let title = format!(
-        "Rubber Band Box (integrator: {}{detail}; I to change)",
-        *integrator
+    title += &format!(
+        ", k {}, {} Hz, time ×{}",
+        params.stiffness,
+        params.step_rate_hz,
+        virtual_time.relative_speed_f64()
     );
+    if virtual_time.is_paused() {
+        title += ", paused (N steps)";
+    }
+    if let Some((diverged, step)) = stats.divergence {
+        title += &format!(", {diverged} diverged at step {step}: steps refused");
+    }
+    title += "; Space I R [ ] - = V T";
     if window.title != title {
         window.title = title;
     }

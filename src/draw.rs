@@ -5,7 +5,12 @@
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
-use crate::physics::{MassProperties, SCENE_SIZE};
+use std::collections::VecDeque;
+
+use bevy::math::DVec2;
+
+use crate::controls::Overlays;
+use crate::physics::{MassProperties, SCENE_SIZE, SceneParams};
 use crate::simulation::{Band, RenderSnapshots, RigidBox};
 use crate::view::interpolated_state;
 
@@ -23,8 +28,18 @@ impl Plugin for DrawPlugin {
     fn build(&self, app: &mut App) {
         app.add_observer(fill_box)
             .add_observer(pin_band)
+            .init_resource::<Trail>()
             .add_systems(Startup, thicken_lines)
-            .add_systems(Update, (draw_scene_border, draw_boxes, draw_bands));
+            .add_systems(
+                Update,
+                (
+                    draw_scene_border,
+                    draw_boxes,
+                    draw_bands,
+                    draw_vectors,
+                    (record_trail, draw_trail).chain(),
+                ),
+            );
     }
 }
 
@@ -108,4 +123,88 @@ fn draw_bands(
 /// Red when slack, toward magenta as the band stretches.
 pub fn band_colour(length: f64) -> Color {
     Color::srgb(1.0, 0.0, (length / BAND_MAGENTA_LENGTH).min(1.0) as f32)
+}
+
+const VELOCITY_COLOUR: Color = Color::srgb(0.3, 0.9, 0.4);
+const FORCE_COLOUR: Color = Color::srgb(1.0, 0.55, 0.1);
+/// The velocity arrow shows where the centre will be in this many seconds.
+const VELOCITY_ARROW_SECONDS: f32 = 0.25;
+/// The force arrow grows with the logarithm of the force, so that k = 20 and k = 1e9 both fit.
+fn force_arrow_length(force: f64) -> f64 {
+    (30.0 * (1.0 + force / 10.0).log10()).min(300.0)
+}
+
+/// Velocity at the centre; the band's force at its corner.
+fn draw_vectors(
+    mut gizmos: Gizmos,
+    overlays: Res<Overlays>,
+    params: Res<SceneParams>,
+    fixed_time: Res<Time<Fixed>>,
+    bodies: Query<&RenderSnapshots>,
+    bands: Query<&Band>,
+) {
+    if !overlays.vectors {
+        return;
+    }
+    for snapshots in &bodies {
+        let state = interpolated_state(snapshots, &fixed_time);
+        let centre = state.linear.position.as_vec2();
+        let velocity = state.linear.velocity.as_vec2() * VELOCITY_ARROW_SECONDS;
+        gizmos.arrow_2d(centre, centre + velocity, VELOCITY_COLOUR);
+    }
+    for band in &bands {
+        let Ok(snapshots) = bodies.get(band.body) else {
+            continue;
+        };
+        let state = interpolated_state(snapshots, &fixed_time);
+        let corner = band.ends.attachment(&state);
+        let force = band.ends.wrench(&state, params.stiffness).force;
+        let arrow = force.normalize_or_zero() * force_arrow_length(force.length());
+        gizmos.arrow_2d(corner.as_vec2(), (corner + arrow).as_vec2(), FORCE_COLOUR);
+    }
+}
+
+/// Where the pulled corner has been, newest last; the corner is the last one a band held.
+#[derive(Resource, Default)]
+struct Trail {
+    corner: Option<DVec2>,
+    points: VecDeque<Vec2>,
+}
+
+const TRAIL_LENGTH: usize = 240;
+
+fn record_trail(
+    overlays: Res<Overlays>,
+    fixed_time: Res<Time<Fixed>>,
+    bodies: Query<&RenderSnapshots, With<RigidBox>>,
+    bands: Query<&Band>,
+    mut trail: ResMut<Trail>,
+) {
+    if !overlays.trail {
+        trail.points.clear();
+        return;
+    }
+    if let Some(band) = bands.iter().next() {
+        trail.corner = Some(band.ends.local_point);
+    }
+    let (Some(corner), Some(snapshots)) = (trail.corner, bodies.iter().next()) else {
+        return;
+    };
+    let point = interpolated_state(snapshots, &fixed_time).local_to_world(corner);
+    trail.points.push_back(point.as_vec2());
+    while trail.points.len() > TRAIL_LENGTH {
+        trail.points.pop_front();
+    }
+}
+
+/// Older points fade out.
+fn draw_trail(mut gizmos: Gizmos, trail: Res<Trail>) {
+    let n = trail.points.len().max(1) as f32;
+    gizmos.linestrip_gradient_2d(
+        trail
+            .points
+            .iter()
+            .enumerate()
+            .map(|(i, &p)| (p, PIN_FILL.with_alpha(i as f32 / n))),
+    );
 }

@@ -31,7 +31,14 @@ impl Plugin for SimulationPlugin {
                 )
                     .chain(),
             )
-            .add_systems(Startup, (apply_step_rate, spawn_box))
+            .add_systems(Startup, spawn_box)
+            // The step rate can change during play (a control); apply it before the loop.
+            .add_systems(
+                RunFixedMainLoop,
+                apply_step_rate
+                    .run_if(resource_changed::<SceneParams>)
+                    .in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+            )
             .add_systems(
                 FixedUpdate,
                 (
@@ -147,7 +154,7 @@ pub fn body_state(linear: &LinearState, angular: &AngularState) -> BodyState {
 
 /// Bevy's fixed clock counts whole nanoseconds and panics on a zero step: a rate it cannot
 /// represent is refused with a message, and the clock keeps its step.
-fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {
+pub fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {
     let step = params
         .validate()
         .map_err(|error| error.to_string())

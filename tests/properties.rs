@@ -15,6 +15,7 @@ use bevy::window::WindowFocused;
 use proptest::prelude::*;
 
 use common::Game;
+use rubber_band_box::controls;
 use rubber_band_box::physics::{
     AngularState, BodyState, Drag, Integrator, LinearState, Run, SceneParams, Simulation,
     kinetic_energy,
@@ -187,6 +188,7 @@ enum Input {
     FocusLost,
     Touch(u64, TouchPhase, Vec2),
     Frame(Duration),
+    Key(KeyCode),
 }
 
 fn screen() -> impl Strategy<Value = Vec2> {
@@ -214,6 +216,21 @@ fn input() -> impl Strategy<Value = Input> {
             .prop_map(|(id, phase, at)| Input::Touch(id, phase, at)),
         prop_oneof![Just(0u64), 0u64..50_000_000, Just(10_000_000_000)]
             .prop_map(|ns| Input::Frame(Duration::from_nanos(ns))),
+        prop::sample::select(vec![
+            controls::PAUSE,
+            controls::SINGLE_STEP,
+            controls::RESET,
+            controls::CYCLE_INTEGRATOR,
+            controls::SOFTER,
+            controls::STIFFER,
+            controls::SLOWER,
+            controls::FASTER,
+            controls::FEWER_STEPS,
+            controls::MORE_STEPS,
+            controls::VECTORS,
+            controls::TRAIL,
+        ])
+        .prop_map(Input::Key),
     ]
 }
 
@@ -249,6 +266,7 @@ proptest! {
                     game.world().write_message(WindowFocused { window, focused: false });
                 }
                 Input::Touch(id, phase, at) => game.touch_screen(id, phase, at),
+                Input::Key(key) => game.tap_key(key),
                 Input::Frame(frame) => {
                     game.world()
                         .insert_resource(bevy::time::TimeUpdateStrategy::ManualDuration(frame));

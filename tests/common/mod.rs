@@ -154,6 +154,12 @@ impl Game {
         });
     }
 
+    /// A key pressed and released before the next frame: `just_pressed` in it.
+    pub fn tap_key(&mut self, key_code: KeyCode) {
+        self.key(key_code, ButtonState::Pressed);
+        self.key(key_code, ButtonState::Released);
+    }
+
     /// A touch at a screen position (the property tests' fingers may land outside the window).
     pub fn touch_screen(&mut self, id: u64, phase: TouchPhase, position: Vec2) {
         let window = self.window;

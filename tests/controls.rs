@@ -1,0 +1,148 @@
+//! The keyboard controls in the headless game: each one's effect on the state and the clock.
+
+mod common;
+
+use common::*;
+use rubber_band_box::controls::{
+    FASTER, MORE_STEPS, Overlays, PAUSE, RESET, SINGLE_STEP, SLOWER, SOFTER, STIFFER, TRAIL,
+    VECTORS,
+};
+
+#[test]
+fn pause_stops_the_fixed_steps_and_resume_continues() {
+    let mut game = Game::stepping();
+    game.update(5);
+    assert_eq!(game.steps(), 5);
+    // Bevy advances its clocks before it reads input, so the frame in which the key arrives
+    // still runs its step; from the next frame on, none.
+    game.tap_key(PAUSE);
+    game.update(1);
+    assert_eq!(game.steps(), 6);
+    game.update(10);
+    assert_eq!(game.steps(), 6, "paused: no fixed step");
+    game.tap_key(PAUSE);
+    game.update(1);
+    game.update(3);
+    assert_eq!(game.steps(), 9);
+}
+
+#[test]
+fn a_single_step_while_paused_advances_exactly_one() {
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(3);
+    game.tap_key(PAUSE);
+    game.update(2);
+    let before = (game.steps(), game.state());
+    game.tap_key(SINGLE_STEP);
+    game.update(1);
+    assert_eq!(game.steps(), before.0 + 1);
+    assert_ne!(game.state(), before.1);
+    game.update(5);
+    assert_eq!(game.steps(), before.0 + 1, "still paused");
+
+    // Not paused, the key does nothing extra.
+    game.tap_key(PAUSE);
+    game.update(1);
+    let running = game.steps();
+    game.tap_key(SINGLE_STEP);
+    game.update(1);
+    assert_eq!(game.steps(), running + 1);
+}
+
+#[test]
+fn reset_restores_the_initial_state_and_removes_the_band() {
+    let mut game = Game::stepping();
+    let initial = game.state();
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(30);
+    assert_ne!(game.state(), initial);
+    game.tap_key(RESET);
+    game.update(1);
+    assert!(game.bands().is_empty());
+    assert_eq!(
+        game.state(),
+        initial,
+        "reset, then one step with no band: still at rest"
+    );
+    assert_eq!(game.world().resource::<Grip>().0, None);
+}
+
+#[test]
+fn k_moves_by_factors_of_ten_within_its_range_and_the_next_step_uses_it() {
+    let mut game = Game::stepping();
+    game.tap_key(STIFFER);
+    game.update(1);
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 200.0);
+    for _ in 0..2 {
+        game.tap_key(SOFTER);
+        game.update(1);
+    }
+    assert!((game.world().resource::<SceneParams>().stiffness - 2.0).abs() < 1e-12);
+    for _ in 0..20 {
+        game.tap_key(STIFFER);
+        game.update(1);
+    }
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 1e12);
+
+    // The step after a change uses the new k: compare with the core.
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(1);
+    let anchor = game.the_band().ends.anchor;
+    game.tap_key(STIFFER);
+    game.update(1);
+    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
+    sim.grab(anchor);
+    sim.step(0.01);
+    sim.params.stiffness = 200.0;
+    sim.step(0.01);
+    assert_eq!(game.state(), (sim.state.linear, sim.state.angular));
+}
+
+#[test]
+fn the_time_scale_changes_the_fixed_steps_per_second_of_real_time() {
+    let mut game = Game::stepping();
+    // A change of scale applies from the frame after the key (the clocks advance first).
+    game.tap_key(FASTER);
+    game.update(2);
+    let start = game.steps();
+    game.update(10);
+    assert_eq!(game.steps() - start, 20, "x2: two steps per 10 ms frame");
+
+    for _ in 0..2 {
+        game.tap_key(SLOWER);
+        game.update(1);
+    }
+    game.update(1);
+    let start = game.steps();
+    game.update(10);
+    assert_eq!(game.steps() - start, 5, "x0.5: a step every other frame");
+}
+
+#[test]
+fn the_step_rate_changes_the_fixed_step() {
+    let mut game = Game::stepping();
+    game.tap_key(MORE_STEPS);
+    game.update(1);
+    assert_eq!(game.world().resource::<SceneParams>().step_rate_hz, 200.0);
+    let step = game.world().resource::<Time<Fixed>>().timestep();
+    assert_eq!(step, Duration::from_millis(5));
+    let start = game.steps();
+    game.update(10);
+    assert_eq!(game.steps() - start, 20);
+}
+
+#[test]
+fn vectors_and_trail_toggle() {
+    let mut game = Game::stepping();
+    assert_eq!(*game.world().resource::<Overlays>(), Overlays::default());
+    game.tap_key(VECTORS);
+    game.tap_key(TRAIL);
+    game.update(1);
+    let overlays = *game.world().resource::<Overlays>();
+    assert!(overlays.vectors && overlays.trail);
+    game.tap_key(VECTORS);
+    game.update(1);
+    assert!(!game.world().resource::<Overlays>().vectors);
+}
