@@ -16,7 +16,7 @@
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 
-use crate::physics::{BodyState, Integrator, SceneParams};
+use crate::physics::{AngularState, BodyState, Integrator, LinearState, SceneParams};
 use crate::pointer::Grip;
 use crate::simulation::{
     Band, ForceAccumulator, RenderSnapshots, RigidBox, StepStats, apply_step_rate,
@@ -101,8 +101,8 @@ fn reset_scene(
     bands: Query<Entity, With<Band>>,
     mut boxes: Query<
         (
-            &mut crate::physics::LinearState,
-            &mut crate::physics::AngularState,
+            &mut LinearState,
+            &mut AngularState,
             &mut ForceAccumulator,
             &mut RenderSnapshots,
         ),
