@@ -141,13 +141,14 @@ impl SimulateArgs {
     }
 }
 
-pub const CSV_HEADER: &str = "step,t,x,y,theta,vx,vy,omega,energy,band,substeps,fallbacks";
+pub const CSV_HEADER: &str =
+    "step,t,x,y,theta,vx,vy,omega,energy,band,substeps,fallbacks,ledger_residual";
 
 /// One CSV row: the state after `run.step` steps.
 pub fn csv_row(run: &Run) -> String {
     let s = &run.sim.state;
     format!(
-        "{},{},{},{},{},{},{},{},{},{},{},{}",
+        "{},{},{},{},{},{},{},{},{},{},{},{},{}",
         run.step,
         run.time(),
         s.linear.position.x,
@@ -160,6 +161,7 @@ pub fn csv_row(run: &Run) -> String {
         u8::from(run.sim.band.is_some()),
         run.last_step.substeps,
         run.fallbacks,
+        run.ledger.residual(run.sim.energy()),
     )
 }
 

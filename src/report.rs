@@ -421,6 +421,18 @@ fn optional(value: Option<impl ToString>) -> String {
     value.map_or(String::new(), |v| v.to_string())
 }
 
+/// The largest |ledger residual| over a run, relative to the energy that passed through, or
+/// the step where the run diverged.
+fn ledger_residual(scenario: &Scenario, integrator: Integrator, steps: u64) -> Result<f64, u64> {
+    let mut run = Run::of(scenario, integrator, 0.01).expect("valid");
+    let mut worst: f64 = 0.0;
+    for _ in 0..steps {
+        run.advance().map_err(|d| d.step)?;
+        worst = worst.max(run.ledger.residual(run.sim.energy()).abs());
+    }
+    Ok(worst / run.ledger.throughput())
+}
+
 fn format_option(value: Option<f64>, missing: &str) -> String {
     value.map_or(missing.to_owned(), |v| format!("{v:.3e}"))
 }
@@ -621,6 +633,29 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
             }
             Err(step) => writeln!(table, "| {integrator} | diverged @{step} | |")?,
         }
+    }
+
+    writeln!(
+        table,
+        "\n## Energy ledger at 100 Hz: largest |residual| relative to the energy that passed \
+         through (seed: 4 s; stiff, k = 1e5 with damping: 10 s)\n"
+    )?;
+    writeln!(table, "| integrator | seed | stiff |")?;
+    writeln!(table, "|---|---|---|")?;
+    let seed = Scenario::named("seed").expect("built-in");
+    let stiff = Scenario::named("stiff").expect("built-in");
+    let steps = if args.quick { 100 } else { 1000 };
+    for integrator in Integrator::ALL {
+        let cell = |outcome: Result<f64, u64>| match outcome {
+            Ok(residual) => format!("{residual:.1e}"),
+            Err(step) => format!("diverged @{step}"),
+        };
+        writeln!(
+            table,
+            "| {integrator} | {} | {} |",
+            cell(ledger_residual(&seed, integrator, 400)),
+            cell(ledger_residual(&stiff, integrator, steps))
+        )?;
     }
 
     plot_work_precision(&points, &args.out.join("work_precision.svg"))?;

@@ -27,17 +27,20 @@ impl Default for AutoSettings {
     }
 }
 
-/// What one fixed step cost: how many substeps, and whether it fell back to `implicit`.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// What one fixed step did: how many substeps, whether it fell back to `implicit`, and the
+/// energy damping took out during it (for the energy ledger).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct StepInfo {
     pub substeps: u32,
     pub fell_back: bool,
+    pub dissipated: f64,
 }
 
 impl StepInfo {
     pub const SINGLE: Self = Self {
         substeps: 1,
         fell_back: false,
+        dissipated: 0.0,
     };
 }
 
@@ -103,25 +106,31 @@ pub fn auto_step(
     start: Forces,
     dt: f64,
     settings: &AutoSettings,
-    rk4: impl Fn(&mut BodyState, &ForceModel, Forces, f64),
+    rk4: impl Fn(&mut BodyState, &ForceModel, Forces, f64) -> f64,
     implicit: impl Fn(&mut BodyState, &ForceModel, f64),
 ) -> StepInfo {
     let n = substeps_needed(state, model, dt, settings);
     if n > u64::from(settings.max_substeps) {
+        let power_before =
+            model.damping_power(state.linear.velocity, state.angular.angular_velocity);
         implicit(state, model, dt);
+        let power_after =
+            model.damping_power(state.linear.velocity, state.angular.angular_velocity);
         return StepInfo {
             substeps: 1,
             fell_back: true,
+            dissipated: 0.5 * dt * (power_before + power_after),
         };
     }
     let h = dt / n as f64;
-    rk4(state, model, start, h);
+    let mut dissipated = rk4(state, model, start, h);
     for _ in 1..n {
         let forces = model.forces(state);
-        rk4(state, model, forces, h);
+        dissipated += rk4(state, model, forces, h);
     }
     StepInfo {
         substeps: n as u32,
         fell_back: false,
+        dissipated,
     }
 }

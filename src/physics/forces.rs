@@ -157,6 +157,12 @@ impl ForceModel {
         )
     }
 
+    /// The rate at which damping takes energy out: b |v|² + c I ω² (never negative).
+    pub fn damping_power(&self, velocity: DVec2, angular_velocity: f64) -> f64 {
+        self.linear_damping * velocity.length_squared()
+            + self.angular_damping * self.mass.inertia() * angular_velocity * angular_velocity
+    }
+
     /// Band potential plus kinetic energy.
     pub fn energy(&self, state: &BodyState) -> f64 {
         kinetic_energy(state, &self.mass)

@@ -8,6 +8,7 @@ use bevy::math::DVec2;
 use super::auto::StepInfo;
 use super::body::BodyState;
 use super::integrators::Integrator;
+use super::ledger::EnergyLedger;
 use super::scene::{ParamError, SceneParams};
 use super::simulation::Simulation;
 
@@ -205,6 +206,8 @@ pub struct Run {
     /// The latest step's substeps, and how many steps fell back to `implicit` so far.
     pub last_step: StepInfo,
     pub fallbacks: u64,
+    /// Where the energy came from and went; its residual is the integrator's error.
+    pub ledger: EnergyLedger,
 }
 
 impl Run {
@@ -229,6 +232,7 @@ impl Run {
             energy_budget,
             last_step: StepInfo::SINGLE,
             fallbacks: 0,
+            ledger: EnergyLedger::starting_at(energy_budget),
         };
         run.apply_drags();
         Ok(run)
@@ -259,12 +263,19 @@ impl Run {
             return;
         }
         self.active_drag = current;
+        let band_energy = |sim: &Simulation| {
+            sim.band.map_or(0.0, |band| {
+                band.potential_energy(&sim.state, sim.params.stiffness)
+            })
+        };
+        // The hand takes the old band's energy away and puts the new one's in.
+        self.ledger.hand(-band_energy(&self.sim));
         match current {
             Some(index) => {
                 self.sim.grab(self.drags[index].target);
-                self.energy_budget += self.sim.model().band.map_or(0.0, |band| {
-                    band.potential_energy(&self.sim.state, self.sim.params.stiffness)
-                });
+                let attached = band_energy(&self.sim);
+                self.energy_budget += attached;
+                self.ledger.hand(attached);
             }
             None => self.sim.release(),
         }
@@ -273,6 +284,7 @@ impl Run {
     /// One step; `Err` once the state is no longer finite or its energy left every bound.
     pub fn advance(&mut self) -> Result<(), Diverged> {
         self.last_step = self.sim.step(self.dt);
+        self.ledger.dissipated += self.last_step.dissipated;
         self.fallbacks += u64::from(self.last_step.fell_back);
         self.step += 1;
         let energy = self.sim.energy();
