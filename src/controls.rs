@@ -19,7 +19,7 @@ use bevy::window::PrimaryWindow;
 use crate::physics::{AngularState, BodyState, Integrator, LinearState, SceneParams};
 use crate::pointer::Grip;
 use crate::simulation::{
-    Band, ForceAccumulator, RenderSnapshots, RigidBox, StepStats, apply_step_rate,
+    Band, EnergyBooks, ForceAccumulator, RenderSnapshots, RigidBox, StepStats, apply_step_rate,
 };
 
 pub struct ControlsPlugin;
@@ -110,6 +110,7 @@ fn reset_scene(
     >,
     mut grip: ResMut<Grip>,
     mut stats: ResMut<StepStats>,
+    mut books: ResMut<EnergyBooks>,
 ) {
     if !keys.just_pressed(RESET) {
         return;
@@ -126,6 +127,7 @@ fn reset_scene(
     }
     grip.0 = None;
     *stats = StepStats::default();
+    *books = EnergyBooks::default();
 }
 
 /// k, the time scale and the step rate move by factors, so that a player reaches the hard
@@ -179,6 +181,7 @@ fn show_state_in_title(
     integrator: Res<Integrator>,
     stats: Res<StepStats>,
     params: Res<SceneParams>,
+    books: Res<EnergyBooks>,
     virtual_time: Res<Time<Virtual>>,
     mut window: Option<Single<&mut Window, With<PrimaryWindow>>>,
 ) {
@@ -198,6 +201,7 @@ fn show_state_in_title(
         params.step_rate_hz,
         virtual_time.relative_speed_f64()
     );
+    title += &format!(", energy error {:.1e}", books.residual);
     if virtual_time.is_paused() {
         title += ", paused (N steps)";
     }

@@ -5,12 +5,13 @@
 
 use std::time::Duration;
 
+use bevy::ecs::system::SystemParam;
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
 use crate::physics::{
-    AngularState, AutoSettings, BandEnds, BodyState, Forces, Integrator, LinearState,
-    MassProperties, SceneParams, damping_wrench,
+    AngularState, AutoSettings, BandEnds, BodyState, EnergyLedger, Forces, Integrator, LinearState,
+    MassProperties, SceneParams, damping_wrench, kinetic_energy,
 };
 
 pub struct SimulationPlugin;
@@ -22,6 +23,7 @@ impl Plugin for SimulationPlugin {
             .init_resource::<AutoSettings>()
             .init_resource::<StepStats>()
             .init_resource::<StepCount>()
+            .init_resource::<EnergyBooks>()
             .configure_sets(
                 FixedUpdate,
                 (
@@ -42,11 +44,11 @@ impl Plugin for SimulationPlugin {
             .add_systems(
                 FixedUpdate,
                 (
-                    (accumulate_band_force, accumulate_damping)
+                    (book_hand_work, accumulate_band_force, accumulate_damping)
                         .chain()
                         .in_set(PhysicsSystems::Accumulate),
                     integrate.in_set(PhysicsSystems::Integrate),
-                    (publish_snapshots, end_taps, count_step)
+                    (publish_snapshots, settle_books, end_taps, count_step)
                         .chain()
                         .in_set(PhysicsSystems::Publish),
                 ),
@@ -138,6 +140,67 @@ pub struct StepStats {
     pub substeps: u32,
     pub fallbacks: u64,
     pub divergence: Option<(Integrator, u64)>,
+}
+
+/// The energy ledger of the game. Between two steps only the player changes the energy
+/// (attaching, moving or releasing the band, changing k, resetting), so whatever the energy
+/// did between the end of one step and the start of the next is booked as the hand's work;
+/// damping's share comes from the integrator. The residual after each step is the
+/// integrator's error.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
+pub struct EnergyBooks {
+    pub ledger: EnergyLedger,
+    /// Mechanical energy right after the latest step; None before the first.
+    pub settled: Option<f64>,
+    /// The ledger's residual after the latest step.
+    pub residual: f64,
+}
+
+/// Kinetic plus band energy of every body, with the bands as they are now.
+fn mechanical_energy(
+    params: &SceneParams,
+    bodies: &Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    bands: &Query<&Band>,
+) -> f64 {
+    let kinetic: f64 = bodies
+        .iter()
+        .map(|(linear, angular, mass)| kinetic_energy(&body_state(linear, angular), mass))
+        .sum();
+    let potential: f64 = bands
+        .iter()
+        .filter_map(|band| {
+            let (linear, angular, _) = bodies.get(band.body).ok()?;
+            Some(
+                band.ends
+                    .potential_energy(&body_state(linear, angular), params.stiffness),
+            )
+        })
+        .sum();
+    kinetic + potential
+}
+
+fn book_hand_work(
+    params: Res<SceneParams>,
+    bodies: Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    bands: Query<&Band>,
+    mut books: ResMut<EnergyBooks>,
+) {
+    let now = mechanical_energy(&params, &bodies, &bands);
+    match books.settled {
+        Some(settled) => books.ledger.hand(now - settled),
+        None => books.ledger = EnergyLedger::starting_at(now),
+    }
+}
+
+fn settle_books(
+    params: Res<SceneParams>,
+    bodies: Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    bands: Query<&Band>,
+    mut books: ResMut<EnergyBooks>,
+) {
+    let now = mechanical_energy(&params, &bodies, &bands);
+    books.settled = Some(now);
+    books.residual = books.ledger.residual(now);
 }
 
 /// Fixed steps run since start-up.
@@ -236,13 +299,20 @@ fn accumulate_damping(
     }
 }
 
+/// Everything that says how to take a step.
+#[derive(SystemParam)]
+struct StepSettings<'w> {
+    time: Res<'w, Time<Fixed>>,
+    params: Res<'w, SceneParams>,
+    integrator: Res<'w, Integrator>,
+    auto: Res<'w, AutoSettings>,
+}
+
 fn integrate(
-    time: Res<Time<Fixed>>,
-    params: Res<SceneParams>,
-    integrator: Res<Integrator>,
-    auto: Res<AutoSettings>,
+    settings: StepSettings,
     steps: Res<StepCount>,
     mut stats: ResMut<StepStats>,
+    mut books: ResMut<EnergyBooks>,
     mut bodies: Query<(
         &mut LinearState,
         &mut AngularState,
@@ -250,6 +320,12 @@ fn integrate(
         &mut ForceAccumulator,
     )>,
 ) {
+    let StepSettings {
+        time,
+        params,
+        integrator,
+        auto,
+    } = settings;
     let dt = time.timestep().as_secs_f64();
     stats.substeps = 0;
     for (mut linear, mut angular, mass, mut accumulator) in &mut bodies {
@@ -272,6 +348,7 @@ fn integrate(
             *accumulator = ForceAccumulator::default();
             continue;
         }
+        books.ledger.dissipated += info.dissipated;
         *linear = state.linear;
         *angular = state.angular;
         *accumulator = ForceAccumulator::default();

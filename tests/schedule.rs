@@ -417,3 +417,27 @@ fn a_step_rate_the_clock_cannot_hold_is_refused_without_a_panic() {
         assert!(!step.is_zero(), "{rate}");
     }
 }
+
+#[test]
+fn the_games_energy_books_balance_to_the_integrators_error() {
+    let residual_of = |integrator: Integrator| {
+        let mut game = Game::stepping();
+        game.world().insert_resource(integrator);
+        game.press_at(DVec2::new(200.0, 100.0));
+        game.update(40);
+        // The hand moves the anchor: work the books must take in.
+        for target in [DVec2::new(-150.0, 120.0), DVec2::new(50.0, -180.0)] {
+            game.cursor(Some(world_to_screen(target)));
+            game.update(40);
+        }
+        game.mouse(ButtonState::Released);
+        game.update(80);
+        let books = *game.world().resource::<EnergyBooks>();
+        assert!(books.ledger.work_moved > 0.0 && books.ledger.dissipated > 0.0);
+        books.residual.abs() / books.ledger.throughput()
+    };
+    let auto = residual_of(Integrator::Auto);
+    assert!(auto < 1e-9, "auto: {auto}");
+    let euler = residual_of(Integrator::Euler);
+    assert!(euler > 1e-4, "euler's error shows in the books: {euler}");
+}

@@ -23,7 +23,8 @@ pub use rubber_band_box::physics::{
 };
 pub use rubber_band_box::pointer::{Grip, PointerPlugin, PointerSource};
 pub use rubber_band_box::simulation::{
-    Band, ForceAccumulator, PhysicsSystems, RigidBox, SimulationPlugin, StepCount, StepStats,
+    Band, EnergyBooks, ForceAccumulator, PhysicsSystems, RigidBox, SimulationPlugin, StepCount,
+    StepStats,
 };
 pub use rubber_band_box::view::scene_projection;
 
