@@ -190,9 +190,11 @@ fn show_state_in_title(
     };
     let mut title = format!("Rubber Band Box: {}", *integrator);
     if *integrator == Integrator::Auto {
+        let plural = |n: u64, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
         title += &format!(
-            " ({} substeps, {} fall-backs)",
-            stats.substeps, stats.fallbacks
+            " ({}, {})",
+            plural(u64::from(stats.substeps), "substep"),
+            plural(stats.fallbacks, "fall-back")
         );
     }
     title += &format!(
