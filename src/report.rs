@@ -433,6 +433,18 @@ fn ledger_residual(scenario: &Scenario, integrator: Integrator, steps: u64) -> R
     Ok(worst / run.ledger.throughput())
 }
 
+/// A markdown table's head: two leading columns, then one per integrator.
+fn table_head(table: &mut String, first: [&str; 2], names: &[&str]) -> std::fmt::Result {
+    writeln!(
+        table,
+        "| {} | {} | {} |",
+        first[0],
+        first[1],
+        names.join(" | ")
+    )?;
+    writeln!(table, "|---|---|{}", "---|".repeat(names.len()))
+}
+
 fn format_option(value: Option<f64>, missing: &str) -> String {
     value.map_or(missing.to_owned(), |v| format!("{v:.3e}"))
 }
@@ -448,8 +460,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
         table,
         "## Work-precision (final pose error in px; cost in ns per simulated second)\n"
     )?;
-    writeln!(table, "| scene | dt (s) | {} |", names.join(" | "))?;
-    writeln!(table, "|---|---|{}", "---|".repeat(names.len()))?;
+    table_head(&mut table, ["scene", "dt (s)"], &names)?;
     let mut csv = String::from(
         "scene,integrator,dt,steps,error_px,energy_drift,ns_per_simulated_second,diverged_at_step\n",
     );
@@ -539,8 +550,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
         table,
         "\n## Hard cases: bounded (ok) or diverged at step N\n"
     )?;
-    writeln!(table, "| case | steps | {} |", names.join(" | "))?;
-    writeln!(table, "|---|---|{}", "---|".repeat(names.len()))?;
+    table_head(&mut table, ["case", "steps"], &names)?;
     let mut csv = String::from("case,rate_hz,steps,integrator,diverged_at_step\n");
     for (case, outcomes) in &hard {
         let cells: Vec<String> = outcomes
@@ -574,8 +584,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
         "\n## Stiffness sweep: {TICKS_PER_STIFF_RUN} fixed steps of the stiff scene \
          (error in px against a tight RK4 / ns per step; auto: mean substeps, fall-backs)\n"
     )?;
-    writeln!(table, "| k | rate | {} |", names.join(" | "))?;
-    writeln!(table, "|---|---|{}", "---|".repeat(names.len()))?;
+    table_head(&mut table, ["k", "rate"], &names)?;
     let mut csv = String::from(
         "k,rate_hz,integrator,ns_per_tick,error_px,diverged_at_step,mean_substeps,fallbacks\n",
     );

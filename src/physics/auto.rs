@@ -111,15 +111,12 @@ pub fn auto_step(
 ) -> StepInfo {
     let n = substeps_needed(state, model, dt, settings);
     if n > u64::from(settings.max_substeps) {
-        let power_before =
-            model.damping_power(state.linear.velocity, state.angular.angular_velocity);
+        let before = *state;
         implicit(state, model, dt);
-        let power_after =
-            model.damping_power(state.linear.velocity, state.angular.angular_velocity);
         return StepInfo {
             substeps: 1,
             fell_back: true,
-            dissipated: 0.5 * dt * (power_before + power_after),
+            dissipated: model.dissipated_by_trapezoid(&before, state, dt),
         };
     }
     let h = dt / n as f64;

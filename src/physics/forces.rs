@@ -163,6 +163,14 @@ impl ForceModel {
             + self.angular_damping * self.mass.inertia() * angular_velocity * angular_velocity
     }
 
+    /// The energy damping took out over a step from `before` to `after`, by the trapezoidal
+    /// rule: second order, as accurate as any first- or second-order integrator.
+    pub fn dissipated_by_trapezoid(&self, before: &BodyState, after: &BodyState, dt: f64) -> f64 {
+        let power =
+            |s: &BodyState| self.damping_power(s.linear.velocity, s.angular.angular_velocity);
+        0.5 * dt * (power(before) + power(after))
+    }
+
     /// Band potential plus kinetic energy.
     pub fn energy(&self, state: &BodyState) -> f64 {
         kinetic_energy(state, &self.mass)

@@ -96,9 +96,7 @@ impl Integrator {
         dt: f64,
         auto: &AutoSettings,
     ) -> StepInfo {
-        let power =
-            |s: &BodyState| model.damping_power(s.linear.velocity, s.angular.angular_velocity);
-        let power_before = power(state);
+        let before = *state;
         match self {
             Self::Euler => euler(state, &model.mass, start.total(), dt),
             Self::Symplectic => symplectic_euler(state, &model.mass, start.total(), dt),
@@ -116,10 +114,8 @@ impl Integrator {
                 return auto_step(state, model, start, dt, auto, runge_kutta_4, backward_euler);
             }
         }
-        // The energy damping took out, by the trapezoidal rule: second order, as accurate as
-        // any of these methods.
         StepInfo {
-            dissipated: 0.5 * dt * (power_before + power(state)),
+            dissipated: model.dissipated_by_trapezoid(&before, state, dt),
             ..StepInfo::SINGLE
         }
     }
