@@ -12,6 +12,7 @@
 //! | PageDown / PageUp | fixed step rate ÷2 / ×2 (8 to 4096 Hz) |
 //! | V | force and velocity vectors |
 //! | T | trail of the pulled corner |
+//! | H | hide / show the HUD |
 
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
@@ -55,6 +56,7 @@ pub const FEWER_STEPS: KeyCode = KeyCode::PageDown;
 pub const MORE_STEPS: KeyCode = KeyCode::PageUp;
 pub const VECTORS: KeyCode = KeyCode::KeyV;
 pub const TRAIL: KeyCode = KeyCode::KeyT;
+pub const HUD: KeyCode = KeyCode::KeyH;
 
 pub const STIFFNESS_RANGE: (f64, f64) = (1e-2, 1e12);
 pub const TIME_SCALE_RANGE: (f64, f64) = (1.0 / 16.0, 16.0);
@@ -65,6 +67,8 @@ pub const STEP_RATE_RANGE: (f64, f64) = (8.0, 4096.0);
 pub struct Overlays {
     pub vectors: bool,
     pub trail: bool,
+    /// The HUD (text and energy graph) shows unless hidden.
+    pub hud_hidden: bool,
 }
 
 /// The switch takes effect on the next fixed step.
@@ -174,6 +178,9 @@ fn toggle_overlays(keys: Res<ButtonInput<KeyCode>>, mut overlays: ResMut<Overlay
     if keys.just_pressed(TRAIL) {
         overlays.trail = !overlays.trail;
     }
+    if keys.just_pressed(HUD) {
+        overlays.hud_hidden = !overlays.hud_hidden;
+    }
 }
 
 /// "Rubber Band Box: auto (2 substeps, 0 fall-backs), k 20, 100 Hz, time ×1, paused".
@@ -210,7 +217,7 @@ fn show_state_in_title(
     if let Some((diverged, step)) = stats.divergence {
         title += &format!(", {diverged} diverged at step {step}: steps refused");
     }
-    title += "; Space I R [ ] - = V T";
+    title += "; Space I R [ ] - = V T H";
     if window.title != title {
         window.title = title;
     }

@@ -4,12 +4,16 @@
 //! - [`physics`]: the numerical core, plain Rust over f64 state;
 //! - [`simulation`]: the Bevy plugin that steps the core in `FixedUpdate` (headless);
 //! - [`pointer`]: mouse and touch to the band entity (headless);
+//! - [`hud`]: the heads-up display's text and energy history (headless too);
 //! - [`view`] and [`draw`]: camera, interpolation and drawing (need a window).
 
 #[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
 pub mod controls;
 pub mod draw;
+pub mod hud;
+#[cfg(all(feature = "peers", not(target_arch = "wasm32")))]
+pub mod peers;
 pub mod physics;
 pub mod pointer;
 #[cfg(not(target_arch = "wasm32"))]
@@ -28,6 +32,7 @@ impl Plugin for GamePlugin {
             simulation::SimulationPlugin,
             pointer::PointerPlugin,
             controls::ControlsPlugin,
+            hud::HudPlugin,
             view::ViewPlugin,
             draw::DrawPlugin,
         ));

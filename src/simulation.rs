@@ -10,8 +10,8 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 
 use crate::physics::{
-    AngularState, AutoSettings, BandEnds, BodyState, EnergyLedger, Forces, Integrator, LinearState,
-    MassProperties, SceneParams, damping_wrench, kinetic_energy,
+    AngularState, AutoSettings, BandEnds, BodyState, Energies, EnergyLedger, Forces, Integrator,
+    LinearState, MassProperties, SceneParams, damping_wrench,
 };
 
 pub struct SimulationPlugin;
@@ -154,19 +154,23 @@ pub struct EnergyBooks {
     pub settled: Option<f64>,
     /// The ledger's residual after the latest step.
     pub residual: f64,
+    /// The energies by kind right after the latest step.
+    pub energies: Energies,
 }
 
-/// Kinetic plus band energy of every body, with the bands as they are now.
-fn mechanical_energy(
+/// Kinetic and band energy of every body, with the bands as they are now.
+fn mechanical_energies(
     params: &SceneParams,
     bodies: &Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
     bands: &Query<&Band>,
-) -> f64 {
-    let kinetic: f64 = bodies
+) -> Energies {
+    let kinetic: Energies = bodies
         .iter()
-        .map(|(linear, angular, mass)| kinetic_energy(&body_state(linear, angular), mass))
+        .map(|(linear, angular, mass)| {
+            Energies::of(&body_state(linear, angular), mass, None, params.stiffness)
+        })
         .sum();
-    let potential: f64 = bands
+    let band = bands
         .iter()
         .filter_map(|band| {
             let (linear, angular, _) = bodies.get(band.body).ok()?;
@@ -176,7 +180,7 @@ fn mechanical_energy(
             )
         })
         .sum();
-    kinetic + potential
+    Energies { band, ..kinetic }
 }
 
 fn book_hand_work(
@@ -185,7 +189,7 @@ fn book_hand_work(
     bands: Query<&Band>,
     mut books: ResMut<EnergyBooks>,
 ) {
-    let now = mechanical_energy(&params, &bodies, &bands);
+    let now = mechanical_energies(&params, &bodies, &bands).total();
     match books.settled {
         Some(settled) => books.ledger.hand(now - settled),
         None => books.ledger = EnergyLedger::starting_at(now),
@@ -198,9 +202,10 @@ fn settle_books(
     bands: Query<&Band>,
     mut books: ResMut<EnergyBooks>,
 ) {
-    let now = mechanical_energy(&params, &bodies, &bands);
-    books.settled = Some(now);
-    books.residual = books.ledger.residual(now);
+    let energies = mechanical_energies(&params, &bodies, &bands);
+    books.energies = energies;
+    books.settled = Some(energies.total());
+    books.residual = books.ledger.residual(energies.total());
 }
 
 /// Fixed steps run since start-up.

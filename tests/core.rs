@@ -2,8 +2,8 @@
 
 use bevy::math::DVec2;
 use rubber_band_box::physics::{
-    BandEnds, BodyState, Integrator, MassProperties, ParamError, SceneParams, Simulation, Wrench,
-    damping_wrench, rotate, symplectic_euler,
+    BandEnds, BodyState, Energies, Integrator, MassProperties, ParamError, SceneParams, Simulation,
+    Wrench, damping_wrench, rotate, symplectic_euler,
 };
 
 #[test]
@@ -205,4 +205,31 @@ fn mass_properties_refuse_a_degenerate_box() {
     assert!(MassProperties::rectangle(1.0, DVec2::new(0.0, 1.0)).is_err());
     assert!(MassProperties::rectangle(-1.0, DVec2::ONE).is_err());
     assert!(MassProperties::rectangle(1e-300, DVec2::splat(1e-200)).is_err());
+}
+
+#[test]
+fn energies_by_kind_add_up_to_the_models_energy() {
+    let params = SceneParams::seed();
+    let mass = params.mass_properties().unwrap();
+    let band = BandEnds {
+        anchor: DVec2::new(100.0, -40.0),
+        local_point: DVec2::new(30.0, 30.0),
+    };
+    let mut state = BodyState::at_rest(DVec2::new(5.0, 7.0));
+    state.linear.velocity = DVec2::new(3.0, -4.0);
+    state.angular.orientation = 0.3;
+    state.angular.angular_velocity = 0.5;
+    let energies = Energies::of(&state, &mass, Some(&band), params.stiffness);
+    assert_eq!(energies.linear, 0.5 * 5.0 * 25.0);
+    assert_eq!(energies.rotational, 0.5 * 3000.0 * 0.25);
+    assert_eq!(
+        energies.band,
+        band.potential_energy(&state, params.stiffness)
+    );
+    let model = params.force_model(mass, Some(band));
+    assert!((energies.total() - model.energy(&state)).abs() < 1e-12);
+    assert_eq!(
+        Energies::of(&state, &mass, None, params.stiffness).band,
+        0.0
+    );
 }

@@ -3,6 +3,60 @@
 //! releasing the band) and by what damping takes out; whatever else changes it is the
 //! integrator's numerical error, the ledger's residual.
 
+use super::body::{BodyState, MassProperties};
+use super::forces::BandEnds;
+
+/// A body's mechanical energy by kind, in the scene's units (mass · px² / s²).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Energies {
+    /// ½ m |v|².
+    pub linear: f64,
+    /// ½ I ω².
+    pub rotational: f64,
+    /// ½ k |stretch|², zero without a band.
+    pub band: f64,
+}
+
+impl Energies {
+    pub fn of(
+        state: &BodyState,
+        mass: &MassProperties,
+        band: Option<&BandEnds>,
+        stiffness: f64,
+    ) -> Self {
+        Self {
+            linear: 0.5 * mass.mass() * state.linear.velocity.length_squared(),
+            rotational: 0.5 * mass.inertia() * state.angular.angular_velocity.powi(2),
+            band: band.map_or(0.0, |band| band.potential_energy(state, stiffness)),
+        }
+    }
+
+    pub fn kinetic(&self) -> f64 {
+        self.linear + self.rotational
+    }
+
+    pub fn total(&self) -> f64 {
+        self.kinetic() + self.band
+    }
+}
+
+impl std::ops::Add for Energies {
+    type Output = Self;
+    fn add(self, other: Self) -> Self {
+        Self {
+            linear: self.linear + other.linear,
+            rotational: self.rotational + other.rotational,
+            band: self.band + other.band,
+        }
+    }
+}
+
+impl std::iter::Sum for Energies {
+    fn sum<I: Iterator<Item = Self>>(iter: I) -> Self {
+        iter.fold(Self::default(), |a, b| a + b)
+    }
+}
+
 /// Energies in the scene's units (mass · px² / s²).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct EnergyLedger {

@@ -18,7 +18,7 @@ pub use forces::{
     BandEnds, ForceModel, Forces, Wrench, angular_momentum_about, damping_wrench, kinetic_energy,
 };
 pub use integrators::{Integrator, UnknownIntegrator, symplectic_euler};
-pub use ledger::EnergyLedger;
+pub use ledger::{Energies, EnergyLedger};
 pub use scenario::{Diverged, Drag, Run, Scenario};
 pub use scene::{ParamError, SCENE_SIZE, SceneParams};
 pub use simulation::Simulation;

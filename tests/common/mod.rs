@@ -1,5 +1,6 @@
 //! The headless game shared by the schedule and property tests: `MinimalPlugins`, input and
-//! window messages, the physics, pointer and controls plugins, and a camera set up as the game's.
+//! window messages, the physics, pointer, controls and HUD plugins, and a camera set up as the
+//! game's.
 #![allow(dead_code, unused_imports)]
 
 pub use std::time::Duration;
@@ -18,6 +19,7 @@ pub use bevy::window::{
 };
 
 pub use rubber_band_box::controls::{CYCLE_INTEGRATOR, ControlsPlugin};
+pub use rubber_band_box::hud::{EnergyHistory, Hud, HudLine, HudPlugin};
 pub use rubber_band_box::physics::{
     AngularState, Integrator, LinearState, SceneParams, Simulation, Wrench,
 };
@@ -69,6 +71,7 @@ impl Game {
             SimulationPlugin,
             PointerPlugin,
             ControlsPlugin,
+            HudPlugin,
         ))
         .insert_resource(TimeUpdateStrategy::ManualDuration(frame))
         .init_resource::<AccumulatorAudit>()
@@ -201,6 +204,16 @@ impl Game {
             .query_filtered::<(&LinearState, &AngularState), With<RigidBox>>();
         let (linear, angular) = query.single(self.world()).unwrap();
         (*linear, *angular)
+    }
+
+    /// What a HUD line says now.
+    pub fn hud(&mut self, line: HudLine) -> String {
+        let mut lines = self.world().query::<(&HudLine, &Text)>();
+        lines
+            .iter(self.world())
+            .find(|(l, _)| **l == line)
+            .map(|(_, text)| text.0.clone())
+            .expect("every HUD line is spawned")
     }
 
     pub fn steps(&mut self) -> u64 {

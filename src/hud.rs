@@ -1,0 +1,343 @@
+//! The heads-up display: what the simulation is doing (integrator, step, parameters, time),
+//! where the energy is, how much of it the integrator got wrong (the ledger's residual), and
+//! the controls. The numbers come from resources the physics keeps; this module only formats
+//! them, so it runs headless too (the text is plain `Text` components).
+
+use std::collections::VecDeque;
+
+use bevy::ecs::system::SystemParam;
+use bevy::prelude::*;
+
+use crate::controls::Overlays;
+use crate::physics::{Energies, EnergyLedger, Integrator, MassProperties, SceneParams};
+use crate::simulation::{EnergyBooks, PhysicsSystems, RigidBox, StepStats};
+
+pub struct HudPlugin;
+
+impl Plugin for HudPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<EnergyHistory>()
+            .init_resource::<FrameRate>()
+            .add_systems(Startup, spawn_hud)
+            .add_systems(
+                FixedUpdate,
+                record_energy_history.after(PhysicsSystems::Publish),
+            )
+            .add_systems(Update, (measure_frame_rate, show_hud).chain());
+    }
+}
+
+pub const KINETIC_COLOUR: Color = Color::srgb(0.35, 0.75, 1.0);
+pub const BAND_ENERGY_COLOUR: Color = Color::srgb(1.0, 0.3, 0.8);
+pub const TOTAL_COLOUR: Color = Color::srgb(1.0, 0.85, 0.2);
+const TEXT_COLOUR: Color = Color::srgb(0.9, 0.9, 0.9);
+const DIM_COLOUR: Color = Color::srgb(0.6, 0.6, 0.65);
+const WARNING_COLOUR: Color = Color::srgb(1.0, 0.4, 0.3);
+const PANEL_COLOUR: Color = Color::srgba(0.0, 0.0, 0.0, 0.55);
+const FONT_SIZE: f32 = 13.0;
+
+/// The keys, as the help line shows them.
+pub const HELP: &str = "drag: pull   Space: pause   N: step   R: reset   I: integrator   \
+[ ]: k   - =: time scale   PgDn PgUp: step rate   V: vectors   T: trail   H: HUD";
+
+/// One line of the HUD. Each is a `Text` entity whose content [`HudLine::text`] writes.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HudLine {
+    Integrator,
+    Clock,
+    Scene,
+    EnergyHeading,
+    KineticLinear,
+    KineticRotational,
+    BandPotential,
+    Total,
+    Ledger,
+    Residual,
+    Help,
+}
+
+impl HudLine {
+    /// The panel's lines, top to bottom (the help line sits apart, at the bottom).
+    pub const PANEL: [HudLine; 10] = [
+        HudLine::Integrator,
+        HudLine::Clock,
+        HudLine::Scene,
+        HudLine::EnergyHeading,
+        HudLine::KineticLinear,
+        HudLine::KineticRotational,
+        HudLine::BandPotential,
+        HudLine::Total,
+        HudLine::Ledger,
+        HudLine::Residual,
+    ];
+
+    /// The line's colour: the energy lines in their graph colours (the graph's legend).
+    pub fn colour(self, readings: &HudReadings) -> Color {
+        match self {
+            HudLine::KineticLinear | HudLine::KineticRotational => KINETIC_COLOUR,
+            HudLine::BandPotential => BAND_ENERGY_COLOUR,
+            HudLine::Total => TOTAL_COLOUR,
+            HudLine::Integrator if readings.divergence.is_some() => WARNING_COLOUR,
+            HudLine::EnergyHeading | HudLine::Help => DIM_COLOUR,
+            _ => TEXT_COLOUR,
+        }
+    }
+
+    pub fn text(self, r: &HudReadings) -> String {
+        let e = &r.energies;
+        match self {
+            HudLine::Integrator => {
+                let mut line = format!("integrator {}", r.integrator);
+                if r.integrator == Integrator::Auto {
+                    line += &format!(
+                        ": {} rk4 substeps/step, {} fall-backs to implicit",
+                        r.substeps, r.fallbacks
+                    );
+                }
+                if let Some((diverged, step)) = r.divergence {
+                    line += &format!("  {diverged} DIVERGED at step {step}: steps refused");
+                }
+                line
+            }
+            HudLine::Clock => {
+                let mut line = format!(
+                    "step {:.2} ms ({} Hz)  time x{}  t {:.2} s  {:.0} fps",
+                    1e3 / r.step_rate_hz,
+                    r.step_rate_hz,
+                    r.time_scale,
+                    r.simulated_seconds,
+                    r.frames_per_second
+                );
+                if r.paused {
+                    line += "  PAUSED (N: one step)";
+                }
+                line
+            }
+            HudLine::Scene => format!(
+                "m {}  k {}  damping: linear {:.3} /s, angular {:.3} /s",
+                r.mass, r.stiffness, r.linear_rate, r.angular_rate
+            ),
+            HudLine::EnergyHeading => "energy (mass px^2/s^2)".to_owned(),
+            HudLine::KineticLinear => format!("  kinetic, linear   {}", energy(e.linear)),
+            HudLine::KineticRotational => format!("  kinetic, rotation {}", energy(e.rotational)),
+            HudLine::BandPotential => format!("  band potential    {}", energy(e.band)),
+            HudLine::Total => format!("  total             {}", energy(e.total())),
+            HudLine::Ledger => format!(
+                "  hand's work in {}  damping out {}",
+                energy(r.ledger.work_in).trim_start(),
+                energy(r.ledger.dissipated).trim_start()
+            ),
+            HudLine::Residual => {
+                let throughput = r.ledger.throughput();
+                let relative = if throughput > 0.0 {
+                    format!("{:.1e}", r.residual.abs() / throughput)
+                } else {
+                    "-".to_owned()
+                };
+                format!(
+                    "  integrator's error {:+.2e} ({relative} of energy through)",
+                    r.residual
+                )
+            }
+            HudLine::Help => HELP.to_owned(),
+        }
+    }
+}
+
+/// Energies are shown fixed-point in the usual range, in scientific notation outside it.
+fn energy(value: f64) -> String {
+    if value == 0.0 || (1e-2..1e7).contains(&value.abs()) {
+        format!("{value:>12.2}")
+    } else {
+        format!("{value:>12.3e}")
+    }
+}
+
+/// Everything the HUD shows, gathered from the resources.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HudReadings {
+    pub integrator: Integrator,
+    pub substeps: u32,
+    pub fallbacks: u64,
+    pub divergence: Option<(Integrator, u64)>,
+    pub step_rate_hz: f64,
+    pub time_scale: f64,
+    pub paused: bool,
+    pub simulated_seconds: f64,
+    pub frames_per_second: f64,
+    pub mass: f64,
+    pub stiffness: f64,
+    /// Velocity decay rates, per second.
+    pub linear_rate: f64,
+    pub angular_rate: f64,
+    pub energies: Energies,
+    pub ledger: EnergyLedger,
+    pub residual: f64,
+}
+
+#[derive(SystemParam)]
+pub struct HudSources<'w, 's> {
+    integrator: Res<'w, Integrator>,
+    stats: Res<'w, StepStats>,
+    params: Res<'w, SceneParams>,
+    books: Res<'w, EnergyBooks>,
+    virtual_time: Res<'w, Time<Virtual>>,
+    fixed_time: Res<'w, Time<Fixed>>,
+    frame_rate: Res<'w, FrameRate>,
+    boxes: Query<'w, 's, &'static MassProperties, With<RigidBox>>,
+}
+
+impl HudSources<'_, '_> {
+    pub fn readings(&self) -> HudReadings {
+        let params = &*self.params;
+        let mass = self
+            .boxes
+            .iter()
+            .next()
+            .map_or(params.mass, MassProperties::mass);
+        HudReadings {
+            integrator: *self.integrator,
+            substeps: self.stats.substeps,
+            fallbacks: self.stats.fallbacks,
+            divergence: self.stats.divergence,
+            step_rate_hz: params.step_rate_hz,
+            time_scale: self.virtual_time.relative_speed_f64(),
+            paused: self.virtual_time.is_paused(),
+            simulated_seconds: self.fixed_time.elapsed_secs_f64(),
+            frames_per_second: self.frame_rate.0,
+            mass,
+            stiffness: params.stiffness,
+            linear_rate: params.linear_damping / mass,
+            angular_rate: params.angular_damping,
+            energies: self.books.energies,
+            ledger: self.books.ledger,
+            residual: self.books.residual,
+        }
+    }
+}
+
+/// The HUD's root: hidden with the H key.
+#[derive(Component, Debug)]
+pub struct Hud;
+
+fn spawn_hud(mut commands: Commands) {
+    let text = |line: HudLine| {
+        (
+            line,
+            Text::default(),
+            TextFont::from_font_size(FONT_SIZE),
+            TextColor(TEXT_COLOUR),
+        )
+    };
+    let panel = commands
+        .spawn((
+            Name::new("HUD panel"),
+            Hud,
+            Node {
+                position_type: PositionType::Absolute,
+                top: px(6),
+                left: px(6),
+                flex_direction: FlexDirection::Column,
+                padding: UiRect::all(px(6)),
+                ..default()
+            },
+            BackgroundColor(PANEL_COLOUR),
+        ))
+        .id();
+    for line in HudLine::PANEL {
+        commands.spawn((text(line), ChildOf(panel)));
+    }
+    commands.spawn((
+        Name::new("HUD help"),
+        Hud,
+        text(HudLine::Help),
+        Node {
+            position_type: PositionType::Absolute,
+            bottom: px(6),
+            left: px(6),
+            right: px(6),
+            ..default()
+        },
+    ));
+}
+
+fn show_hud(
+    sources: HudSources,
+    overlays: Res<Overlays>,
+    mut roots: Query<&mut Visibility, With<Hud>>,
+    mut lines: Query<(&HudLine, &mut Text, &mut TextColor)>,
+) {
+    let visibility = if overlays.hud_hidden {
+        Visibility::Hidden
+    } else {
+        Visibility::Inherited
+    };
+    for mut shown in &mut roots {
+        shown.set_if_neq(visibility);
+    }
+    let readings = sources.readings();
+    for (line, mut text, mut colour) in &mut lines {
+        // Only write what changed, so change detection (and text layout) stays quiet.
+        let content = line.text(&readings);
+        if text.0 != content {
+            text.0 = content;
+        }
+        colour.set_if_neq(TextColor(line.colour(&readings)));
+    }
+}
+
+/// Frames per second of real time, smoothed over about ten frames.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
+pub struct FrameRate(pub f64);
+
+fn measure_frame_rate(time: Res<Time<Real>>, mut rate: ResMut<FrameRate>) {
+    let delta = time.delta_secs_f64();
+    if delta > 0.0 {
+        let now = 1.0 / delta;
+        rate.0 = if rate.0 > 0.0 {
+            rate.0 + 0.1 * (now - rate.0)
+        } else {
+            now
+        };
+    }
+}
+
+/// The energies over the last [`EnergyHistory::SPAN`] seconds of simulated time, for the
+/// graph: at most [`EnergyHistory::SAMPLES`] samples whatever the step rate.
+#[derive(Resource, Debug, Default, Clone)]
+pub struct EnergyHistory {
+    pub samples: VecDeque<(f64, Energies)>,
+}
+
+impl EnergyHistory {
+    pub const SPAN: f64 = 10.0;
+    pub const SAMPLES: usize = 500;
+
+    pub fn record(&mut self, time: f64, energies: Energies) {
+        let spacing = Self::SPAN / Self::SAMPLES as f64;
+        if let Some(&(last, _)) = self.samples.back() {
+            if time < last {
+                // The clock went back (it never does in play): start over.
+                self.samples.clear();
+            } else if time - last < spacing {
+                return;
+            }
+        }
+        self.samples.push_back((time, energies));
+        while self
+            .samples
+            .front()
+            .is_some_and(|&(t, _)| t < time - Self::SPAN)
+        {
+            self.samples.pop_front();
+        }
+    }
+}
+
+fn record_energy_history(
+    time: Res<Time<Fixed>>,
+    books: Res<EnergyBooks>,
+    mut history: ResMut<EnergyHistory>,
+) {
+    history.record(time.elapsed_secs_f64(), books.energies);
+}

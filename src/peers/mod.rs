@@ -1,0 +1,134 @@
+//! The peers (issue #5): the seed scene in the Bevy physics crates avian2d and bevy_rapier2d,
+//! each in a headless `App` beside our own plugin, driven by the same scripted drags so that
+//! the report can measure error, energy drift and the cost of a tick side by side.
+//!
+//! Compiled only with the `peers` feature: the game, the tests and CI never build these crates.
+
+pub mod avian;
+pub mod ours;
+pub mod rapier;
+
+use std::time::Duration;
+
+use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
+use bevy::prelude::*;
+use bevy::time::TimeUpdateStrategy;
+
+use crate::physics::{BandEnds, BodyState, MassProperties, Scenario, SceneParams};
+
+/// A physics engine holding the scene in a headless `App` that takes exactly one fixed step
+/// per `update()`.
+pub trait Contender {
+    /// Short name for tables and plots.
+    const NAME: &'static str;
+
+    /// The box of `params` at `initial`, no band, stepping at `rate_hz`.
+    fn new(params: &SceneParams, initial: BodyState, rate_hz: f64) -> Self;
+
+    /// Attaches the band (or moves it), or removes it with `None`.
+    fn set_band(&mut self, band: Option<BandEnds>);
+
+    /// The box's state as the engine holds it now, in f64.
+    fn state(&mut self) -> BodyState;
+
+    fn app(&mut self) -> &mut App;
+}
+
+/// `MinimalPlugins` on a manual clock that advances exactly one fixed step per update.
+pub fn headless_app(rate_hz: f64) -> App {
+    let step = Duration::from_secs_f64(1.0 / rate_hz);
+    let mut app = App::new();
+    app.add_plugins(MinimalPlugins)
+        .insert_resource(Time::<Fixed>::from_duration(step))
+        .insert_resource(TimeUpdateStrategy::ManualDuration(step));
+    app
+}
+
+/// Finishes the app, runs its first update (which only starts the clock and runs `Startup`)
+/// and puts every schedule on the single-threaded executor, so that all contenders pay the
+/// same, smallest, scheduling cost (on two cores the multi-threaded one costs ~50x more for a
+/// scene this small).
+pub fn start(app: &mut App) {
+    app.finish();
+    app.cleanup();
+    app.update();
+    let mut schedules = app.world_mut().resource_mut::<Schedules>();
+    for (_, schedule) in schedules.iter_mut() {
+        schedule.set_executor(SingleThreadedExecutor::new());
+    }
+}
+
+/// A scripted run of a scenario on a contender: the same drags, at the same steps, attached
+/// to the corner nearest the target at the drag's first step, as [`crate::physics::Run`].
+pub struct PeerRun<C: Contender> {
+    pub contender: C,
+    pub mass: MassProperties,
+    pub step: u64,
+    drags: Vec<crate::physics::Drag>,
+    active_drag: Option<usize>,
+    pub band: Option<BandEnds>,
+}
+
+impl<C: Contender> PeerRun<C> {
+    pub fn of(scenario: &Scenario, rate_hz: f64) -> Self {
+        let mass = scenario
+            .params
+            .mass_properties()
+            .expect("built-in scenes are valid");
+        let mut run = Self {
+            contender: C::new(&scenario.params, scenario.initial, rate_hz),
+            mass,
+            step: 0,
+            drags: scenario.drags_in_steps(1.0 / rate_hz),
+            active_drag: None,
+            band: None,
+        };
+        run.apply_drags();
+        run
+    }
+
+    fn apply_drags(&mut self) {
+        let s = self.step;
+        let current = self
+            .drags
+            .iter()
+            .rposition(|drag| drag.start <= s && s < drag.end);
+        if current == self.active_drag {
+            return;
+        }
+        self.active_drag = current;
+        self.band = current.map(|index| {
+            let anchor = self.drags[index].target;
+            let state = self.contender.state();
+            BandEnds {
+                local_point: self.mass.nearest_corner(&state, anchor),
+                anchor,
+            }
+        });
+        self.contender.set_band(self.band);
+    }
+
+    /// One fixed step (one `App` update), then the drags for the next.
+    pub fn advance(&mut self) {
+        self.contender.app().update();
+        self.step += 1;
+        self.apply_drags();
+    }
+
+    pub fn advance_by(&mut self, steps: u64) {
+        for _ in 0..steps {
+            self.advance();
+        }
+    }
+
+    pub fn state(&mut self) -> BodyState {
+        self.contender.state()
+    }
+}
+
+/// The angle equal to `wrapped` modulo 2π that is nearest `previous`: engines that keep a
+/// rotation as (cos, sin) give it back in (−π, π]; our orientation counts whole turns.
+pub fn unwrap_angle(previous: f64, wrapped: f64) -> f64 {
+    let turn = std::f64::consts::TAU;
+    wrapped + ((previous - wrapped) / turn).round() * turn
+}

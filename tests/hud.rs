@@ -1,0 +1,142 @@
+//! The HUD, headless: its lines follow the simulation and the controls, and its energy panel
+//! and history agree with the physics.
+
+mod common;
+
+use common::*;
+use rubber_band_box::controls::{HUD, PAUSE};
+use rubber_band_box::hud::HudReadings;
+use rubber_band_box::physics::{Energies, EnergyLedger};
+
+fn readings() -> HudReadings {
+    HudReadings {
+        integrator: Integrator::Auto,
+        substeps: 3,
+        fallbacks: 0,
+        divergence: None,
+        step_rate_hz: 100.0,
+        time_scale: 1.0,
+        paused: false,
+        simulated_seconds: 1.5,
+        frames_per_second: 60.0,
+        mass: 5.0,
+        stiffness: 20.0,
+        linear_rate: 1.0,
+        angular_rate: 2.0203,
+        energies: Energies {
+            linear: 1.0,
+            rotational: 2.0,
+            band: 3.0,
+        },
+        ledger: EnergyLedger::starting_at(0.0),
+        residual: 0.0,
+    }
+}
+
+#[test]
+fn lines_say_what_the_readings_hold() {
+    let r = readings();
+    assert_eq!(
+        HudLine::Integrator.text(&r),
+        "integrator auto: 3 rk4 substeps/step, 0 fall-backs to implicit"
+    );
+    assert!(
+        HudLine::Clock
+            .text(&r)
+            .starts_with("step 10.00 ms (100 Hz)")
+    );
+    assert!(!HudLine::Clock.text(&r).contains("PAUSED"));
+    assert!(HudLine::Total.text(&r).ends_with("6.00"));
+    assert!(HudLine::Scene.text(&r).contains("k 20"));
+    // No energy has passed through yet: no relative error to show.
+    assert!(HudLine::Residual.text(&r).contains("(- of energy"));
+
+    let paused = HudReadings {
+        paused: true,
+        integrator: Integrator::Rk4,
+        divergence: Some((Integrator::Euler, 7)),
+        ..readings()
+    };
+    assert!(HudLine::Clock.text(&paused).contains("PAUSED"));
+    let solver = HudLine::Integrator.text(&paused);
+    assert!(solver.starts_with("integrator rk4") && !solver.contains("substeps"));
+    assert!(solver.contains("euler DIVERGED at step 7"));
+}
+
+#[test]
+fn large_and_small_energies_switch_to_scientific_notation() {
+    let mut r = readings();
+    r.energies.band = 4.2e9;
+    r.energies.linear = 3e-5;
+    assert!(HudLine::BandPotential.text(&r).ends_with("4.200e9"));
+    assert!(HudLine::KineticLinear.text(&r).ends_with("3.000e-5"));
+}
+
+#[test]
+fn the_hud_follows_the_game() {
+    let mut game = Game::stepping();
+    game.update(1);
+    assert!(game.hud(HudLine::Integrator).starts_with("integrator auto"));
+    game.tap_key(CYCLE_INTEGRATOR);
+    game.update(1);
+    assert!(
+        game.hud(HudLine::Integrator)
+            .starts_with(&format!("integrator {}", Integrator::Auto.next()))
+    );
+
+    // Pulling puts energy into the band; the panel shows the books' figures.
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(20);
+    let books = *game.world().resource::<EnergyBooks>();
+    assert!(books.energies.band > 0.0 && books.energies.kinetic() > 0.0);
+    let total = game.hud(HudLine::Total);
+    let shown: f64 = total.split_whitespace().last().unwrap().parse().unwrap();
+    assert!((shown - books.energies.total()).abs() < 0.01, "{total}");
+
+    game.tap_key(PAUSE);
+    game.update(2);
+    assert!(game.hud(HudLine::Clock).contains("PAUSED"));
+}
+
+#[test]
+fn h_hides_and_shows_the_hud() {
+    let mut game = Game::stepping();
+    let visibilities = |game: &mut Game| {
+        let mut roots = game.world().query_filtered::<&Visibility, With<Hud>>();
+        roots.iter(game.world()).copied().collect::<Vec<_>>()
+    };
+    game.update(1);
+    assert_eq!(visibilities(&mut game), [Visibility::Inherited; 2]);
+    game.tap_key(HUD);
+    game.update(1);
+    assert_eq!(visibilities(&mut game), [Visibility::Hidden; 2]);
+    game.tap_key(HUD);
+    game.update(1);
+    assert_eq!(visibilities(&mut game), [Visibility::Inherited; 2]);
+}
+
+#[test]
+fn the_energy_history_keeps_a_bounded_recent_window() {
+    let mut game = Game::new(Duration::from_millis(100));
+    game.press_at(DVec2::new(200.0, 0.0));
+    game.update(200); // 20 s of play at 100 Hz
+    let history = game.world().resource::<EnergyHistory>().clone();
+    let (first, _) = *history.samples.front().unwrap();
+    let (last, latest) = *history.samples.back().unwrap();
+    assert!(history.samples.len() <= EnergyHistory::SAMPLES + 1);
+    assert!(history.samples.len() > EnergyHistory::SAMPLES / 2);
+    assert!(last - first <= EnergyHistory::SPAN && last - first > 0.9 * EnergyHistory::SPAN);
+    // Samples are at most one spacing apart, the latest within one spacing of now.
+    let now = game.world().resource::<Time<Fixed>>().elapsed_secs_f64();
+    assert!(now - last < EnergyHistory::SPAN / EnergyHistory::SAMPLES as f64);
+    assert!(latest.total() > 0.0);
+}
+
+#[test]
+fn the_history_starts_over_if_time_goes_back() {
+    let mut history = EnergyHistory::default();
+    history.record(5.0, Energies::default());
+    history.record(6.0, Energies::default());
+    history.record(1.0, Energies::default());
+    assert_eq!(history.samples.len(), 1);
+}
