@@ -37,8 +37,8 @@ const PANEL_COLOUR: Color = Color::srgba(0.0, 0.0, 0.0, 0.55);
 const FONT_SIZE: f32 = 13.0;
 
 /// The keys, as the help line shows them.
-pub const HELP: &str = "drag: pull   Space: pause   N: step   R: reset   I: integrator   \
-[ ]: k   - =: time scale   PgDn PgUp: step rate   V: vectors   T: trail   H: HUD";
+pub const HELP: &str = "drag: pull  Space: pause  N: step  R: reset  I: integrator  [ ]: k  \
+- =: time scale  PgDn/PgUp: rate  V: vectors  T: trail  H: HUD";
 
 /// One line of the HUD. Each is a `Text` entity whose content [`HudLine::text`] writes.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]

@@ -30,7 +30,15 @@ pub struct ReportArgs {
     /// A reduced sweep that runs in well under a minute (CI's smoke test).
     #[arg(long)]
     pub quick: bool,
+    /// Also run avian2d and bevy_rapier2d side by side with our plugin (needs a build with
+    /// `--features peers`).
+    #[arg(long)]
+    pub peers: bool,
 }
+
+/// What `report --peers` says in a build without the peers compiled in.
+pub const NO_PEERS: &str = "this build has no peers: run it as \
+`cargo run --release --features peers -- report --peers`";
 
 /// The steps swept, from 1/30 s to 1/10000 s.
 fn steps_swept(quick: bool) -> Vec<f64> {
@@ -43,18 +51,26 @@ fn steps_swept(quick: bool) -> Vec<f64> {
 }
 
 /// A scene of the work-precision sweep and how its reference is obtained.
-struct WorkScene {
-    scenario: Scenario,
+pub struct WorkScene {
+    pub scenario: Scenario,
     /// Simulated time; short for the chaotic stiff band.
-    horizon: f64,
+    pub horizon: f64,
     /// Step of the fine RK4 reference (unused where the answer is exact).
-    reference_step: f64,
-    exact: Option<fn(f64) -> BodyState>,
+    pub reference_step: f64,
+    pub exact: Option<fn(f64) -> BodyState>,
     /// Report the energy drift (undamped scenes, where energy is an invariant).
-    energy_invariant: bool,
+    pub energy_invariant: bool,
 }
 
-fn work_scenes() -> Vec<WorkScene> {
+/// The converged answer of a work scene at time `t`.
+pub fn work_reference(scene: &WorkScene, t: f64) -> BodyState {
+    match scene.exact {
+        Some(exact) => exact(t),
+        None => reference_state(&scene.scenario, t, scene.reference_step),
+    }
+}
+
+pub fn work_scenes() -> Vec<WorkScene> {
     let named = |name: &str| Scenario::named(name).expect("a built-in scene");
     vec![
         WorkScene {
@@ -157,10 +173,7 @@ fn work_precision(quick: bool) -> Vec<WorkPoint> {
         for dt in steps_swept(quick) {
             let steps = (scene.horizon / dt).round() as u64;
             let t = steps as f64 * dt;
-            let reference = match scene.exact {
-                Some(exact) => exact(t),
-                None => reference_state(&scene.scenario, t, scene.reference_step),
-            };
+            let reference = work_reference(&scene, t);
             for integrator in Integrator::ALL {
                 let fresh = || Run::of(&scene.scenario, integrator, dt).expect("valid");
                 let mut run = fresh();
@@ -333,24 +346,37 @@ pub struct StiffPoint {
 
 pub const TICKS_PER_STIFF_RUN: u64 = 10;
 
-fn stiffness_sweep(quick: bool) -> Vec<StiffPoint> {
-    let ks: &[f64] = if quick {
+/// The stiff scene at band stiffness `k`, and its state after `ticks` steps at `rate` by an
+/// RK4 run that resolves the stiffest mode a thousand times per radian: finer than any
+/// substep of `auto`, so that the reference's own error stays out of the comparison.
+pub fn stiff_scenario(k: f64, rate: f64, ticks: u64) -> (Scenario, BodyState) {
+    let mut scenario = Scenario::named("stiff").expect("built-in");
+    scenario.params.stiffness = k;
+    let omega = 2.0 * (k / scenario.params.mass).sqrt();
+    let t = ticks as f64 / rate;
+    let reference = reference_state(&scenario, t, (0.001 / omega).min(1e-5));
+    (scenario, reference)
+}
+
+/// The k swept, 20 to 1e9.
+fn ks_swept(quick: bool) -> &'static [f64] {
+    if quick {
         &[20.0, 1e5, 1e9]
     } else {
         &[20.0, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9]
-    };
+    }
+}
+
+/// The rates of the stiffness sweep.
+const SWEEP_RATES: [f64; 2] = [100.0, 64.0];
+
+fn stiffness_sweep(quick: bool) -> Vec<StiffPoint> {
     let mut points = Vec::new();
-    for rate in [100.0, 64.0] {
-        for &k in ks {
-            let mut scenario = Scenario::named("stiff").expect("built-in");
-            scenario.params.stiffness = k;
+    for rate in SWEEP_RATES {
+        for &k in ks_swept(quick) {
+            let (scenario, reference) = stiff_scenario(k, rate, TICKS_PER_STIFF_RUN);
             let mass = scenario.params.mass_properties().expect("valid");
             let dt = 1.0 / rate;
-            let t = TICKS_PER_STIFF_RUN as f64 * dt;
-            // The stiffest mode resolved a thousand times per radian: finer than any substep
-            // of `auto`, so that the reference's own error stays out of the comparison.
-            let omega = 2.0 * (k / scenario.params.mass).sqrt();
-            let reference = reference_state(&scenario, t, (0.001 / omega).min(1e-5));
             for integrator in Integrator::ALL {
                 let fresh = || Run::of(&scenario, integrator, dt).expect("valid");
                 let mut run = fresh();
@@ -450,6 +476,9 @@ fn format_option(value: Option<f64>, missing: &str) -> String {
 }
 
 pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
+    if args.peers && !cfg!(feature = "peers") {
+        return Err(NO_PEERS.into());
+    }
     fs::create_dir_all(&args.out)?;
     let started = Instant::now();
     let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
@@ -667,8 +696,16 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
         )?;
     }
 
-    plot_work_precision(&points, &args.out.join("work_precision.svg"))?;
-    plot_stiffness(&sweep, &args.out.join("stiffness.svg"))?;
+    #[cfg(feature = "peers")]
+    let (work_lines, stiff_lines) = if args.peers {
+        peers_section(&mut table, args)?
+    } else {
+        (Vec::new(), [Vec::new(), Vec::new()])
+    };
+    #[cfg(not(feature = "peers"))]
+    let (work_lines, stiff_lines) = (Vec::new(), [Vec::new(), Vec::new()]);
+    plot_work_precision(&points, work_lines, &args.out.join("work_precision.svg"))?;
+    plot_stiffness(&sweep, stiff_lines, &args.out.join("stiffness.svg"))?;
     writeln!(
         table,
         "\nWritten to {} in {:.1} s.",
@@ -680,12 +717,35 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     Ok(())
 }
 
+/// One line of a plot: an integrator's (dots), or a whole engine's in an `App` (triangles).
+pub struct Line {
+    pub label: String,
+    pub colour: RGBAColor,
+    pub triangles: bool,
+    pub points: Vec<(f64, f64)>,
+}
+
+impl Line {
+    fn of(integrator: Integrator, points: Vec<(f64, f64)>) -> Self {
+        let index = Integrator::ALL
+            .iter()
+            .position(|&i| i == integrator)
+            .unwrap_or(0);
+        Self {
+            label: integrator.name().to_owned(),
+            colour: Palette99::pick(index).to_rgba(),
+            triangles: false,
+            points,
+        }
+    }
+}
+
 /// One log-log panel: a line with dots per integrator, a legend, and red crosses.
 struct Panel<'a> {
     title: String,
     x: (&'a str, Range<f64>),
     y: (&'a str, Range<f64>),
-    lines: Vec<(Integrator, Vec<(f64, f64)>)>,
+    lines: Vec<Line>,
     crosses: Vec<(f64, f64)>,
 }
 
@@ -708,17 +768,25 @@ fn draw_panel(
         .x_label_formatter(&|x| format!("{x:.0e}"))
         .y_label_formatter(&|y| format!("{y:.0e}"))
         .draw()?;
-    for (integrator, line) in panel.lines {
-        let index = Integrator::ALL
-            .iter()
-            .position(|&i| i == integrator)
-            .unwrap_or(0);
-        let colour = Palette99::pick(index).to_rgba();
+    for line in panel.lines {
+        let colour = line.colour;
         chart
-            .draw_series(LineSeries::new(line.clone(), colour.stroke_width(2)))?
-            .label(integrator.name())
+            .draw_series(LineSeries::new(line.points.clone(), colour.stroke_width(2)))?
+            .label(line.label)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
-        chart.draw_series(line.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+        if line.triangles {
+            chart.draw_series(
+                line.points
+                    .iter()
+                    .map(|&p| TriangleMarker::new(p, 6, colour.filled())),
+            )?;
+        } else {
+            chart.draw_series(
+                line.points
+                    .iter()
+                    .map(|&p| Circle::new(p, 3, colour.filled())),
+            )?;
+        }
     }
     chart.draw_series(panel.crosses.iter().map(|&p| Cross::new(p, 5, RED)))?;
     chart
@@ -737,18 +805,19 @@ fn extent(values: impl Iterator<Item = f64>) -> (f64, f64) {
     })
 }
 
-/// Error (log x) against cost (log y), a panel per scene, a line per integrator; diverged
-/// runs are red crosses at the right edge.
-fn plot_work_precision(points: &[WorkPoint], path: &Path) -> Result<(), Box<dyn Error>> {
+/// Error (log x) against cost (log y), a panel per scene, a line per integrator (and per
+/// peer: `extra`, by scene); diverged runs are red crosses at the right edge.
+fn plot_work_precision(
+    points: &[WorkPoint],
+    mut extra: Vec<(&'static str, Line)>,
+    path: &Path,
+) -> Result<(), Box<dyn Error>> {
     let root = SVGBackend::new(path, (1400, 1000)).into_drawing_area();
     root.fill(&WHITE)?;
     let scenes: Vec<&str> = work_scenes().iter().map(|s| s.scenario.name).collect();
     for (area, scene) in root.split_evenly((2, 2)).iter().zip(&scenes) {
         let here: Vec<&WorkPoint> = points.iter().filter(|p| p.scene == *scene).collect();
-        let (x_min, x_max) = extent(here.iter().filter_map(|p| p.error).map(|e| e.max(1e-16)));
-        let x_max = x_max.max(1.0) * 30.0;
-        let (y_min, y_max) = extent(here.iter().map(|p| p.ns_per_simulated_second));
-        let lines = Integrator::ALL
+        let mut lines: Vec<Line> = Integrator::ALL
             .iter()
             .map(|&integrator| {
                 let line = here
@@ -756,9 +825,19 @@ fn plot_work_precision(points: &[WorkPoint], path: &Path) -> Result<(), Box<dyn 
                     .filter(|p| p.integrator == integrator)
                     .filter_map(|p| p.error.map(|e| (e.max(1e-16), p.ns_per_simulated_second)))
                     .collect();
-                (integrator, line)
+                Line::of(integrator, line)
             })
             .collect();
+        let (peers, others) = extra.into_iter().partition(|(s, _)| s == scene);
+        extra = others;
+        lines.extend(peers.into_iter().map(|(_, line)| line));
+        let (x_min, x_max) = extent(lines.iter().flat_map(|l| l.points.iter().map(|p| p.0)));
+        let x_max = x_max.max(1.0) * 30.0;
+        let (y_min, y_max) = extent(
+            here.iter()
+                .map(|p| p.ns_per_simulated_second)
+                .chain(lines.iter().flat_map(|l| l.points.iter().map(|p| p.1))),
+        );
         let crosses = here
             .iter()
             .filter(|p| p.diverged_at.is_some())
@@ -779,8 +858,13 @@ fn plot_work_precision(points: &[WorkPoint], path: &Path) -> Result<(), Box<dyn 
     Ok(())
 }
 
-/// Cost per step and error against k at 100 Hz, a line per integrator.
-fn plot_stiffness(points: &[StiffPoint], path: &Path) -> Result<(), Box<dyn Error>> {
+/// Cost per step and error against k at 100 Hz, a line per integrator; `extra` holds the
+/// peers' lines for the two panels (cost, error).
+fn plot_stiffness(
+    points: &[StiffPoint],
+    extra: [Vec<Line>; 2],
+    path: &Path,
+) -> Result<(), Box<dyn Error>> {
     let root = SVGBackend::new(path, (1400, 550)).into_drawing_area();
     root.fill(&WHITE)?;
     let at_100: Vec<&StiffPoint> = points.iter().filter(|p| p.rate == 100.0).collect();
@@ -794,9 +878,10 @@ fn plot_stiffness(points: &[StiffPoint], path: &Path) -> Result<(), Box<dyn Erro
             p.error.map(|e| e.max(1e-14))
         }),
     ];
-    for (area, (title, y_desc, value)) in root.split_evenly((1, 2)).iter().zip(views) {
-        let (y_min, y_max) = extent(at_100.iter().filter_map(|p| value(p)));
-        let lines = Integrator::ALL
+    for ((area, (title, y_desc, value)), peers) in
+        root.split_evenly((1, 2)).iter().zip(views).zip(extra)
+    {
+        let mut lines: Vec<Line> = Integrator::ALL
             .iter()
             .map(|&integrator| {
                 let line = at_100
@@ -804,9 +889,11 @@ fn plot_stiffness(points: &[StiffPoint], path: &Path) -> Result<(), Box<dyn Erro
                     .filter(|p| p.integrator == integrator)
                     .filter_map(|p| value(p).map(|v| (p.k, v)))
                     .collect();
-                (integrator, line)
+                Line::of(integrator, line)
             })
             .collect();
+        lines.extend(peers);
+        let (y_min, y_max) = extent(lines.iter().flat_map(|l| l.points.iter().map(|p| p.1)));
         draw_panel(
             area,
             Panel {
@@ -820,4 +907,153 @@ fn plot_stiffness(points: &[StiffPoint], path: &Path) -> Result<(), Box<dyn Erro
     }
     root.present()?;
     Ok(())
+}
+
+/// The peers beside our own plugin, each in a headless `App`: the tables, `peers.csv` and
+/// `peers_stiffness.csv`, and the peers' lines for the two plots.
+#[cfg(feature = "peers")]
+fn peers_section(
+    table: &mut String,
+    args: &ReportArgs,
+) -> Result<(Vec<(&'static str, Line)>, [Vec<Line>; 2]), Box<dyn Error>> {
+    use crate::peers::measure::{self, NAMES};
+    // Dark, unlike the integrators' palette: black for ours, brown and grey for the peers.
+    let colour = |name: &str| {
+        let index = NAMES.iter().position(|&n| n == name).unwrap_or(0);
+        [
+            RGBColor(0, 0, 0),
+            RGBColor(150, 80, 20),
+            RGBColor(120, 120, 120),
+        ][index]
+            .to_rgba()
+    };
+    let label = |name: &str| format!("{name} (App tick)");
+    let short = |value: Option<f64>| value.map_or("-".to_owned(), |v| format!("{v:.1e}"));
+
+    let points = measure::side_by_side(args.quick);
+    writeln!(
+        table,
+        "\n## Side by side with avian2d and bevy_rapier2d: a headless `App` per engine, one \
+         fixed step per update, single-threaded executor (error in px; ratios to ours)\n"
+    )?;
+    writeln!(
+        table,
+        "| scene | rate | engine | error | energy drift | ns per tick | error / ours | tick / ours |"
+    )?;
+    writeln!(table, "|---|---|---|---|---|---|---|---|")?;
+    let mut csv = String::from("scene,rate_hz,engine,steps,error_px,energy_drift,ns_per_tick\n");
+    for chunk in points.chunk_by(|a, b| a.scene == b.scene && a.rate == b.rate) {
+        let ours = &chunk[0];
+        for p in chunk {
+            let error_ratio = p.error.zip(ours.error).map(|(a, b)| a / b);
+            writeln!(
+                table,
+                "| {} | {} Hz | {} | {} | {} | {:.0} | {} | {:.2} |",
+                p.scene,
+                p.rate,
+                p.contender,
+                p.error
+                    .map_or("non-finite".to_owned(), |e| format!("{e:.1e}")),
+                short(p.energy_drift),
+                p.ns_per_tick,
+                short(error_ratio),
+                p.ns_per_tick / ours.ns_per_tick
+            )?;
+            writeln!(
+                csv,
+                "{},{},{},{},{},{},{}",
+                p.scene,
+                p.rate,
+                p.contender,
+                p.steps,
+                optional(p.error),
+                optional(p.energy_drift),
+                p.ns_per_tick
+            )?;
+        }
+    }
+    fs::write(args.out.join("peers.csv"), csv)?;
+    let mut work_lines = Vec::new();
+    for scene in work_scenes() {
+        let scene = scene.scenario.name;
+        for name in NAMES {
+            let line = points
+                .iter()
+                .filter(|p| p.scene == scene && p.contender == name)
+                .filter_map(|p| p.error.map(|e| (e.max(1e-16), p.ns_per_tick * p.rate)))
+                .collect();
+            work_lines.push((
+                scene,
+                Line {
+                    label: label(name),
+                    colour: colour(name),
+                    triangles: true,
+                    points: line,
+                },
+            ));
+        }
+    }
+
+    let stiff = measure::stiffness(
+        ks_swept(args.quick),
+        &SWEEP_RATES,
+        TICKS_PER_STIFF_RUN,
+        args.quick,
+    );
+    writeln!(
+        table,
+        "\n## Stiffness sweep, side by side: {TICKS_PER_STIFF_RUN} fixed steps of the stiff \
+         scene (error in px / ns per App tick)\n"
+    )?;
+    table_head(table, ["k", "rate"], &NAMES)?;
+    let mut csv = String::from("k,rate_hz,engine,ns_per_tick,error_px\n");
+    for chunk in stiff.chunk_by(|a, b| a.k == b.k && a.rate == b.rate) {
+        let cells: Vec<String> = chunk
+            .iter()
+            .map(|p| {
+                let error = p
+                    .error
+                    .map_or("non-finite".to_owned(), |e| format!("{e:.1e}"));
+                format!("{error} / {:.0}", p.ns_per_tick)
+            })
+            .collect();
+        writeln!(
+            table,
+            "| {:e} | {} Hz | {} |",
+            chunk[0].k,
+            chunk[0].rate,
+            cells.join(" | ")
+        )?;
+        for p in chunk {
+            writeln!(
+                csv,
+                "{},{},{},{},{}",
+                p.k,
+                p.rate,
+                p.contender,
+                p.ns_per_tick,
+                optional(p.error)
+            )?;
+        }
+    }
+    fs::write(args.out.join("peers_stiffness.csv"), csv)?;
+    let stiff_line = |name: &str, value: fn(&measure::PeerStiffPoint) -> Option<f64>| Line {
+        label: label(name),
+        colour: colour(name),
+        triangles: true,
+        points: stiff
+            .iter()
+            .filter(|p| p.contender == name && p.rate == 100.0)
+            .filter_map(|p| value(p).map(|v| (p.k, v)))
+            .collect(),
+    };
+    let cost = NAMES
+        .iter()
+        .map(|name| stiff_line(name, |p| Some(p.ns_per_tick)))
+        .collect();
+    let error = NAMES
+        .iter()
+        .map(|name| stiff_line(name, |p| p.error.map(|e| e.max(1e-14))))
+        .collect();
+    Ok((work_lines, [cost, error]))
 }

@@ -62,3 +62,16 @@ fn the_quick_report_writes_tables_and_a_plot_that_parse() {
     assert!(svg.contains("rk4") && svg.contains("diverged"));
     fs::remove_dir_all(&out).ok();
 }
+
+#[cfg(not(feature = "peers"))]
+#[test]
+fn asking_for_the_peers_without_them_says_how_to_get_them() {
+    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
+        .args(["report", "--quick", "--peers", "--out"])
+        .arg(std::env::temp_dir().join("rubber-band-box-no-peers"))
+        .output()
+        .unwrap();
+    assert!(!output.status.success());
+    let message = String::from_utf8_lossy(&output.stderr);
+    assert!(message.contains("--features peers"), "{message}");
+}

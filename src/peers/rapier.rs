@@ -55,8 +55,8 @@ impl Contender for Rapier {
                 Transform::from_translation(initial.linear.position.as_vec2().extend(0.0))
                     .with_rotation(Quat::from_rotation_z(initial.angular.orientation as f32)),
                 Velocity {
-                    linvel: initial.linear.velocity.as_vec2(),
-                    angvel: initial.angular.angular_velocity as f32,
+                    linear: initial.linear.velocity.as_vec2(),
+                    angular: initial.angular.angular_velocity as f32,
                 },
                 AdditionalMassProperties::MassProperties(MassProperties {
                     local_center_of_mass: Vec2::ZERO,
@@ -110,11 +110,11 @@ impl Contender for Rapier {
         BodyState {
             linear: LinearState {
                 position: transform.translation.truncate().as_dvec2(),
-                velocity: velocity.linvel.as_dvec2(),
+                velocity: velocity.linear.as_dvec2(),
             },
             angular: AngularState {
                 orientation: self.orientation,
-                angular_velocity: f64::from(velocity.angvel),
+                angular_velocity: f64::from(velocity.angular),
             },
         }
     }

@@ -1,0 +1,101 @@
+//! The peers' harness (`cargo test --features peers --test peers`): each engine holds the
+//! scene as we set it up, and our own contender is the core, step for step.
+#![cfg(feature = "peers")]
+
+use rubber_band_box::peers::avian::Avian;
+use rubber_band_box::peers::ours::Ours;
+use rubber_band_box::peers::rapier::Rapier;
+use rubber_band_box::peers::{Contender, PeerRun, unwrap_angle};
+use rubber_band_box::physics::{BodyState, Integrator, Run, Scenario};
+use rubber_band_box::report::{pose_error, reference_state};
+
+#[test]
+fn our_contender_steps_exactly_as_the_core() {
+    let scenario = Scenario::named("seed").unwrap();
+    let mut app = PeerRun::<Ours>::of(&scenario, 100.0);
+    let mut core = Run::of(&scenario, Integrator::Auto, 0.01).unwrap();
+    for _ in 0..300 {
+        app.advance();
+        core.advance().unwrap();
+    }
+    assert_eq!(app.state(), core.sim.state);
+}
+
+/// A box at rest with no band stays at rest, and a pulled one moves toward the anchor and
+/// ends near the reference: the set-up (mass, damping, spring, no gravity) is the scene's.
+fn holds_the_scene<C: Contender>(tolerance: f64) {
+    let rest = Scenario::named("rest").unwrap();
+    let mut run = PeerRun::<C>::of(&rest, 100.0);
+    run.advance_by(50);
+    assert_eq!(run.state(), BodyState::default(), "{}", C::NAME);
+
+    let seed = Scenario::named("seed").unwrap();
+    let mut run = PeerRun::<C>::of(&seed, 100.0);
+    run.advance_by(400);
+    let reference = reference_state(&seed, 4.0, 1e-4);
+    let error = pose_error(&run.state(), &reference, &run.mass);
+    assert!(error < tolerance, "{}: {error} px after 4 s", C::NAME);
+}
+
+#[test]
+fn avian_holds_the_scene() {
+    holds_the_scene::<Avian>(5.0);
+}
+
+#[test]
+fn rapier_holds_the_scene() {
+    holds_the_scene::<Rapier>(5.0);
+}
+
+#[test]
+fn a_released_band_stops_pulling() {
+    // Pulled for 2 s then released: afterwards only damping acts, so the speed only falls.
+    fn speeds<C: Contender>() -> Vec<f64> {
+        let seed = Scenario::named("seed").unwrap();
+        let mut run = PeerRun::<C>::of(&seed, 100.0);
+        run.advance_by(201);
+        (0..100)
+            .map(|_| {
+                run.advance();
+                run.state().linear.velocity.length()
+            })
+            .collect()
+    }
+    for (name, speeds) in [
+        (Avian::NAME, speeds::<Avian>()),
+        (Rapier::NAME, speeds::<Rapier>()),
+    ] {
+        assert!(speeds.windows(2).all(|w| w[1] <= w[0]), "{name}");
+        assert!(speeds[0] > 1.0, "{name}: the band had moved the box");
+    }
+}
+
+#[test]
+fn angles_unwrap_to_the_nearest_turn() {
+    let turn = std::f64::consts::TAU;
+    assert_eq!(unwrap_angle(0.0, 0.5), 0.5);
+    assert!((unwrap_angle(3.0 * turn + 3.1, -3.1) - (3.0 * turn + turn - 3.1)).abs() < 1e-12);
+}
+
+/// The band pulls from the very first step: after one step from rest the box moves, in every
+/// engine, by about the same amount.
+#[test]
+fn the_band_acts_from_the_first_step() {
+    fn first_step<C: Contender>() -> BodyState {
+        let seed = Scenario::named("seed").unwrap();
+        let mut run = PeerRun::<C>::of(&seed, 100.0);
+        run.advance();
+        run.state()
+    }
+    let ours = first_step::<Ours>();
+    for (name, state) in [
+        (Avian::NAME, first_step::<Avian>()),
+        (Rapier::NAME, first_step::<Rapier>()),
+    ] {
+        let ratio = state.linear.velocity.length() / ours.linear.velocity.length();
+        assert!(
+            (ratio - 1.0).abs() < 0.05,
+            "{name}: {state:?} against {ours:?}"
+        );
+    }
+}
