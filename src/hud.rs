@@ -35,10 +35,11 @@ const DIM_COLOUR: Color = Color::srgb(0.6, 0.6, 0.65);
 const WARNING_COLOUR: Color = Color::srgb(1.0, 0.4, 0.3);
 const PANEL_COLOUR: Color = Color::srgba(0.0, 0.0, 0.0, 0.55);
 const FONT_SIZE: f32 = 13.0;
+const HELP_FONT_SIZE: f32 = 12.0;
 
 /// The keys, as the help line shows them.
 pub const HELP: &str = "drag: pull  Space: pause  N: step  R: reset  I: integrator  [ ]: k  \
-- =: time scale  PgDn/PgUp: rate  V: vectors  T: trail  H: HUD";
+- =: time  PgDn/PgUp: rate  V: vectors  T: trail  H: HUD";
 
 /// One line of the HUD. Each is a `Text` entity whose content [`HudLine::text`] writes.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
@@ -221,11 +222,11 @@ impl HudSources<'_, '_> {
 pub struct Hud;
 
 fn spawn_hud(mut commands: Commands) {
-    let text = |line: HudLine| {
+    let text = |line: HudLine, size: f32| {
         (
             line,
             Text::default(),
-            TextFont::from_font_size(FONT_SIZE),
+            TextFont::from_font_size(size),
             TextColor(TEXT_COLOUR),
         )
     };
@@ -245,12 +246,12 @@ fn spawn_hud(mut commands: Commands) {
         ))
         .id();
     for line in HudLine::PANEL {
-        commands.spawn((text(line), ChildOf(panel)));
+        commands.spawn((text(line, FONT_SIZE), ChildOf(panel)));
     }
     commands.spawn((
         Name::new("HUD help"),
         Hud,
-        text(HudLine::Help),
+        text(HudLine::Help, HELP_FONT_SIZE),
         Node {
             position_type: PositionType::Absolute,
             bottom: px(6),
