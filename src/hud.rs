@@ -90,10 +90,12 @@ impl HudLine {
             HudLine::Integrator => {
                 let mut line = format!("integrator {}", r.integrator);
                 if r.integrator == Integrator::Auto {
-                    line += &format!(
-                        ": {} rk4 substeps/step, {} fall-backs to implicit",
-                        r.substeps, r.fallbacks
-                    );
+                    let latest = if r.capped {
+                        "budget capped: implicit".to_owned()
+                    } else {
+                        format!("{} rk4 substeps/step", r.substeps)
+                    };
+                    line += &format!(": {latest}, {} fall-backs to implicit", r.fallbacks);
                 }
                 if let Some((diverged, step)) = r.divergence {
                     line += &format!("  {diverged} DIVERGED at step {step}: steps refused");
@@ -147,6 +149,8 @@ impl HudLine {
 
 /// Energies are shown fixed-point in the usual range, in scientific notation outside it.
 fn energy(value: f64) -> String {
+    // An empty sum is −0.0 in Rust: show it as 0.
+    let value = value + 0.0;
     if value == 0.0 || (1e-2..1e7).contains(&value.abs()) {
         format!("{value:>12.2}")
     } else {
@@ -159,6 +163,8 @@ fn energy(value: f64) -> String {
 pub struct HudReadings {
     pub integrator: Integrator,
     pub substeps: u32,
+    /// The budget capped the latest step: it was one `implicit` step.
+    pub capped: bool,
     pub fallbacks: u64,
     pub divergence: Option<(Integrator, u64)>,
     pub step_rate_hz: f64,
@@ -199,6 +205,7 @@ impl HudSources<'_, '_> {
         HudReadings {
             integrator: *self.integrator,
             substeps: self.stats.substeps,
+            capped: self.stats.capped,
             fallbacks: self.stats.fallbacks,
             divergence: self.stats.divergence,
             step_rate_hz: params.step_rate_hz,

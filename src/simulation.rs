@@ -132,12 +132,14 @@ fn lerp(a: f64, b: f64, t: f64) -> f64 {
     a + (b - a) * t
 }
 
-/// What the integrator did: the latest step's substeps (most over the bodies), the steps
-/// where `auto` fell back to `implicit` since start-up, and the latest step refused because
-/// it would have left the state non-finite (which integrator, which step).
+/// What the integrator did: the latest step's substeps (most over the bodies) and whether
+/// the budget capped it (`auto` fell back to `implicit`), the fall-backs since start-up, and
+/// the latest step refused because it would have left the state non-finite (which
+/// integrator, which step).
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
 pub struct StepStats {
     pub substeps: u32,
+    pub capped: bool,
     pub fallbacks: u64,
     pub divergence: Option<(Integrator, u64)>,
 }
@@ -333,11 +335,13 @@ fn integrate(
     } = settings;
     let dt = time.timestep().as_secs_f64();
     stats.substeps = 0;
+    stats.capped = false;
     for (mut linear, mut angular, mass, mut accumulator) in &mut bodies {
         let model = params.force_model(*mass, accumulator.band);
         let mut state = body_state(&linear, &angular);
         let info = integrator.step_with(&mut state, &model, accumulator.forces, dt, &auto);
         stats.substeps = stats.substeps.max(info.substeps);
+        stats.capped |= info.fell_back;
         stats.fallbacks += u64::from(info.fell_back);
         // A divergent explicit method (a stiff band) must not put NaN, infinity or an absurd
         // value into a component: refuse the step, keep the last sane state, and say so.

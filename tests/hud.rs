@@ -12,6 +12,7 @@ fn readings() -> HudReadings {
     HudReadings {
         integrator: Integrator::Auto,
         substeps: 3,
+        capped: false,
         fallbacks: 0,
         divergence: None,
         step_rate_hz: 100.0,
@@ -51,6 +52,16 @@ fn lines_say_what_the_readings_hold() {
     // No energy has passed through yet: no relative error to show.
     assert!(HudLine::Residual.text(&r).contains("(- of energy"));
 
+    let capped = HudReadings {
+        capped: true,
+        fallbacks: 4,
+        ..readings()
+    };
+    assert_eq!(
+        HudLine::Integrator.text(&capped),
+        "integrator auto: budget capped: implicit, 4 fall-backs to implicit"
+    );
+
     let paused = HudReadings {
         paused: true,
         integrator: Integrator::Rk4,
@@ -70,6 +81,9 @@ fn large_and_small_energies_switch_to_scientific_notation() {
     r.energies.linear = 3e-5;
     assert!(HudLine::BandPotential.text(&r).ends_with("4.200e9"));
     assert!(HudLine::KineticLinear.text(&r).ends_with("3.000e-5"));
+    // An empty sum of energies is −0.0; it shows as 0.
+    r.energies.band = -0.0;
+    assert!(HudLine::BandPotential.text(&r).ends_with(" 0.00"));
 }
 
 #[test]
@@ -139,4 +153,19 @@ fn the_history_starts_over_if_time_goes_back() {
     history.record(6.0, Energies::default());
     history.record(1.0, Energies::default());
     assert_eq!(history.samples.len(), 1);
+}
+
+#[test]
+fn a_capped_step_is_shown_as_such() {
+    let mut game = Game::stepping();
+    game.world().resource_mut::<SceneParams>().stiffness = 1e9;
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(3);
+    assert!(game.world().resource::<StepStats>().capped);
+    let line = game.hud(HudLine::Integrator);
+    assert!(line.contains("budget capped: implicit"), "{line}");
+    // Back to a soft band: the next steps are substeps again.
+    game.world().resource_mut::<SceneParams>().stiffness = 20.0;
+    game.update(2);
+    assert!(!game.world().resource::<StepStats>().capped);
 }

@@ -1,6 +1,7 @@
 // Loads the built site (site/) in headless Chromium with software WebGL2, checks that the
 // page starts without console errors and draws the box, then drags the band with the mouse
-// and checks that the band is drawn while pressed and that the box has moved and turned.
+// and checks that the band is drawn while pressed and that the box has moved and turned; the
+// HUD is drawn, and the H key hides it.
 // Screenshots go to site/screens/. Run: node .ci/web/browser-test.mjs [site-dir]
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
@@ -77,7 +78,18 @@ try {
   }
   const firstFrameMs = Date.now() - started;
   check(first !== null, `the box is drawn at the centre (first frame after ${firstFrameMs} ms)`);
-  const before = first && boxPose(first);
+  // The HUD: light text in the top-left corner. H hides it (and the energy graph), so that
+  // the pixel checks below see only the scene.
+  const isText = (png, i) => png.data[i] > 200 && png.data[i + 1] > 200 && png.data[i + 2] > 200;
+  const hudPixels = (png) => pixels(png, isText).filter(([x, y]) => x < 480 && y < 180).length;
+  const hud = first ? hudPixels(first) : 0;
+  check(hud > 500, `the HUD is drawn (${hud} text pixels top left)`);
+  await page.focus("canvas");
+  await page.keyboard.press("h");
+  await page.waitForTimeout(500);
+  const hidden = hudPixels(await shot("hud-hidden"));
+  check(hidden < 20, `H hides the HUD (${hidden} text pixels left)`);
+  const before = boxPose(await shot("before"));
 
   // Press well right of and above the box, look while pressed, then drag on.
   await page.mouse.move(width / 2 + 330, height / 2 - 250);

@@ -98,17 +98,19 @@ impl Contender for Avian {
 
     fn state(&mut self) -> BodyState {
         let body = self.app.world().entity(self.body);
-        let get = |name| format!("avian keeps the body's {name}");
-        let rotation = body.get::<Rotation>().expect(&get("rotation"));
+        let rotation = body.get::<Rotation>().expect("avian keeps a rotation");
         self.orientation = unwrap_angle(self.orientation, rotation.as_radians());
         BodyState {
             linear: LinearState {
-                position: body.get::<Position>().expect(&get("position")).0,
-                velocity: body.get::<LinearVelocity>().expect(&get("velocity")).0,
+                position: body.get::<Position>().expect("avian keeps a position").0,
+                velocity: body
+                    .get::<LinearVelocity>()
+                    .expect("avian keeps a velocity")
+                    .0,
             },
             angular: AngularState {
                 orientation: self.orientation,
-                angular_velocity: body.get::<AngularVelocity>().expect(&get("spin")).0,
+                angular_velocity: body.get::<AngularVelocity>().expect("avian keeps a spin").0,
             },
         }
     }
