@@ -697,15 +697,15 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     }
 
     #[cfg(feature = "peers")]
-    let (work_lines, stiff_lines) = if args.peers {
+    let extra = if args.peers {
         peers_section(&mut table, args)?
     } else {
-        (Vec::new(), [Vec::new(), Vec::new()])
+        ExtraLines::default()
     };
     #[cfg(not(feature = "peers"))]
-    let (work_lines, stiff_lines) = (Vec::new(), [Vec::new(), Vec::new()]);
-    plot_work_precision(&points, work_lines, &args.out.join("work_precision.svg"))?;
-    plot_stiffness(&sweep, stiff_lines, &args.out.join("stiffness.svg"))?;
+    let extra = ExtraLines::default();
+    plot_work_precision(&points, extra.work, &args.out.join("work_precision.svg"))?;
+    plot_stiffness(&sweep, extra.stiffness, &args.out.join("stiffness.svg"))?;
     writeln!(
         table,
         "\nWritten to {} in {:.1} s.",
@@ -738,6 +738,14 @@ impl Line {
             points,
         }
     }
+}
+
+/// Lines from outside the core's integrators (the peers), to draw beside them: by scene in
+/// the work-precision plot, and in the stiffness plot's cost and error panels.
+#[derive(Default)]
+pub struct ExtraLines {
+    pub work: Vec<(&'static str, Line)>,
+    pub stiffness: [Vec<Line>; 2],
 }
 
 /// One log-log panel: a line with dots per integrator, a legend, and red crosses.
@@ -912,10 +920,7 @@ fn plot_stiffness(
 /// The peers beside our own plugin, each in a headless `App`: the tables, `peers.csv` and
 /// `peers_stiffness.csv`, and the peers' lines for the two plots.
 #[cfg(feature = "peers")]
-fn peers_section(
-    table: &mut String,
-    args: &ReportArgs,
-) -> Result<(Vec<(&'static str, Line)>, [Vec<Line>; 2]), Box<dyn Error>> {
+fn peers_section(table: &mut String, args: &ReportArgs) -> Result<ExtraLines, Box<dyn Error>> {
     use crate::peers::measure::{self, NAMES};
     // Dark, unlike the integrators' palette: black for ours, brown and grey for the peers.
     let colour = |name: &str| {
@@ -1055,5 +1060,8 @@ fn peers_section(
         .iter()
         .map(|name| stiff_line(name, |p| p.error.map(|e| e.max(1e-14))))
         .collect();
-    Ok((work_lines, [cost, error]))
+    Ok(ExtraLines {
+        work: work_lines,
+        stiffness: [cost, error],
+    })
 }

@@ -441,3 +441,33 @@ fn the_games_energy_books_balance_to_the_integrators_error() {
     let euler = residual_of(Integrator::Euler);
     assert!(euler > 1e-4, "euler's error shows in the books: {euler}");
 }
+
+/// A resize changes what the player sees, never the simulation: the box moves on exactly as
+/// in a game that was not resized, and the pointer maps through the new view (the scene's
+/// width now fills the window).
+#[test]
+fn the_state_survives_a_resize_and_the_pointer_follows_the_new_view() {
+    let mut resized = Game::stepping();
+    let mut twin = Game::stepping();
+    for game in [&mut resized, &mut twin] {
+        game.press_at(DVec2::new(200.0, 100.0));
+        game.update(30);
+        game.mouse(ButtonState::Released);
+        game.update(1);
+    }
+    resized.resize(UVec2::new(720, 1280)); // portrait
+    resized.update(20);
+    twin.update(20);
+    assert_eq!(resized.state(), twin.state());
+
+    // Portrait: the scene's 640 units fill the 720 px width, 0.889 units a pixel, centred.
+    let scale = 640.0 / 720.0;
+    let to_screen =
+        |w: DVec2| Vec2::new((360.0 + w.x / scale) as f32, (640.0 - w.y / scale) as f32);
+    let target = DVec2::new(100.0, -150.0);
+    resized.cursor(Some(to_screen(target)));
+    resized.mouse(ButtonState::Pressed);
+    resized.update(1);
+    let anchor = resized.the_band().ends.anchor;
+    assert!(anchor.distance(target) < 1e-3, "{anchor} for {target}");
+}

@@ -206,6 +206,25 @@ impl Game {
         (*linear, *angular)
     }
 
+    /// The window resized to `size`, and the camera's values recomputed as bevy_render would.
+    pub fn resize(&mut self, size: UVec2) {
+        let window = self.window;
+        self.world()
+            .get_mut::<Window>(window)
+            .unwrap()
+            .resolution
+            .set(size.x as f32, size.y as f32);
+        let mut cameras = self.world().query::<(&mut Camera, &mut Projection)>();
+        for (mut camera, mut projection) in cameras.iter_mut(self.app.world_mut()) {
+            projection.update(size.x as f32, size.y as f32);
+            camera.computed.clip_from_view = projection.get_clip_from_view();
+            camera.computed.target_info = Some(RenderTargetInfo {
+                physical_size: size,
+                scale_factor: 1.0,
+            });
+        }
+    }
+
     /// What a HUD line says now.
     pub fn hud(&mut self, line: HudLine) -> String {
         let mut lines = self.world().query::<(&HudLine, &Text)>();
