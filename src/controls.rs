@@ -14,9 +14,11 @@
 //! | T | trail of the pulled corner |
 //! | H | hide / show the HUD |
 
+use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 
+use crate::hud::EnergyHistory;
 use crate::physics::{AngularState, BodyState, Integrator, LinearState, SceneParams};
 use crate::pointer::Grip;
 use crate::simulation::{
@@ -99,6 +101,16 @@ fn pause_and_step(
     }
 }
 
+/// Everything a reset puts back: the run's books and counters, the grip, the graph and clock.
+#[derive(SystemParam)]
+struct RunRecords<'w> {
+    grip: ResMut<'w, Grip>,
+    stats: ResMut<'w, StepStats>,
+    books: ResMut<'w, EnergyBooks>,
+    fixed_time: Res<'w, Time<Fixed>>,
+    history: Option<ResMut<'w, EnergyHistory>>,
+}
+
 fn reset_scene(
     keys: Res<ButtonInput<KeyCode>>,
     mut commands: Commands,
@@ -112,9 +124,7 @@ fn reset_scene(
         ),
         With<RigidBox>,
     >,
-    mut grip: ResMut<Grip>,
-    mut stats: ResMut<StepStats>,
-    mut books: ResMut<EnergyBooks>,
+    mut records: RunRecords,
 ) {
     if !keys.just_pressed(RESET) {
         return;
@@ -129,9 +139,13 @@ fn reset_scene(
         *accumulator = ForceAccumulator::default();
         *snapshots = RenderSnapshots::at_rest(rest);
     }
-    grip.0 = None;
-    *stats = StepStats::default();
-    *books = EnergyBooks::default();
+    records.grip.0 = None;
+    *records.stats = StepStats::default();
+    *records.books = EnergyBooks::default();
+    let now = records.fixed_time.elapsed_secs_f64();
+    if let Some(history) = records.history.as_mut() {
+        history.restart(now);
+    }
 }
 
 /// k, the time scale and the step rate move by factors, so that a player reaches the hard

@@ -9,8 +9,12 @@ use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
 use crate::controls::Overlays;
-use crate::physics::{Energies, EnergyLedger, Integrator, MassProperties, SceneParams};
-use crate::simulation::{EnergyBooks, PhysicsSystems, RigidBox, StepStats};
+use crate::physics::{
+    AngularState, Energies, EnergyLedger, Integrator, LinearState, MassProperties, SceneParams,
+};
+use crate::simulation::{
+    Band, EnergyBooks, PhysicsSystems, RigidBox, StepStats, mechanical_energies,
+};
 
 pub struct HudPlugin;
 
@@ -191,7 +195,18 @@ pub struct HudSources<'w, 's> {
     virtual_time: Res<'w, Time<Virtual>>,
     fixed_time: Res<'w, Time<Fixed>>,
     frame_rate: Res<'w, FrameRate>,
-    boxes: Query<'w, 's, &'static MassProperties, With<RigidBox>>,
+    history: Res<'w, EnergyHistory>,
+    boxes: Query<
+        'w,
+        's,
+        (
+            &'static LinearState,
+            &'static AngularState,
+            &'static MassProperties,
+        ),
+        With<RigidBox>,
+    >,
+    bands: Query<'w, 's, &'static Band>,
 }
 
 impl HudSources<'_, '_> {
@@ -201,23 +216,26 @@ impl HudSources<'_, '_> {
             .boxes
             .iter()
             .next()
-            .map_or(params.mass, MassProperties::mass);
+            .map_or(params.mass, |(_, _, mass)| mass.mass());
+        let step = self.fixed_time.timestep().as_secs_f64();
         HudReadings {
             integrator: *self.integrator,
             substeps: self.stats.substeps,
             capped: self.stats.capped,
             fallbacks: self.stats.fallbacks,
             divergence: self.stats.divergence,
-            step_rate_hz: params.step_rate_hz,
+            // The clock's step, which a refused rate leaves as it was.
+            step_rate_hz: 1.0 / step,
             time_scale: self.virtual_time.relative_speed_f64(),
             paused: self.virtual_time.is_paused(),
-            simulated_seconds: self.fixed_time.elapsed_secs_f64(),
+            simulated_seconds: self.fixed_time.elapsed_secs_f64() - self.history.since,
             frames_per_second: self.frame_rate.0,
             mass,
             stiffness: params.stiffness,
             linear_rate: params.linear_damping / mass,
             angular_rate: params.angular_damping,
-            energies: self.books.energies,
+            // Now, not at the last step: the band moves while paused too.
+            energies: mechanical_energies(params, &self.boxes, &self.bands),
             ledger: self.books.ledger,
             residual: self.books.residual,
         }
@@ -311,15 +329,24 @@ fn measure_frame_rate(time: Res<Time<Real>>, mut rate: ResMut<FrameRate>) {
 }
 
 /// The energies over the last [`EnergyHistory::SPAN`] seconds of simulated time, for the
-/// graph: at most [`EnergyHistory::SAMPLES`] samples whatever the step rate.
+/// graph: at most [`EnergyHistory::SAMPLES`] samples whatever the step rate. A reset starts
+/// it over, and the HUD's clock from it.
 #[derive(Resource, Debug, Default, Clone)]
 pub struct EnergyHistory {
     pub samples: VecDeque<(f64, Energies)>,
+    /// Simulated time of the latest reset (0 before any).
+    pub since: f64,
 }
 
 impl EnergyHistory {
     pub const SPAN: f64 = 10.0;
     pub const SAMPLES: usize = 500;
+
+    /// Forgets the samples; the clock restarts at `now`.
+    pub fn restart(&mut self, now: f64) {
+        self.samples.clear();
+        self.since = now;
+    }
 
     pub fn record(&mut self, time: f64, energies: Energies) {
         let spacing = Self::SPAN / Self::SAMPLES as f64;

@@ -159,13 +159,9 @@ pub fn drive_band(
                 let Ok((body, linear, angular, mass)) = boxes.single() else {
                     continue;
                 };
-                let state = body_state(linear, angular);
                 fresh = Some(Band {
                     body,
-                    ends: BandEnds {
-                        local_point: mass.nearest_corner(&state, at),
-                        anchor: at,
-                    },
+                    ends: BandEnds::grabbing(mass, &body_state(linear, angular), at),
                 });
             }
             PointerAction::Move(to) => {

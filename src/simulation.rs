@@ -161,7 +161,7 @@ pub struct EnergyBooks {
 }
 
 /// Kinetic and band energy of every body, with the bands as they are now.
-fn mechanical_energies(
+pub fn mechanical_energies(
     params: &SceneParams,
     bodies: &Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
     bands: &Query<&Band>,

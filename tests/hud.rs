@@ -169,3 +169,44 @@ fn a_capped_step_is_shown_as_such() {
     game.update(2);
     assert!(!game.world().resource::<StepStats>().capped);
 }
+
+#[test]
+fn reset_restarts_the_graph_and_the_clock() {
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(100);
+    assert!(game.world().resource::<EnergyHistory>().samples.len() > 10);
+    assert!(
+        game.hud(HudLine::Clock).contains("t 1.00 s"),
+        "{}",
+        game.hud(HudLine::Clock)
+    );
+    game.tap_key(rubber_band_box::controls::RESET);
+    game.update(1);
+    let history = game.world().resource::<EnergyHistory>().clone();
+    assert!(history.samples.len() <= 1, "{:?}", history.samples);
+    let clock = game.hud(HudLine::Clock);
+    assert!(clock.contains("t 0.0"), "{clock}");
+}
+
+#[test]
+fn the_energy_panel_is_live_while_paused() {
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(5);
+    game.tap_key(PAUSE);
+    game.update(2);
+    let before = game.hud(HudLine::BandPotential);
+    // Drag the anchor further while paused: no step runs, the band stretches.
+    game.cursor(Some(world_to_screen(DVec2::new(300.0, 200.0))));
+    game.update(2);
+    let after = game.hud(HudLine::BandPotential);
+    let value = |line: &str| {
+        line.split_whitespace()
+            .last()
+            .unwrap()
+            .parse::<f64>()
+            .unwrap()
+    };
+    assert!(value(&after) > value(&before), "{before} -> {after}");
+}

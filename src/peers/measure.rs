@@ -1,7 +1,7 @@
 //! The side-by-side measurement: every contender on the same scripted drags, in one process,
 //! each tick a full headless `App` update on the single-threaded executor.
 
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use super::avian::Avian;
 use super::ours::Ours;
@@ -13,8 +13,13 @@ use crate::report::{WorkScene, pose_error, stiff_scenario, work_reference, work_
 /// The contenders' names, ours first (the ratios are to ours).
 pub const NAMES: [&str; 3] = [Ours::NAME, Avian::NAME, Rapier::NAME];
 
-/// The rates of the comparison: the tutorial's and a common display-locked one.
+/// The rates of the comparison: Bevy's default fixed rate and the tutorial's.
 pub const RATES: [f64; 2] = [64.0, 100.0];
+
+/// Timed repetitions: the median is reported.
+fn reps(quick: bool) -> usize {
+    if quick { 1 } else { 5 }
+}
 
 /// One contender on one scene at one rate.
 #[derive(Clone, Debug)]
@@ -28,12 +33,14 @@ pub struct PeerPoint {
     pub error: Option<f64>,
     /// Largest |E − E0| / E0 over the run, on scenes where energy is an invariant.
     pub energy_drift: Option<f64>,
-    /// Median wall time of one `App` update (one fixed step), in ns.
+    /// Wall time of one `App` update (one fixed step), in ns: the median over repetitions of
+    /// the mean over the scored ticks.
     pub ns_per_tick: f64,
 }
 
-/// A scripted run's accuracy: final state and, if asked, the largest relative energy drift.
-fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> (BodyState, f64) {
+/// A scripted run's accuracy: the final state, and the largest relative change of the energy
+/// (None when the run starts with no energy to compare with).
+fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> (BodyState, Option<f64>) {
     let mut run = PeerRun::<C>::of(scenario, rate);
     let energy = |run: &mut PeerRun<C>| {
         let state = run.state();
@@ -46,29 +53,31 @@ fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> (BodySt
     let mut drift: f64 = 0.0;
     for _ in 0..steps {
         run.advance();
-        drift = drift.max((energy(&mut run) - e0).abs() / e0);
+        drift = drift.max((energy(&mut run) - e0).abs());
     }
-    (run.state(), drift)
+    (run.state(), (e0 > 0.0).then_some(drift / e0))
 }
 
-/// Ticks run before timing: the engines build their own structures on the first ones.
-const WARM_UP_TICKS: u64 = 2;
-/// Ticks timed at least, so that a short scene still gives a stable figure.
+/// Ticks timed at least per repetition: a short scene is run again from the start until
+/// this many of its ticks have been timed.
 const TIMED_TICKS: u64 = 100;
 
-/// Median over `reps` fresh runs of the time per tick (after a warm-up; building the `App`
-/// is not timed). The run goes on past the scene's horizon if it is shorter than
-/// [`TIMED_TICKS`].
+/// The time per tick of exactly the ticks that are scored (a fresh run from its start, the
+/// `App`'s construction untimed), after one untimed run to warm caches and allocators.
 fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, steps: u64, reps: usize) -> f64 {
-    let ticks = steps.max(TIMED_TICKS);
+    PeerRun::<C>::of(scenario, rate).advance_by(steps);
+    let runs = TIMED_TICKS.div_ceil(steps.max(1));
     let mut times: Vec<f64> = (0..reps)
         .map(|_| {
-            let mut run = PeerRun::<C>::of(scenario, rate);
-            run.advance_by(WARM_UP_TICKS);
-            let start = Instant::now();
-            run.advance_by(ticks);
-            std::hint::black_box(run.state());
-            start.elapsed().as_nanos() as f64 / ticks as f64
+            let mut total = Duration::ZERO;
+            for _ in 0..runs {
+                let mut run = PeerRun::<C>::of(scenario, rate);
+                let start = Instant::now();
+                run.advance_by(steps);
+                total += start.elapsed();
+                std::hint::black_box(run.state());
+            }
+            total.as_nanos() as f64 / (runs * steps) as f64
         })
         .collect();
     times.sort_by(f64::total_cmp);
@@ -93,14 +102,14 @@ fn point<C: Contender>(
         error: state
             .is_finite()
             .then(|| pose_error(&state, reference, &mass)),
-        energy_drift: scene.energy_invariant.then_some(drift),
+        energy_drift: drift.filter(|_| scene.energy_invariant),
         ns_per_tick: ns_per_tick::<C>(scenario, rate, steps, reps),
     }
 }
 
 /// Every contender on every scene of the work-precision sweep, at 64 and 100 Hz.
 pub fn side_by_side(quick: bool) -> Vec<PeerPoint> {
-    let reps = if quick { 1 } else { 5 };
+    let reps = reps(quick);
     let mut points = Vec::new();
     for scene in work_scenes() {
         for rate in RATES {
@@ -124,30 +133,42 @@ pub struct PeerStiffPoint {
     pub error: Option<f64>,
 }
 
-fn stiff_point<C: Contender>(k: f64, rate: f64, ticks: u64, reps: usize) -> PeerStiffPoint {
-    let (scenario, reference) = stiff_scenario(k, rate, ticks);
-    let (state, _) = accuracy::<C>(&scenario, rate, ticks);
+fn stiff_point<C: Contender>(
+    scenario: &Scenario,
+    reference: &BodyState,
+    rate: f64,
+    ticks: u64,
+    reps: usize,
+) -> PeerStiffPoint {
+    let (state, _) = accuracy::<C>(scenario, rate, ticks);
     let mass = scenario.params.mass_properties().expect("valid");
     PeerStiffPoint {
         contender: C::NAME,
-        k,
+        k: scenario.params.stiffness,
         rate,
-        ns_per_tick: ns_per_tick::<C>(&scenario, rate, ticks, reps),
+        ns_per_tick: ns_per_tick::<C>(scenario, rate, ticks, reps),
         error: state
             .is_finite()
-            .then(|| pose_error(&state, &reference, &mass)),
+            .then(|| pose_error(&state, reference, &mass)),
     }
 }
 
 /// The contenders across the stiffness sweep, at the sweep's `ks` and rates.
 pub fn stiffness(ks: &[f64], rates: &[f64], ticks: u64, quick: bool) -> Vec<PeerStiffPoint> {
-    let reps = if quick { 1 } else { 5 };
+    let reps = reps(quick);
     let mut points = Vec::new();
     for &rate in rates {
         for &k in ks {
-            points.push(stiff_point::<Ours>(k, rate, ticks, reps));
-            points.push(stiff_point::<Avian>(k, rate, ticks, reps));
-            points.push(stiff_point::<Rapier>(k, rate, ticks, reps));
+            let (scenario, reference) = stiff_scenario(k, rate, ticks);
+            points.push(stiff_point::<Ours>(
+                &scenario, &reference, rate, ticks, reps,
+            ));
+            points.push(stiff_point::<Avian>(
+                &scenario, &reference, rate, ticks, reps,
+            ));
+            points.push(stiff_point::<Rapier>(
+                &scenario, &reference, rate, ticks, reps,
+            ));
         }
     }
     points

@@ -15,7 +15,7 @@ use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 
-use crate::physics::{BandEnds, BodyState, MassProperties, Scenario, SceneParams};
+use crate::physics::{BandEnds, BodyState, Drag, MassProperties, Scenario, SceneParams};
 
 /// A physics engine holding the scene in a headless `App` that takes exactly one fixed step
 /// per `update()`.
@@ -65,7 +65,7 @@ pub struct PeerRun<C: Contender> {
     pub contender: C,
     pub mass: MassProperties,
     pub step: u64,
-    drags: Vec<crate::physics::Drag>,
+    drags: Vec<Drag>,
     active_drag: Option<usize>,
     pub band: Option<BandEnds>,
 }
@@ -89,30 +89,23 @@ impl<C: Contender> PeerRun<C> {
     }
 
     fn apply_drags(&mut self) {
-        let s = self.step;
-        let current = self
-            .drags
-            .iter()
-            .rposition(|drag| drag.start <= s && s < drag.end);
+        let current = Drag::active(&self.drags, self.step);
         if current == self.active_drag {
             return;
         }
         self.active_drag = current;
-        self.band = current.map(|index| {
-            let anchor = self.drags[index].target;
-            let state = self.contender.state();
-            BandEnds {
-                local_point: self.mass.nearest_corner(&state, anchor),
-                anchor,
-            }
-        });
+        let state = self.contender.state();
+        self.band = current.map(|i| BandEnds::grabbing(&self.mass, &state, self.drags[i].target));
         self.contender.set_band(self.band);
     }
 
-    /// One fixed step (one `App` update), then the drags for the next.
+    /// One fixed step (one `App` update), then the drags for the next. The state is read
+    /// after every step, so that engines that keep the rotation as (cos, sin) count whole
+    /// turns (see [`unwrap_angle`]); every contender pays the same small read.
     pub fn advance(&mut self) {
         self.contender.app().update();
         self.step += 1;
+        self.contender.state();
         self.apply_drags();
     }
 

@@ -6,6 +6,7 @@ use std::ops::{Add, AddAssign};
 use bevy::math::DVec2;
 
 use super::body::{BodyState, MassProperties};
+use super::ledger::Energies;
 
 /// A force through the centre of mass plus a torque about it (counter-clockwise positive).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -55,6 +56,15 @@ pub struct BandEnds {
 }
 
 impl BandEnds {
+    /// What a press at `anchor` grabs: the corner of the body nearest to it (the tutorial's
+    /// rule), pulled toward it.
+    pub fn grabbing(mass: &MassProperties, state: &BodyState, anchor: DVec2) -> Self {
+        Self {
+            local_point: mass.nearest_corner(state, anchor),
+            anchor,
+        }
+    }
+
     /// The band's end on the body, in world coordinates.
     pub fn attachment(&self, state: &BodyState) -> DVec2 {
         state.local_to_world(self.local_point)
@@ -96,8 +106,7 @@ pub fn damping_wrench(
 
 /// Kinetic energy, linear plus rotational: ½ m |v|² + ½ I ω².
 pub fn kinetic_energy(state: &BodyState, mass: &MassProperties) -> f64 {
-    0.5 * mass.mass() * state.linear.velocity.length_squared()
-        + 0.5 * mass.inertia() * state.angular.angular_velocity.powi(2)
+    Energies::of(state, mass, None, 0.0).kinetic()
 }
 
 /// What acts on a body during one step, kept in two parts because the integrators treat them
@@ -173,10 +182,7 @@ impl ForceModel {
 
     /// Band potential plus kinetic energy.
     pub fn energy(&self, state: &BodyState) -> f64 {
-        kinetic_energy(state, &self.mass)
-            + self
-                .band
-                .map_or(0.0, |band| band.potential_energy(state, self.stiffness))
+        Energies::of(state, &self.mass, self.band.as_ref(), self.stiffness).total()
     }
 }
 

@@ -21,6 +21,15 @@ pub struct Drag {
     pub target: DVec2,
 }
 
+impl Drag {
+    /// The drag acting during step `step` (the latest one started, if drags overlap).
+    pub fn active(drags: &[Drag], step: u64) -> Option<usize> {
+        drags
+            .iter()
+            .rposition(|drag| drag.start <= step && step < drag.end)
+    }
+}
+
 /// A named scene: parameters, initial state and drags given in seconds, so that the same
 /// scene can be run at any step.
 #[derive(Clone, Debug, PartialEq)]
@@ -254,11 +263,7 @@ impl Run {
 
     /// Attaches or releases the band as the drags say for the coming step.
     fn apply_drags(&mut self) {
-        let s = self.step;
-        let current = self
-            .drags
-            .iter()
-            .rposition(|drag| drag.start <= s && s < drag.end);
+        let current = Drag::active(&self.drags, self.step);
         if current == self.active_drag {
             return;
         }

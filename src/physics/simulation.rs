@@ -35,10 +35,7 @@ impl Simulation {
 
     /// Attaches the band to the corner nearest `anchor`, pulling toward `anchor`.
     pub fn grab(&mut self, anchor: DVec2) {
-        self.band = Some(BandEnds {
-            local_point: self.mass.nearest_corner(&self.state, anchor),
-            anchor,
-        });
+        self.band = Some(BandEnds::grabbing(&self.mass, &self.state, anchor));
     }
 
     pub fn release(&mut self) {
