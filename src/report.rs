@@ -152,17 +152,23 @@ pub struct WorkPoint {
     pub ns_per_simulated_second: f64,
 }
 
+/// The median of some measurements (the upper one of an even count).
+pub fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
+}
+
 /// Median wall time of `reps` runs of `work`, in nanoseconds.
 fn median_ns(reps: usize, mut work: impl FnMut()) -> f64 {
-    let mut times: Vec<f64> = (0..reps)
-        .map(|_| {
-            let start = Instant::now();
-            work();
-            start.elapsed().as_nanos() as f64
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
+    median(
+        (0..reps)
+            .map(|_| {
+                let start = Instant::now();
+                work();
+                start.elapsed().as_nanos() as f64
+            })
+            .collect(),
+    )
 }
 
 fn work_precision(quick: bool) -> Vec<WorkPoint> {
@@ -471,6 +477,11 @@ fn table_head(table: &mut String, first: [&str; 2], names: &[&str]) -> std::fmt:
     writeln!(table, "|---|---|{}", "---|".repeat(names.len()))
 }
 
+/// A row of a stiffness table: k, the rate, a cell per integrator or engine.
+fn stiffness_row(table: &mut String, k: f64, rate: f64, cells: &[String]) -> std::fmt::Result {
+    writeln!(table, "| {k:e} | {rate} Hz | {} |", cells.join(" | "))
+}
+
 fn format_option(value: Option<f64>, missing: &str) -> String {
     value.map_or(missing.to_owned(), |v| format!("{v:.3e}"))
 }
@@ -633,13 +644,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
                 }
             })
             .collect();
-        writeln!(
-            table,
-            "| {:e} | {} Hz | {} |",
-            chunk[0].k,
-            chunk[0].rate,
-            cells.join(" | ")
-        )?;
+        stiffness_row(&mut table, chunk[0].k, chunk[0].rate, &cells)?;
         for p in chunk {
             writeln!(
                 csv,
@@ -1022,13 +1027,7 @@ fn peers_section(table: &mut String, args: &ReportArgs) -> Result<ExtraLines, Bo
                 format!("{error} / {:.0}", p.ns_per_tick)
             })
             .collect();
-        writeln!(
-            table,
-            "| {:e} | {} Hz | {} |",
-            chunk[0].k,
-            chunk[0].rate,
-            cells.join(" | ")
-        )?;
+        stiffness_row(table, chunk[0].k, chunk[0].rate, &cells)?;
         for p in chunk {
             writeln!(
                 csv,

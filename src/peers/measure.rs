@@ -8,7 +8,7 @@ use super::ours::Ours;
 use super::rapier::Rapier;
 use super::{Contender, PeerRun};
 use crate::physics::{BodyState, Scenario};
-use crate::report::{WorkScene, pose_error, stiff_scenario, work_reference, work_scenes};
+use crate::report::{WorkScene, median, pose_error, stiff_scenario, work_reference, work_scenes};
 
 /// The contenders' names, ours first (the ratios are to ours).
 pub const NAMES: [&str; 3] = [Ours::NAME, Avian::NAME, Rapier::NAME];
@@ -70,7 +70,7 @@ fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, steps: u64, reps: u
     PeerRun::<C>::of(scenario, rate).advance_by(steps);
     let timed = steps.saturating_sub(1).max(1);
     let runs = TIMED_TICKS.div_ceil(timed);
-    let mut times: Vec<f64> = (0..reps)
+    let times = (0..reps)
         .map(|_| {
             let mut total = Duration::ZERO;
             for _ in 0..runs {
@@ -84,8 +84,7 @@ fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, steps: u64, reps: u
             total.as_nanos() as f64 / (runs * timed) as f64
         })
         .collect();
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
+    median(times)
 }
 
 fn point<C: Contender>(
