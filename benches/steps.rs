@@ -6,7 +6,6 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
@@ -14,7 +13,9 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 
 use rubber_band_box::physics::scenario::SEED_DRAG_TARGET;
 use rubber_band_box::physics::{BandEnds, BodyState, Integrator, SceneParams, Simulation};
-use rubber_band_box::simulation::{Band, RenderSnapshots, RigidBox, SimulationPlugin};
+use rubber_band_box::simulation::{
+    Band, RenderSnapshots, RigidBox, SimulationPlugin, run_single_threaded,
+};
 
 fn core_step(c: &mut Criterion) {
     let mut group = c.benchmark_group("core_step");
@@ -89,10 +90,7 @@ fn headless_app(physics: bool, boxes: usize, single_threaded: bool) -> App {
         }
     }
     if single_threaded {
-        let mut schedules = app.world_mut().resource_mut::<Schedules>();
-        for (_, schedule) in schedules.iter_mut() {
-            schedule.set_executor(SingleThreadedExecutor::new());
-        }
+        run_single_threaded(&mut app);
     }
     app.update();
     app

@@ -5,6 +5,7 @@
 
 use std::time::Duration;
 
+use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::ecs::system::SystemParam;
 use bevy::math::DVec2;
 use bevy::prelude::*;
@@ -208,6 +209,16 @@ fn settle_books(
     books.energies = energies;
     books.settled = Some(energies.total());
     books.residual = books.ledger.residual(energies.total());
+}
+
+/// Puts every schedule the app has now on the single-threaded executor: for one box, on two
+/// cores, the multi-threaded one costs 50 to 60 times more per tick (README, "Benchmarks").
+/// The benchmarks and the side-by-side with the peers measure with it.
+pub fn run_single_threaded(app: &mut App) {
+    let mut schedules = app.world_mut().resource_mut::<Schedules>();
+    for (_, schedule) in schedules.iter_mut() {
+        schedule.set_executor(SingleThreadedExecutor::new());
+    }
 }
 
 /// Fixed steps run since start-up.

@@ -11,11 +11,11 @@ pub mod rapier;
 
 use std::time::Duration;
 
-use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 
 use crate::physics::{BandEnds, BodyState, Drag, MassProperties, Scenario, SceneParams};
+use crate::simulation::run_single_threaded;
 
 /// A physics engine holding the scene in a headless `App` that takes exactly one fixed step
 /// per `update()`.
@@ -53,10 +53,7 @@ pub fn start(app: &mut App) {
     app.finish();
     app.cleanup();
     app.update();
-    let mut schedules = app.world_mut().resource_mut::<Schedules>();
-    for (_, schedule) in schedules.iter_mut() {
-        schedule.set_executor(SingleThreadedExecutor::new());
-    }
+    run_single_threaded(app);
 }
 
 /// A scripted run of a scenario on a contender: the same drags, at the same steps, attached
