@@ -49,7 +49,7 @@ pub struct SimulateArgs {
     /// zero-length, rest.
     #[arg(long, default_value = "seed", value_parser = parse_scene)]
     pub scene: Scenario,
-    /// euler, symplectic, verlet, rk4, implicit or seed [default: the game's].
+    /// euler, symplectic, verlet, rk4, implicit, seed or auto [default: auto].
     #[arg(long, value_parser = parse_integrator)]
     pub integrator: Option<Integrator>,
     /// Fixed step in seconds.
@@ -80,10 +80,13 @@ pub struct SimulateArgs {
     /// Angular damping rate c per second.
     #[arg(long, value_parser = non_negative, allow_hyphen_values = true)]
     pub angular_damping: Option<f64>,
-    /// `auto`: target error per step (px).
+    /// `auto`: target error per Taylor step (px) [default: 1e-10].
     #[arg(long, value_parser = positive, allow_hyphen_values = true)]
     pub auto_tolerance: Option<f64>,
-    /// `auto`: most RK4 substeps per step before falling back to `implicit`.
+    /// `auto`: the order of its Taylor series, 2 to 32 [default: 20].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(2..=32))]
+    pub auto_order: Option<u32>,
+    /// `auto`: most Taylor steps per fixed step before falling back to `implicit` [default: 200].
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
     pub auto_max_substeps: Option<u32>,
     /// X,Y,THETA,VX,VY,OMEGA: the initial state.
@@ -133,6 +136,9 @@ impl SimulateArgs {
         .map_err(|error| error.to_string())?;
         if let Some(tolerance) = self.auto_tolerance {
             run.sim.auto.tolerance = tolerance;
+        }
+        if let Some(order) = self.auto_order {
+            run.sim.auto.order = order as usize;
         }
         if let Some(max) = self.auto_max_substeps {
             run.sim.auto.max_substeps = max;

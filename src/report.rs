@@ -18,8 +18,10 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use crate::physics::scenario::SEED_DRAG_TARGET;
+use crate::physics::taylor::{self, TaylorSettings};
 use crate::physics::{
-    BodyState, Integrator, MassProperties, Run, Scenario, SceneParams, angular_momentum_about,
+    BandEnds, BodyState, Integrator, MassProperties, Run, Scenario, SceneParams,
+    angular_momentum_about, dop853,
 };
 
 #[derive(Args, Debug)]
@@ -336,83 +338,297 @@ fn run_hard_cases(quick: bool) -> Vec<(HardCase, Vec<Option<u64>>)> {
         .collect()
 }
 
-/// One integrator at one stiffness and rate: ten fixed steps of the stiff scene.
+/// How long after a stiff drag from rest two tight references still agree well enough to
+/// judge an integrator by its state: the stiffer the band, the sooner its chaotic motion
+/// parts them (README, "Horizons"; the report prints how far its two references agree).
+/// None beyond k = 1e7, where no state can be compared and only boundedness and energy can.
+pub fn resolvable_horizon(k: f64) -> Option<f64> {
+    if k <= 1e5 {
+        Some(0.1)
+    } else if k <= 1e6 {
+        Some(0.05)
+    } else if k <= 1e7 {
+        Some(0.02)
+    } else {
+        None
+    }
+}
+
+/// Simulated seconds of the undamped runs that judge a band too stiff for any horizon.
+pub const UNRESOLVABLE_SECONDS: f64 = 10.0;
+
+/// Two references for a resolvable case: where both agree, the report can judge errors down
+/// to their agreement.
+#[derive(Clone, Copy, Debug)]
+pub struct StiffReference {
+    /// The tightest the core has: Taylor series of order 30 at a tolerance of 1e-15 px.
+    pub state: BodyState,
+    /// How far a second, independent method (DOP853 at 1e-13 px) ends from it.
+    pub agreement: f64,
+}
+
+/// A candidate engine for `auto` with its setting, as the engine comparison runs it: inside
+/// each fixed step of a stiff drag, restarted at every fixed step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Engine {
+    /// Classical RK4 with this many equal substeps per fixed step.
+    Rk4(u32),
+    /// DOP853 at this tolerance (px per substep).
+    Dop853(f64),
+    /// Taylor series of this order at this tolerance (px per step).
+    Taylor(usize, f64),
+}
+
+impl Engine {
+    pub const TIGHTEST_TAYLOR: Self = Self::Taylor(30, 1e-15);
+    pub const TIGHTEST_DOP853: Self = Self::Dop853(1e-13);
+
+    pub fn name(&self) -> String {
+        match *self {
+            Self::Rk4(n) => format!("rk4 x{n}"),
+            Self::Dop853(tolerance) => format!("dop853 {tolerance:.0e}"),
+            Self::Taylor(order, tolerance) => format!("taylor {order} {tolerance:.0e}"),
+        }
+    }
+}
+
+/// A stiff drag (one drag, held from the start) run by `engine`: the final state and the
+/// force evaluations (Taylor: coefficient orders) per fixed step; None if the engine gave up.
+pub fn run_engine(
+    scenario: &Scenario,
+    rate: f64,
+    ticks: u64,
+    engine: Engine,
+) -> Option<(BodyState, f64)> {
+    let mass = scenario.params.mass_properties().ok()?;
+    let band = BandEnds::grabbing(&mass, &scenario.initial, scenario.drags.first()?.2);
+    let model = scenario.params.force_model(mass, Some(band));
+    let dt = 1.0 / rate;
+    let mut state = scenario.initial;
+    let mut evaluations = 0.0;
+    for _ in 0..ticks {
+        match engine {
+            Engine::Rk4(n) => {
+                for _ in 0..n {
+                    let start = model.forces(&state);
+                    Integrator::Rk4.step(&mut state, &model, start, dt / f64::from(n));
+                }
+                evaluations += 4.0 * f64::from(n);
+            }
+            Engine::Dop853(tolerance) => {
+                let done = dop853::integrate(
+                    &state,
+                    &model,
+                    model.forces(&state),
+                    dt,
+                    tolerance,
+                    u32::MAX,
+                )?;
+                state = done.state;
+                evaluations += 1.0 + 12.0 * f64::from(done.attempts);
+            }
+            Engine::Taylor(order, tolerance) => {
+                let settings = TaylorSettings {
+                    order,
+                    tolerance,
+                    max_steps: u32::MAX,
+                };
+                let done = taylor::integrate(&state, &model, dt, &settings)?;
+                state = done.state;
+                evaluations += (done.steps as usize * order) as f64;
+            }
+        }
+    }
+    state
+        .is_finite()
+        .then_some((state, evaluations / ticks as f64))
+}
+
+/// The engine comparison: each candidate at several settings on the stiff drags at 100 Hz,
+/// error at the horizon against the reference, cost per fixed step of the core alone.
+pub struct EnginePoint {
+    pub k: f64,
+    pub engine: Engine,
+    pub error: Option<f64>,
+    pub ns_per_tick: f64,
+    pub evaluations_per_tick: f64,
+}
+
+fn engines_compared(cases: &[StiffCase], quick: bool) -> Vec<EnginePoint> {
+    let engines: Vec<Engine> = if quick {
+        vec![
+            Engine::Rk4(100),
+            Engine::Dop853(1e-9),
+            Engine::Taylor(20, 1e-9),
+        ]
+    } else {
+        let mut all: Vec<Engine> = [25, 100, 400, 1600].map(Engine::Rk4).to_vec();
+        all.extend([1e-8, 1e-9, 1e-10, 1e-11].map(Engine::Dop853));
+        for order in [12, 16, 20, 28] {
+            all.extend([1e-8, 1e-9, 3e-10, 1e-10].map(|t| Engine::Taylor(order, t)));
+        }
+        all
+    };
+    let mut points = Vec::new();
+    for case in cases.iter().filter(|c| c.rate == 100.0 && c.k >= 1e3) {
+        let Some(reference) = case.reference else {
+            continue;
+        };
+        let mass = case.scenario.params.mass_properties().expect("valid");
+        for &engine in &engines {
+            let outcome = run_engine(&case.scenario, case.rate, case.ticks, engine);
+            let ns = median_ns(if quick { 1 } else { 5 }, || {
+                std::hint::black_box(run_engine(&case.scenario, case.rate, case.ticks, engine));
+            });
+            points.push(EnginePoint {
+                k: case.k,
+                engine,
+                error: outcome.map(|(state, _)| pose_error(&state, &reference.state, &mass)),
+                ns_per_tick: ns / case.ticks as f64,
+                evaluations_per_tick: outcome.map_or(0.0, |o| o.1),
+            });
+        }
+    }
+    points
+}
+
+/// One point of the stiffness sweep: the stiff drag at band stiffness `k` and rate `rate`,
+/// run to its resolvable horizon and compared there, or, beyond k = 1e7, run undamped for
+/// [`UNRESOLVABLE_SECONDS`] and judged by boundedness and energy.
+#[derive(Clone, Debug)]
+pub struct StiffCase {
+    pub k: f64,
+    pub rate: f64,
+    pub ticks: u64,
+    pub scenario: Scenario,
+    pub reference: Option<StiffReference>,
+}
+
+impl StiffCase {
+    pub fn new(k: f64, rate: f64) -> Self {
+        let Some(horizon) = resolvable_horizon(k) else {
+            let mut scenario = Scenario::named("undamped").expect("built-in");
+            scenario.params.stiffness = k;
+            return Self {
+                k,
+                rate,
+                ticks: (UNRESOLVABLE_SECONDS * rate).round() as u64,
+                scenario,
+                reference: None,
+            };
+        };
+        let mut scenario = Scenario::named("stiff").expect("built-in");
+        scenario.params.stiffness = k;
+        let ticks = ((horizon * rate).round() as u64).max(1);
+        let mass = scenario.params.mass_properties().expect("valid");
+        let taylor = run_engine(&scenario, rate, ticks, Engine::TIGHTEST_TAYLOR)
+            .expect("the tight reference converges");
+        let dop853 = run_engine(&scenario, rate, ticks, Engine::TIGHTEST_DOP853)
+            .expect("the tight reference converges");
+        Self {
+            k,
+            rate,
+            ticks,
+            reference: Some(StiffReference {
+                state: taylor.0,
+                agreement: pose_error(&taylor.0, &dop853.0, &mass),
+            }),
+            scenario,
+        }
+    }
+
+    /// Simulated seconds run.
+    pub fn seconds(&self) -> f64 {
+        self.ticks as f64 / self.rate
+    }
+}
+
+/// One integrator on one [`StiffCase`].
 #[derive(Clone, Debug)]
 pub struct StiffPoint {
     pub k: f64,
     pub rate: f64,
     pub integrator: Integrator,
     pub ns_per_tick: f64,
-    /// Pose error after ten steps against a tight RK4 reference; None if diverged.
+    /// Pose error at the horizon against the RK4 reference; None if diverged or beyond any
+    /// horizon.
     pub error: Option<f64>,
+    /// Beyond any horizon: the largest (E − E0) / E0 of the undamped run (positive: it grew).
+    pub energy_growth: Option<f64>,
     pub diverged_at: Option<u64>,
     pub mean_substeps: f64,
+    pub mean_evaluations: f64,
     pub fallbacks: u64,
 }
 
-pub const TICKS_PER_STIFF_RUN: u64 = 10;
-
-/// The stiff scene at band stiffness `k`, and its state after `ticks` steps at `rate` by an
-/// RK4 run that resolves the stiffest mode a thousand times per radian: finer than any
-/// substep of `auto`, so that the reference's own error stays out of the comparison.
-pub fn stiff_scenario(k: f64, rate: f64, ticks: u64) -> (Scenario, BodyState) {
-    let mut scenario = Scenario::named("stiff").expect("built-in");
-    scenario.params.stiffness = k;
-    let omega = 2.0 * (k / scenario.params.mass).sqrt();
-    let t = ticks as f64 / rate;
-    let reference = reference_state(&scenario, t, (0.001 / omega).min(1e-5));
-    (scenario, reference)
-}
-
-/// The k swept, 20 to 1e9.
-fn ks_swept(quick: bool) -> &'static [f64] {
+/// The k swept, 20 to 1e12.
+pub fn ks_swept(quick: bool) -> &'static [f64] {
     if quick {
         &[20.0, 1e5, 1e9]
     } else {
-        &[20.0, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9]
+        &[20.0, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e12]
     }
 }
 
 /// The rates of the stiffness sweep.
-const SWEEP_RATES: [f64; 2] = [100.0, 64.0];
+pub const SWEEP_RATES: [f64; 2] = [100.0, 64.0];
 
-fn stiffness_sweep(quick: bool) -> Vec<StiffPoint> {
+/// Every case of the stiffness sweep, references computed once.
+pub fn stiff_cases(quick: bool) -> Vec<StiffCase> {
+    SWEEP_RATES
+        .iter()
+        .flat_map(|&rate| {
+            ks_swept(quick)
+                .iter()
+                .map(move |&k| StiffCase::new(k, rate))
+        })
+        .collect()
+}
+
+fn stiffness_sweep(cases: &[StiffCase], quick: bool) -> Vec<StiffPoint> {
     let mut points = Vec::new();
-    for rate in SWEEP_RATES {
-        for &k in ks_swept(quick) {
-            let (scenario, reference) = stiff_scenario(k, rate, TICKS_PER_STIFF_RUN);
-            let mass = scenario.params.mass_properties().expect("valid");
-            let dt = 1.0 / rate;
-            for integrator in Integrator::ALL {
-                let fresh = || Run::of(&scenario, integrator, dt).expect("valid");
-                let mut run = fresh();
-                let mut substeps = 0u64;
-                let mut outcome = Ok(());
-                for _ in 0..TICKS_PER_STIFF_RUN {
-                    outcome = run.advance();
-                    substeps += u64::from(run.last_step.substeps);
-                    if outcome.is_err() {
-                        break;
-                    }
+    for case in cases {
+        let scenario = &case.scenario;
+        let mass = scenario.params.mass_properties().expect("valid");
+        let dt = 1.0 / case.rate;
+        for integrator in Integrator::ALL {
+            let fresh = || Run::of(scenario, integrator, dt).expect("valid");
+            let mut run = fresh();
+            let e0 = run.sim.energy();
+            let (mut substeps, mut evaluations) = (0u64, 0u64);
+            let mut growth = f64::NEG_INFINITY;
+            let mut outcome = Ok(());
+            for _ in 0..case.ticks {
+                outcome = run.advance();
+                if outcome.is_err() {
+                    break;
                 }
-                let diverged_at = outcome.err().map(|d| d.step);
-                let ns = median_ns(if quick { 3 } else { 15 }, || {
-                    let mut run = fresh();
-                    let _ = std::hint::black_box(run.advance_by(TICKS_PER_STIFF_RUN));
-                });
-                points.push(StiffPoint {
-                    k,
-                    rate,
-                    integrator,
-                    ns_per_tick: ns / TICKS_PER_STIFF_RUN as f64,
-                    error: diverged_at
-                        .is_none()
-                        .then(|| pose_error(&run.sim.state, &reference, &mass)),
-                    diverged_at,
-                    mean_substeps: substeps as f64 / run.step.max(1) as f64,
-                    fallbacks: run.fallbacks,
-                });
+                substeps += u64::from(run.last_step.substeps);
+                evaluations += u64::from(run.last_step.evaluations);
+                growth = growth.max((run.sim.energy() - e0) / e0);
             }
+            let diverged_at = outcome.err().map(|d| d.step);
+            let ns = median_ns(if quick { 3 } else { 15 }, || {
+                let mut run = fresh();
+                let _ = std::hint::black_box(run.advance_by(case.ticks));
+            });
+            let steps = run.step.max(1) as f64;
+            points.push(StiffPoint {
+                k: case.k,
+                rate: case.rate,
+                integrator,
+                ns_per_tick: ns / case.ticks as f64,
+                error: case
+                    .reference
+                    .filter(|_| diverged_at.is_none())
+                    .map(|r| pose_error(&run.sim.state, &r.state, &mass)),
+                energy_growth: (case.reference.is_none() && diverged_at.is_none())
+                    .then_some(growth),
+                diverged_at,
+                mean_substeps: substeps as f64 / steps,
+                mean_evaluations: evaluations as f64 / steps,
+                fallbacks: run.fallbacks,
+            });
         }
     }
     points
@@ -475,6 +691,25 @@ fn table_head(table: &mut String, first: [&str; 2], names: &[&str]) -> std::fmt:
         names.join(" | ")
     )?;
     writeln!(table, "|---|---|{}", "---|".repeat(names.len()))
+}
+
+/// The heads of a stiffness table after k and the rate: the horizon, the references'
+/// agreement, then the integrators or engines.
+fn stiff_head<'a>(names: &[&'a str]) -> Vec<&'a str> {
+    let mut head = vec!["horizon (s)", "refs agree (px)"];
+    head.extend_from_slice(names);
+    head
+}
+
+/// The horizon and reference cells of a stiffness row.
+fn horizon_cells(case: &StiffCase) -> Vec<String> {
+    match case.reference {
+        Some(r) => vec![
+            format!("{}", case.seconds()),
+            format!("{:.0e}", r.agreement),
+        ],
+        None => vec![format!("{} undamped", case.seconds()), "-".to_owned()],
+    }
 }
 
 /// A row of a stiffness table: k, the rate, a cell per integrator or engine.
@@ -618,49 +853,94 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     }
     fs::write(args.out.join("hard_cases.csv"), csv)?;
 
-    let sweep = stiffness_sweep(args.quick);
+    let cases = stiff_cases(args.quick);
+    let sweep = stiffness_sweep(&cases, args.quick);
     writeln!(
         table,
-        "\n## Stiffness sweep: {TICKS_PER_STIFF_RUN} fixed steps of the stiff scene \
-         (error in px against a tight RK4 / ns per step; auto: mean substeps, fall-backs)\n"
+        "\n## Stiffness sweep: stiff drags from rest, each k judged at the horizon its \
+         references resolve (error in px against the RK4 reference / ns per step; auto: mean \
+         substeps and force evaluations per step, fall-backs). Beyond k = 1e7 no horizon \
+         resolves a state: undamped for {UNRESOLVABLE_SECONDS} s, bounded or not, and the \
+         largest energy growth (E - E0) / E0\n"
     )?;
-    table_head(&mut table, ["k", "rate"], &names)?;
+    table_head(&mut table, ["k", "rate"], &stiff_head(&names))?;
     let mut csv = String::from(
-        "k,rate_hz,integrator,ns_per_tick,error_px,diverged_at_step,mean_substeps,fallbacks\n",
+        "k,rate_hz,horizon_s,references_agree_px,integrator,ns_per_tick,error_px,energy_growth,\
+         diverged_at_step,mean_substeps,mean_evaluations,fallbacks\n",
     );
-    for chunk in sweep.chunk_by(|a, b| a.k == b.k && a.rate == b.rate) {
-        let cells: Vec<String> = chunk
-            .iter()
-            .map(|p| {
-                let auto = if p.integrator == Integrator::Auto {
-                    format!(" ({:.0}, {})", p.mean_substeps, p.fallbacks)
-                } else {
-                    String::new()
-                };
-                match (p.error, p.diverged_at) {
-                    (Some(e), _) => format!("{e:.1e} / {:.0}{auto}", p.ns_per_tick),
-                    (None, Some(s)) => format!("diverged @{s}"),
-                    (None, None) => "?".to_owned(),
-                }
-            })
-            .collect();
-        stiffness_row(&mut table, chunk[0].k, chunk[0].rate, &cells)?;
+    for (case, chunk) in cases
+        .iter()
+        .zip(sweep.chunk_by(|a, b| a.k == b.k && a.rate == b.rate))
+    {
+        let mut cells = horizon_cells(case);
+        cells.extend(chunk.iter().map(|p| {
+            let auto = if p.integrator == Integrator::Auto {
+                format!(
+                    " ({:.0}, {:.0}, {})",
+                    p.mean_substeps, p.mean_evaluations, p.fallbacks
+                )
+            } else {
+                String::new()
+            };
+            match (p.error, p.energy_growth, p.diverged_at) {
+                (Some(e), _, _) => format!("{e:.1e} / {:.0}{auto}", p.ns_per_tick),
+                (None, Some(g), _) => format!("dE {g:+.0e} / {:.0}{auto}", p.ns_per_tick),
+                (_, _, Some(s)) => format!("diverged @{s}"),
+                _ => "?".to_owned(),
+            }
+        }));
+        stiffness_row(&mut table, case.k, case.rate, &cells)?;
         for p in chunk {
             writeln!(
                 csv,
-                "{},{},{},{},{},{},{},{}",
+                "{},{},{},{},{},{},{},{},{},{},{},{}",
                 p.k,
                 p.rate,
+                case.seconds(),
+                optional(case.reference.map(|r| r.agreement)),
                 p.integrator,
                 p.ns_per_tick,
                 optional(p.error),
+                optional(p.energy_growth),
                 optional(p.diverged_at),
                 p.mean_substeps,
+                p.mean_evaluations,
                 p.fallbacks
             )?;
         }
     }
     fs::write(args.out.join("stiffness.csv"), csv)?;
+
+    writeln!(
+        table,
+        "\n## Engines for auto: candidates on the stiff drags at 100 Hz, restarted every fixed \
+         step (error in px at the horizon against the reference; ns per fixed step of the core \
+         alone; force evaluations per fixed step, for Taylor series coefficient orders)\n"
+    )?;
+    writeln!(table, "| k | engine | error | ns per step | evaluations |")?;
+    writeln!(table, "|---|---|---|---|---|")?;
+    let mut csv = String::from("k,engine,error_px,ns_per_tick,evaluations_per_tick\n");
+    for p in engines_compared(&cases, args.quick) {
+        let error = p.error.map_or("gave up".to_owned(), |e| format!("{e:.1e}"));
+        writeln!(
+            table,
+            "| {:e} | {} | {error} | {:.0} | {:.0} |",
+            p.k,
+            p.engine.name(),
+            p.ns_per_tick,
+            p.evaluations_per_tick
+        )?;
+        writeln!(
+            csv,
+            "{},{},{},{},{}",
+            p.k,
+            p.engine.name(),
+            optional(p.error),
+            p.ns_per_tick,
+            p.evaluations_per_tick
+        )?;
+    }
+    fs::write(args.out.join("engines.csv"), csv)?;
 
     writeln!(
         table,
@@ -703,7 +983,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
 
     #[cfg(feature = "peers")]
     let extra = if args.peers {
-        peers_section(&mut table, args)?
+        peers_section(&mut table, args, &cases)?
     } else {
         ExtraLines::default()
     };
@@ -887,7 +1167,7 @@ fn plot_stiffness(
         ("cost per fixed step at 100 Hz", "ns per step", |p| {
             p.diverged_at.is_none().then_some(p.ns_per_tick)
         }),
-        ("error after 10 steps at 100 Hz", "pose error (px)", |p| {
+        ("error at the horizon, 100 Hz", "pose error (px)", |p| {
             p.error.map(|e| e.max(1e-14))
         }),
     ];
@@ -911,7 +1191,7 @@ fn plot_stiffness(
             area,
             Panel {
                 title: title.to_owned(),
-                x: ("band stiffness k", 10.0..2e9),
+                x: ("band stiffness k", 10.0..3e12),
                 y: (y_desc, y_min / 3.0..y_max * 3.0),
                 lines,
                 crosses: Vec::new(),
@@ -922,10 +1202,31 @@ fn plot_stiffness(
     Ok(())
 }
 
+/// The targets of `auto` beside the peers at band stiffness k: the largest error at the
+/// horizon (None beyond any horizon: bounded, and no energy growth undamped instead) and the
+/// largest ratio of our tick to the fastest peer's. None below k = 1e3 (the seed scene's
+/// own target is in the side-by-side table).
+#[cfg(feature = "peers")]
+fn stiff_target(k: f64) -> Option<(Option<f64>, f64)> {
+    if k < 1e3 {
+        None
+    } else if k <= 1e6 {
+        Some((Some(1e-5), 1.0))
+    } else if k <= 1e7 {
+        Some((Some(1e-4), 2.0))
+    } else {
+        Some((None, 2.0))
+    }
+}
+
 /// The peers beside our own plugin, each in a headless `App`: the tables, `peers.csv` and
 /// `peers_stiffness.csv`, and the peers' lines for the two plots.
 #[cfg(feature = "peers")]
-fn peers_section(table: &mut String, args: &ReportArgs) -> Result<ExtraLines, Box<dyn Error>> {
+fn peers_section(
+    table: &mut String,
+    args: &ReportArgs,
+    cases: &[StiffCase],
+) -> Result<ExtraLines, Box<dyn Error>> {
     use crate::peers::measure::{self, NAMES};
     // Dark, unlike the integrators' palette: black for ours, brown and grey for the peers.
     let colour = |name: &str| {
@@ -1004,39 +1305,71 @@ fn peers_section(table: &mut String, args: &ReportArgs) -> Result<ExtraLines, Bo
         }
     }
 
-    let stiff = measure::stiffness(
-        ks_swept(args.quick),
-        &SWEEP_RATES,
-        TICKS_PER_STIFF_RUN,
-        args.quick,
-    );
+    let stiff = measure::stiffness(cases, args.quick);
     writeln!(
         table,
-        "\n## Stiffness sweep, side by side: {TICKS_PER_STIFF_RUN} fixed steps of the stiff \
-         scene (error in px / ns per App tick)\n"
+        "\n## Stiffness sweep, side by side: the cases of the stiffness sweep (error in px at \
+         the horizon, or beyond k = 1e7 the largest energy growth undamped / ns per App tick), \
+         our tick over the fastest peer's, and the targets (error at most 1e-5 px and a tick \
+         at most the fastest peer's to k = 1e6; 1e-4 px and twice at 1e7; beyond, bounded, no \
+         energy growth, and twice)\n"
     )?;
-    table_head(table, ["k", "rate"], &NAMES)?;
-    let mut csv = String::from("k,rate_hz,engine,ns_per_tick,error_px\n");
-    for chunk in stiff.chunk_by(|a, b| a.k == b.k && a.rate == b.rate) {
-        let cells: Vec<String> = chunk
+    let mut head = stiff_head(&NAMES);
+    head.extend(["tick / fastest peer", "target"]);
+    table_head(table, ["k", "rate"], &head)?;
+    let mut csv = String::from(
+        "k,rate_hz,engine,ns_per_tick,error_px,horizon_s,references_agree_px,energy_growth,bounded\n",
+    );
+    for (case, chunk) in cases
+        .iter()
+        .zip(stiff.chunk_by(|a, b| a.k == b.k && a.rate == b.rate))
+    {
+        let mut cells = horizon_cells(case);
+        cells.extend(chunk.iter().map(|p| {
+            let outcome = match (p.error, p.energy_growth) {
+                _ if !p.bounded => "non-finite".to_owned(),
+                (Some(e), _) => format!("{e:.1e}"),
+                (None, Some(g)) => format!("dE {g:+.0e}"),
+                _ => "?".to_owned(),
+            };
+            format!("{outcome} / {:.0}", p.ns_per_tick)
+        }));
+        let ours = &chunk[0];
+        let fastest_peer = chunk[1..]
             .iter()
-            .map(|p| {
-                let error = p
-                    .error
-                    .map_or("non-finite".to_owned(), |e| format!("{e:.1e}"));
-                format!("{error} / {:.0}", p.ns_per_tick)
-            })
-            .collect();
-        stiffness_row(table, chunk[0].k, chunk[0].rate, &cells)?;
+            .map(|p| p.ns_per_tick)
+            .fold(f64::INFINITY, f64::min);
+        let ratio = ours.ns_per_tick / fastest_peer;
+        cells.push(format!("{ratio:.2}"));
+        cells.push(match stiff_target(case.k) {
+            None => "-".to_owned(),
+            Some((error, tick)) => {
+                let accurate = match error {
+                    Some(bound) => ours.error.is_some_and(|e| e <= bound),
+                    None => ours.bounded && ours.energy_growth.is_some_and(|g| g <= 0.0),
+                };
+                match (accurate, ratio <= tick) {
+                    (true, true) => "met".to_owned(),
+                    (false, true) => "not met: error".to_owned(),
+                    (true, false) => "not met: tick".to_owned(),
+                    (false, false) => "not met: error and tick".to_owned(),
+                }
+            }
+        });
+        stiffness_row(table, case.k, case.rate, &cells)?;
         for p in chunk {
             writeln!(
                 csv,
-                "{},{},{},{},{}",
+                "{},{},{},{},{},{},{},{},{}",
                 p.k,
                 p.rate,
                 p.contender,
                 p.ns_per_tick,
-                optional(p.error)
+                optional(p.error),
+                case.seconds(),
+                optional(case.reference.map(|r| r.agreement)),
+                optional(p.energy_growth),
+                p.bounded
             )?;
         }
     }

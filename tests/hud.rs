@@ -39,7 +39,7 @@ fn lines_say_what_the_readings_hold() {
     let r = readings();
     assert_eq!(
         HudLine::Integrator.text(&r),
-        "integrator auto: 3 rk4 substeps/step, 0 fall-backs to implicit"
+        "integrator auto: 3 dop853 substeps/step, 0 fall-backs to implicit"
     );
     assert!(
         HudLine::Clock

@@ -379,13 +379,143 @@ fn auto_takes_more_substeps_for_a_stiffer_band_and_falls_back_beyond_its_budget(
     assert!(run.fallbacks > 0 && run.fallbacks <= 640);
 }
 
+/// `auto`'s engine with one Taylor step of order `order` per fixed step: a tolerance nothing
+/// exceeds.
+fn one_step_per_fixed_step(order: usize) -> AutoSettings {
+    AutoSettings {
+        tolerance: f64::MAX,
+        order,
+        max_substeps: u32::MAX,
+    }
+}
+
+#[test]
+fn autos_engine_converges_at_the_order_of_its_series_on_the_diagonal_pull() {
+    // From order 4 up a step may stop early (see `taylor`), which a tolerance nothing exceeds
+    // would always allow; the stiff fixtures hold the higher orders.
+    for order in [2, 3, 4] {
+        let errors: Vec<f64> = [0.2, 0.1, 0.05]
+            .iter()
+            .map(|&dt| {
+                let scenario = Scenario::named("diagonal").unwrap();
+                let mass = scenario.params.mass_properties().unwrap();
+                let mut run = Run::of(&scenario, Integrator::Auto, dt).unwrap();
+                run.sim.auto = one_step_per_fixed_step(order);
+                let mut worst: f64 = 0.0;
+                for _ in 0..(2.0 / dt).round() as u64 {
+                    run.advance().unwrap();
+                    assert_eq!(run.last_step.substeps, 1);
+                    let exact = diagonal_exact(run.time());
+                    worst = worst.max(pose_error(&run.sim.state, &exact, &mass));
+                }
+                worst
+            })
+            .collect();
+        for pair in errors.windows(2) {
+            let observed = (pair[0] / pair[1]).log2();
+            assert!(
+                (observed - order as f64).abs() < 0.5,
+                "order {order}: errors {errors:?}, observed order {observed}"
+            );
+        }
+    }
+}
+
+/// The stiff drags' reference states, from tests/fixtures/stiff_references.py (SciPy's DOP853
+/// at a tolerance of 1e-13, checked against 3e-14): (k, rate, ticks, state, agreement).
+fn stiff_references() -> Vec<(f64, f64, u64, BodyState, f64)> {
+    include_str!("fixtures/stiff_references.csv")
+        .lines()
+        .skip(1)
+        .map(|line| {
+            let v: Vec<f64> = line.split(',').map(|f| f.parse().unwrap()).collect();
+            let mut state = BodyState::at_rest(DVec2::new(v[4], v[5]));
+            state.angular.orientation = v[6];
+            state.linear.velocity = DVec2::new(v[7], v[8]);
+            state.angular.angular_velocity = v[9];
+            (v[0], v[1], v[2] as u64, state, v[10])
+        })
+        .collect()
+}
+
+#[test]
+fn auto_meets_the_stiff_targets_at_each_horizon_without_falling_back() {
+    let references = stiff_references();
+    assert_eq!(references.len(), 10);
+    for (k, rate, ticks, reference, agreement) in references {
+        let mut scenario = Scenario::named("stiff").unwrap();
+        scenario.params.stiffness = k;
+        let mass = scenario.params.mass_properties().unwrap();
+        let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
+        run.advance_by(ticks).unwrap();
+        let error = pose_error(&run.sim.state, &reference, &mass);
+        // The targets of README's stiffness table; the fixture's two solutions agree to well
+        // within them.
+        let target = if k <= 1e6 { 1e-5 } else { 1e-4 };
+        assert!(agreement < target / 2.0, "k {k:e}: references {agreement}");
+        assert!(
+            error <= target,
+            "k {k:e} at {rate} Hz: {error} px after {ticks} steps"
+        );
+        assert_eq!(run.fallbacks, 0, "k {k:e} at {rate} Hz");
+    }
+}
+
+#[test]
+fn beyond_every_horizon_auto_falls_back_counts_it_and_never_gains_energy() {
+    for k in [1e8, 1e9, 1e12] {
+        for rate in [100.0, 64.0] {
+            let mut scenario = Scenario::named("undamped").unwrap();
+            scenario.params.stiffness = k;
+            let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
+            let e0 = run.sim.energy();
+            let mut previous = e0;
+            let steps = (10.0 * rate) as u64;
+            for _ in 0..steps {
+                run.advance().unwrap();
+                let e = run.sim.energy();
+                assert!(
+                    e <= previous,
+                    "k {k:e} at {rate} Hz, step {}: {e} > {previous}",
+                    run.step
+                );
+                previous = e;
+                assert!(run.sim.state.is_sane());
+            }
+            // Every step fell back (the budget cannot afford any), and each was counted.
+            assert_eq!(run.fallbacks, steps, "k {k:e} at {rate} Hz");
+        }
+    }
+}
+
+#[test]
+fn the_ledger_balances_on_stiff_drags_where_auto_did_not_fall_back() {
+    for (k, rate, ticks, _, _) in stiff_references() {
+        let mut scenario = Scenario::named("stiff").unwrap();
+        scenario.params.stiffness = k;
+        let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
+        for _ in 0..ticks {
+            run.advance().unwrap();
+            let residual = run.ledger.residual(run.sim.energy()).abs();
+            assert!(
+                residual <= 1e-6 * run.ledger.throughput(),
+                "k {k:e} step {}: residual {residual} of {}",
+                run.step,
+                run.ledger.throughput()
+            );
+        }
+        assert_eq!(run.fallbacks, 0);
+    }
+}
+
 #[test]
 fn a_tighter_budget_makes_auto_fall_back_sooner() {
     let mut scenario = Scenario::named("stiff").unwrap();
     scenario.params.stiffness = 1e5;
     let mut run = Run::of(&scenario, Integrator::Auto, 0.01).unwrap();
+    // k = 1e5 at 100 Hz needs about ten Taylor steps a fixed step.
     run.sim.auto = AutoSettings {
-        max_substeps: 4,
+        max_substeps: 2,
         ..AutoSettings::default()
     };
     run.advance_by(10).unwrap();

@@ -24,5 +24,11 @@ wasm-bindgen --target web --out-dir "$site/pkg" --no-typescript \
     "$CARGO_TARGET_DIR/wasm32-unknown-unknown/wasm-release/rubber_band_box.wasm"
 cp assets/web/index.html "$site/"
 wasm="$site/pkg/rubber_band_box_bg.wasm"
-echo "site: $site ($(stat -c %s "$wasm") bytes of wasm, $(gzip -9 -c "$wasm" | wc -c) gzipped)"
+# The pre-compressed copies a static server can send instead (README, "Web").
+if command -v node >/dev/null; then
+    node .ci/web/compress.mjs "$wasm" "$site/pkg/rubber_band_box.js"
+else
+    gzip -9 -k "$wasm" "$site/pkg/rubber_band_box.js"
+fi
+echo "site: $site ($(stat -c %s "$wasm") bytes of wasm, $(stat -c %s "$wasm.gz") gzipped)"
 echo "serve it with: python3 -m http.server --directory $site 8000"

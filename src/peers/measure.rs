@@ -8,7 +8,7 @@ use super::ours::Ours;
 use super::rapier::Rapier;
 use super::{Contender, PeerRun};
 use crate::physics::{BodyState, Scenario};
-use crate::report::{WorkScene, median, pose_error, stiff_scenario, work_reference, work_scenes};
+use crate::report::{StiffCase, WorkScene, median, pose_error, work_reference, work_scenes};
 
 /// The contenders' names, ours first (the ratios are to ours).
 pub const NAMES: [&str; 3] = [Ours::NAME, Avian::NAME, Rapier::NAME];
@@ -38,9 +38,15 @@ pub struct PeerPoint {
     pub ns_per_tick: f64,
 }
 
-/// A scripted run's accuracy: the final state, and the largest relative change of the energy
-/// (None when the run starts with no energy to compare with).
-fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> (BodyState, Option<f64>) {
+/// How a scripted run ended: its final state, the largest relative change of the energy, and
+/// its largest relative growth (both None when the run starts with no energy to compare with).
+struct Accuracy {
+    state: BodyState,
+    drift: Option<f64>,
+    growth: Option<f64>,
+}
+
+fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> Accuracy {
     let mut run = PeerRun::<C>::of(scenario, rate);
     let energy = |run: &mut PeerRun<C>| {
         let state = run.state();
@@ -51,11 +57,19 @@ fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> (BodySt
     };
     let e0 = energy(&mut run);
     let mut drift: f64 = 0.0;
+    let mut growth = f64::NEG_INFINITY;
     for _ in 0..steps {
         run.advance();
-        drift = drift.max((energy(&mut run) - e0).abs());
+        let change = energy(&mut run) - e0;
+        drift = drift.max(change.abs());
+        growth = growth.max(change);
     }
-    (run.state(), (e0 > 0.0).then_some(drift / e0))
+    let relative = |v: f64| (e0 > 0.0).then_some(v / e0);
+    Accuracy {
+        state: run.state(),
+        drift: relative(drift),
+        growth: relative(growth),
+    }
 }
 
 /// Ticks timed at least per repetition: a short scene is run again from the start until
@@ -95,7 +109,7 @@ fn point<C: Contender>(
 ) -> PeerPoint {
     let scenario = &scene.scenario;
     let steps = (scene.horizon * rate).round() as u64;
-    let (state, drift) = accuracy::<C>(scenario, rate, steps);
+    let Accuracy { state, drift, .. } = accuracy::<C>(scenario, rate, steps);
     let mass = scenario.params.mass_properties().expect("valid");
     PeerPoint {
         contender: C::NAME,
@@ -126,53 +140,51 @@ pub fn side_by_side(quick: bool) -> Vec<PeerPoint> {
     points
 }
 
-/// One contender at one band stiffness: ten ticks of the stiff scene.
+/// One contender on one case of the stiffness sweep.
 #[derive(Clone, Debug)]
 pub struct PeerStiffPoint {
     pub contender: &'static str,
     pub k: f64,
     pub rate: f64,
     pub ns_per_tick: f64,
+    /// At the case's horizon, against its reference; None if non-finite or beyond any
+    /// horizon.
     pub error: Option<f64>,
+    /// Beyond any horizon: the largest (E − E0) / E0 of the undamped run; None if non-finite.
+    pub energy_growth: Option<f64>,
+    /// Whether every state of the run stayed finite.
+    pub bounded: bool,
 }
 
-fn stiff_point<C: Contender>(
-    scenario: &Scenario,
-    reference: &BodyState,
-    rate: f64,
-    ticks: u64,
-    reps: usize,
-) -> PeerStiffPoint {
-    let (state, _) = accuracy::<C>(scenario, rate, ticks);
-    let mass = scenario.params.mass_properties().expect("valid");
+fn stiff_point<C: Contender>(case: &StiffCase, reps: usize) -> PeerStiffPoint {
+    let Accuracy { state, growth, .. } = accuracy::<C>(&case.scenario, case.rate, case.ticks);
+    let mass = case.scenario.params.mass_properties().expect("valid");
+    let bounded = state.is_finite() && growth.is_none_or(f64::is_finite);
     PeerStiffPoint {
         contender: C::NAME,
-        k: scenario.params.stiffness,
-        rate,
-        ns_per_tick: ns_per_tick::<C>(scenario, rate, ticks, reps),
-        error: state
-            .is_finite()
-            .then(|| pose_error(&state, reference, &mass)),
+        k: case.k,
+        rate: case.rate,
+        ns_per_tick: ns_per_tick::<C>(&case.scenario, case.rate, case.ticks, reps),
+        error: case
+            .reference
+            .filter(|_| bounded)
+            .map(|r| pose_error(&state, &r.state, &mass)),
+        energy_growth: growth.filter(|_| case.reference.is_none() && bounded),
+        bounded,
     }
 }
 
-/// The contenders across the stiffness sweep, at the sweep's `ks` and rates.
-pub fn stiffness(ks: &[f64], rates: &[f64], ticks: u64, quick: bool) -> Vec<PeerStiffPoint> {
+/// The contenders across the stiffness sweep's cases.
+pub fn stiffness(cases: &[StiffCase], quick: bool) -> Vec<PeerStiffPoint> {
     let reps = reps(quick);
-    let mut points = Vec::new();
-    for &rate in rates {
-        for &k in ks {
-            let (scenario, reference) = stiff_scenario(k, rate, ticks);
-            points.push(stiff_point::<Ours>(
-                &scenario, &reference, rate, ticks, reps,
-            ));
-            points.push(stiff_point::<Avian>(
-                &scenario, &reference, rate, ticks, reps,
-            ));
-            points.push(stiff_point::<Rapier>(
-                &scenario, &reference, rate, ticks, reps,
-            ));
-        }
-    }
-    points
+    cases
+        .iter()
+        .flat_map(|case| {
+            [
+                stiff_point::<Ours>(case, reps),
+                stiff_point::<Avian>(case, reps),
+                stiff_point::<Rapier>(case, reps),
+            ]
+        })
+        .collect()
 }

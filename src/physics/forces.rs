@@ -166,6 +166,26 @@ impl ForceModel {
         )
     }
 
+    /// The band's stiffest mode: sqrt(k (1/m + |r|²/I)), 2·sqrt(k/m) for a square pulled at
+    /// a corner (zero without a band).
+    pub fn band_rate(&self) -> f64 {
+        let mass = &self.mass;
+        self.band.map_or(0.0, |band| {
+            let arm_squared = band.local_point.length_squared();
+            (self.stiffness * (mass.inverse_mass() + arm_squared * mass.inverse_inertia())).sqrt()
+        })
+    }
+
+    /// The fastest rate in the motion at `state`: the band's stiffest mode, the spin, the
+    /// damping rates.
+    pub fn fastest_rate(&self, state: &BodyState) -> f64 {
+        let (linear_rate, angular_rate) = self.damping_rates();
+        self.band_rate()
+            .max(linear_rate)
+            .max(angular_rate)
+            .max(state.angular.angular_velocity.abs())
+    }
+
     /// The rate at which damping takes energy out: b |v|² + c I ω² (never negative).
     pub fn damping_power(&self, velocity: DVec2, angular_velocity: f64) -> f64 {
         self.linear_damping * velocity.length_squared()

@@ -32,8 +32,8 @@ pub enum Integrator {
     Implicit,
     /// Exactly the tutorial's per-frame update, in its order, in per-second units.
     Seed,
-    /// RK4 substeps chosen per step for a target error, within a budget; `implicit` where the
-    /// budget binds (see [`super::auto`]). The game's default.
+    /// Error-controlled Taylor-series steps within each step, within a budget; `implicit`
+    /// where the budget binds (see [`super::auto`]). The game's default.
     #[default]
     Auto,
 }
@@ -65,7 +65,8 @@ impl Integrator {
     pub fn order(self) -> u32 {
         match self {
             Self::Verlet => 2,
-            Self::Rk4 | Self::Auto => 4,
+            Self::Rk4 => 4,
+            Self::Auto => 20,
             _ => 1,
         }
     }
@@ -97,25 +98,39 @@ impl Integrator {
         auto: &AutoSettings,
     ) -> StepInfo {
         let before = *state;
-        match self {
-            Self::Euler => euler(state, &model.mass, start.total(), dt),
-            Self::Symplectic => symplectic_euler(state, &model.mass, start.total(), dt),
-            Self::Verlet => velocity_verlet(state, model, start, dt),
+        let evaluations = match self {
+            Self::Euler => {
+                euler(state, &model.mass, start.total(), dt);
+                1
+            }
+            Self::Symplectic => {
+                symplectic_euler(state, &model.mass, start.total(), dt);
+                1
+            }
+            Self::Verlet => {
+                velocity_verlet(state, model, start, dt);
+                2
+            }
             Self::Rk4 => {
                 let dissipated = runge_kutta_4(state, model, start, dt);
                 return StepInfo {
                     dissipated,
+                    evaluations: 4,
                     ..StepInfo::SINGLE
                 };
             }
             Self::Implicit => backward_euler(state, model, dt),
-            Self::Seed => tutorial_update(state, model, start, dt),
-            Self::Auto => {
-                return auto_step(state, model, start, dt, auto, runge_kutta_4, backward_euler);
+            Self::Seed => {
+                tutorial_update(state, model, start, dt);
+                1
             }
-        }
+            Self::Auto => {
+                return auto_step(state, model, dt, auto, backward_euler);
+            }
+        };
         StepInfo {
             dissipated: model.dissipated_by_trapezoid(&before, state, dt),
+            evaluations,
             ..StepInfo::SINGLE
         }
     }
@@ -275,8 +290,9 @@ fn runge_kutta_4(state: &mut BodyState, model: &ForceModel, start: Forces, dt: f
 /// with a positive definite (Gauss-Newton) Hessian and a backtracking line search always
 /// reaches a finite minimiser: the step is stable whatever k and h are. Being L-stable, it
 /// damps the stiff band's oscillation instead of leaving it ringing (as the implicit midpoint
-/// rule would); the price is first order.
-fn backward_euler(state: &mut BodyState, model: &ForceModel, dt: f64) {
+/// rule would); the price is first order. Returns the force-law evaluations it made (one per
+/// Newton iteration and one per energy the line search tried).
+fn backward_euler(state: &mut BodyState, model: &ForceModel, dt: f64) -> u32 {
     let (linear_rate, angular_rate) = model.damping_rates();
     let mass = &model.mass;
     let decay = DVec3::new(
@@ -289,6 +305,7 @@ fn backward_euler(state: &mut BodyState, model: &ForceModel, dt: f64) {
     let v0 = generalized_velocity(state);
     let predicted = q0 + v0 * dt / decay;
     let h2 = dt * dt;
+    let mut evaluations = 1;
 
     let solved = match model.band {
         None => predicted,
@@ -307,6 +324,7 @@ fn backward_euler(state: &mut BodyState, model: &ForceModel, dt: f64) {
             let mut q = predicted;
             let mut e = energy(q);
             for _ in 0..MAX_NEWTON_ITERATIONS {
+                evaluations += 1;
                 let (stretch, arm) = stretch_at(q);
                 let lever = arm.perp();
                 let jacobian_t_stretch = DVec3::new(stretch.x, stretch.y, lever.dot(stretch));
@@ -330,6 +348,7 @@ fn backward_euler(state: &mut BodyState, model: &ForceModel, dt: f64) {
                 let mut accepted = false;
                 for _ in 0..MAX_LINE_SEARCH_HALVINGS {
                     let candidate = q + direction * length;
+                    evaluations += 1;
                     let candidate_energy = energy(candidate);
                     if candidate_energy <= e + 1e-4 * length * slope {
                         q = candidate;
@@ -354,6 +373,7 @@ fn backward_euler(state: &mut BodyState, model: &ForceModel, dt: f64) {
     state.angular.orientation = solved.z;
     state.linear.velocity = v1.truncate();
     state.angular.angular_velocity = v1.z;
+    evaluations
 }
 
 const MAX_NEWTON_ITERATIONS: usize = 50;

@@ -5,12 +5,14 @@
 
 pub mod auto;
 pub mod body;
+pub mod dop853;
 pub mod forces;
 pub mod integrators;
 pub mod ledger;
 pub mod scenario;
 pub mod scene;
 pub mod simulation;
+pub mod taylor;
 
 pub use auto::{AutoSettings, StepInfo};
 pub use body::{AngularState, BodyState, LinearState, MassProperties, rotate};
