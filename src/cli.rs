@@ -83,8 +83,8 @@ pub struct SimulateArgs {
     /// `auto`: target error per Taylor step (px) [default: 1e-10].
     #[arg(long, value_parser = positive, allow_hyphen_values = true)]
     pub auto_tolerance: Option<f64>,
-    /// `auto`: the order of its Taylor series, 2 to 32 [default: 20].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(2..=32))]
+    /// `auto`: the order of its Taylor series, 2 to 24 [default: 20].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(2..=24))]
     pub auto_order: Option<u32>,
     /// `auto`: most Taylor steps per fixed step before falling back to `implicit` [default: 200].
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]

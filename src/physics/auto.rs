@@ -71,7 +71,7 @@ pub fn auto_step(
             *state = done.state;
             StepInfo {
                 substeps: done.steps,
-                evaluations: done.steps * settings.order.clamp(2, taylor::MAX_ORDER) as u32,
+                evaluations: done.orders,
                 fell_back: false,
                 dissipated: done.dissipated,
             }

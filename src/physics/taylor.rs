@@ -19,7 +19,7 @@ use super::body::{AngularState, BodyState, LinearState};
 use super::forces::ForceModel;
 
 /// The highest order the engine can be asked for.
-pub const MAX_ORDER: usize = 32;
+pub const MAX_ORDER: usize = 24;
 
 /// The components: x, y, cos θ, sin θ, θ, vx, vy, ω, and the energy damping took out.
 const N: usize = 9;
@@ -47,6 +47,9 @@ pub struct Integrated {
     pub state: BodyState,
     /// Taylor steps taken.
     pub steps: u32,
+    /// The orders of the steps, summed: the work done, each order about one evaluation of
+    /// the equations of motion.
+    pub orders: u32,
     /// Energy damping took out, its Taylor series integrated with the motion's.
     pub dissipated: f64,
 }
@@ -137,6 +140,7 @@ pub fn integrate(
     let mut to_anchor_y: Series = [0.0; MAX_ORDER + 1];
     let mut remaining = dt;
     let mut steps = 0u32;
+    let mut orders = 0u32;
     loop {
         if steps >= budget {
             return None;
@@ -158,6 +162,9 @@ pub fn integrate(
             h * SAFETY
         };
         let mut terms: Series = [0.0; MAX_ORDER + 1];
+        // (remaining / SAFETY)^top, the step that would end the fixed step, as a power.
+        let reach_step = remaining / SAFETY;
+        let mut reach_power = 1.0;
         // The series stops early where a lower order already reaches the end of the fixed
         // step (a soft band: a few orders instead of all of them).
         let mut used = order;
@@ -203,15 +210,26 @@ pub fn integrate(
                 x[top], yy[top], c[top], s[top], theta[top], vx[top], vy[top], om[top], 0.0,
             ];
             terms[top] = weighted_max(&weights, |i| coefficients[i].abs());
+            // Whether the last two terms are within the tolerance at the end of the fixed
+            // step: Jorba and Zou's step reaches it (compared without roots).
+            reach_power *= reach_step;
             if (MIN_ORDER..order).contains(&top)
-                && step_allowed(&terms, top).min(longest) >= remaining
+                && longest >= remaining
+                && terms[top] * reach_power <= tolerance
+                && terms[top - 1] * reach_power <= tolerance * reach_step
             {
                 used = top;
                 break;
             }
         }
-        let mut h = step_allowed(&terms, used).min(longest);
-        let last = h >= remaining;
+        orders += used as u32;
+        let early = used < order;
+        let mut h = if early {
+            remaining
+        } else {
+            step_allowed(&terms, used).min(longest)
+        };
+        let last = early || h >= remaining;
         if last {
             h = remaining;
         }
@@ -238,6 +256,7 @@ pub fn integrate(
             },
         },
         steps,
+        orders,
         dissipated: y[8],
     })
 }
