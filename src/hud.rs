@@ -97,7 +97,7 @@ impl HudLine {
                     let latest = if r.capped {
                         "budget capped: implicit".to_owned()
                     } else {
-                        format!("{} dop853 substeps/step", r.substeps)
+                        format!("{} taylor steps/step", r.substeps)
                     };
                     line += &format!(": {latest}, {} fall-backs to implicit", r.fallbacks);
                 }

@@ -1284,6 +1284,21 @@ fn peers_section(
         }
     }
     fs::write(args.out.join("peers.csv"), csv)?;
+    writeln!(table)?;
+    for rate in measure::RATES {
+        let empty = measure::empty_app_ns_per_tick(rate, args.quick);
+        let seed = points
+            .iter()
+            .find(|p| p.scene == "seed" && p.rate == rate && p.contender == NAMES[0]);
+        if let Some(seed) = seed {
+            writeln!(
+                table,
+                "At {rate} Hz an empty `App` (the same plugins and clock, no physics) ticks in \
+                 {empty:.0} ns: our seed-scene tick is {:.2} times that.",
+                seed.ns_per_tick / empty
+            )?;
+        }
+    }
     let mut work_lines = Vec::new();
     for scene in work_scenes() {
         let scene = scene.scenario.name;

@@ -39,7 +39,7 @@ fn lines_say_what_the_readings_hold() {
     let r = readings();
     assert_eq!(
         HudLine::Integrator.text(&r),
-        "integrator auto: 3 dop853 substeps/step, 0 fall-backs to implicit"
+        "integrator auto: 3 taylor steps/step, 0 fall-backs to implicit"
     );
     assert!(
         HudLine::Clock
@@ -70,7 +70,7 @@ fn lines_say_what_the_readings_hold() {
     };
     assert!(HudLine::Clock.text(&paused).contains("PAUSED"));
     let solver = HudLine::Integrator.text(&paused);
-    assert!(solver.starts_with("integrator rk4") && !solver.contains("substeps"));
+    assert!(solver.starts_with("integrator rk4") && !solver.contains("steps/step"));
     assert!(solver.contains("euler DIVERGED at step 7"));
 }
 

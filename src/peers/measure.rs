@@ -6,7 +6,7 @@ use std::time::{Duration, Instant};
 use super::avian::Avian;
 use super::ours::Ours;
 use super::rapier::Rapier;
-use super::{Contender, PeerRun};
+use super::{Contender, PeerRun, headless_app, start};
 use crate::physics::{BodyState, Scenario};
 use crate::report::{StiffCase, WorkScene, median, pose_error, work_reference, work_scenes};
 
@@ -76,13 +76,13 @@ fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> Accurac
 /// this many of its ticks have been timed.
 const TIMED_TICKS: u64 = 100;
 
-/// The time per tick over the scored ticks of fresh runs, less each run's first tick, where
+/// The time per tick over `timed` ticks of fresh runs after each run's first tick, where
 /// every engine builds its own structures (about 1 ms for avian2d, 0.5 ms for rapier, 0.1 ms
 /// for ours): a game pays that once, not every tick. The `App`'s construction is untimed, and
 /// one untimed run warms caches and allocators first.
-fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, steps: u64, reps: usize) -> f64 {
-    PeerRun::<C>::of(scenario, rate).advance_by(steps);
-    let timed = steps.saturating_sub(1).max(1);
+fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, timed: u64, reps: usize) -> f64 {
+    let timed = timed.max(1);
+    PeerRun::<C>::of(scenario, rate).advance_by(timed + 1);
     let runs = TIMED_TICKS.div_ceil(timed);
     let times = (0..reps)
         .map(|_| {
@@ -99,6 +99,17 @@ fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, steps: u64, reps: u
         })
         .collect();
     median(times)
+}
+
+/// `scenario` with every drag one fixed step later: the box rests through the first tick (the
+/// engines' set-up, untimed), so that the ticks timed are exactly those of the original run.
+fn one_tick_later(scenario: &Scenario, rate: f64) -> Scenario {
+    let mut later = scenario.clone();
+    for drag in &mut later.drags {
+        drag.0 += 1.0 / rate;
+        drag.1 += 1.0 / rate;
+    }
+    later
 }
 
 fn point<C: Contender>(
@@ -120,7 +131,7 @@ fn point<C: Contender>(
             .is_finite()
             .then(|| pose_error(&state, reference, &mass)),
         energy_drift: drift.filter(|_| scene.energy_invariant),
-        ns_per_tick: ns_per_tick::<C>(scenario, rate, steps, reps),
+        ns_per_tick: ns_per_tick::<C>(scenario, rate, steps.saturating_sub(1), reps),
     }
 }
 
@@ -164,7 +175,14 @@ fn stiff_point<C: Contender>(case: &StiffCase, reps: usize) -> PeerStiffPoint {
         contender: C::NAME,
         k: case.k,
         rate: case.rate,
-        ns_per_tick: ns_per_tick::<C>(&case.scenario, case.rate, case.ticks, reps),
+        // Short horizons (one or two ticks at k = 1e7) leave no tick to time after the first:
+        // time the case's own ticks one tick later instead.
+        ns_per_tick: ns_per_tick::<C>(
+            &one_tick_later(&case.scenario, case.rate),
+            case.rate,
+            case.ticks,
+            reps,
+        ),
         error: case
             .reference
             .filter(|_| bounded)
@@ -187,4 +205,22 @@ pub fn stiffness(cases: &[StiffCase], quick: bool) -> Vec<PeerStiffPoint> {
             ]
         })
         .collect()
+}
+
+/// The floor under every contender's tick: an `App` with the same plugins and clock as theirs
+/// but no physics at all, timed as they are.
+pub fn empty_app_ns_per_tick(rate: f64, quick: bool) -> f64 {
+    let times = (0..reps(quick))
+        .map(|_| {
+            let mut app = headless_app(rate);
+            start(&mut app);
+            app.update();
+            let begin = Instant::now();
+            for _ in 0..TIMED_TICKS {
+                app.update();
+            }
+            begin.elapsed().as_nanos() as f64 / TIMED_TICKS as f64
+        })
+        .collect();
+    median(times)
 }
