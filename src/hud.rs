@@ -97,7 +97,11 @@ impl HudLine {
                     let latest = if r.capped {
                         "budget capped: implicit".to_owned()
                     } else {
-                        format!("{} taylor steps/step", r.substeps)
+                        format!(
+                            "{} taylor step{}/step",
+                            r.substeps,
+                            if r.substeps == 1 { "" } else { "s" }
+                        )
                     };
                     line += &format!(": {latest}, {} fall-backs to implicit", r.fallbacks);
                 }

@@ -355,7 +355,7 @@ pub fn integrate(
     let expected = (model.fastest_rate(state) * dt / FIRST_SUBSTEP_LAMBDA_H)
         .ceil()
         .max(1.0);
-    if !(expected <= f64::from(budget)) {
+    if expected.is_nan() || expected > f64::from(budget) {
         return None;
     }
     let rhs = Rhs::of(model);

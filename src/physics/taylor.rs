@@ -86,7 +86,8 @@ pub fn integrate(
     settings: &TaylorSettings,
 ) -> Option<Integrated> {
     let budget = settings.max_steps;
-    if !(steps_expected(state, model, dt) <= f64::from(budget)) {
+    let expected = steps_expected(state, model, dt);
+    if expected.is_nan() || expected > f64::from(budget) {
         return None;
     }
     let order = settings.order.clamp(2, MAX_ORDER);
@@ -264,10 +265,14 @@ pub fn integrate(
 /// The n-th Taylor coefficient of a square: Σ a[j] a[n − j], each pair once.
 fn square(a: &Series, n: usize) -> f64 {
     let mut twice = 0.0;
-    for j in 0..(n + 1) / 2 {
+    for j in 0..n.div_ceil(2) {
         twice += a[j] * a[n - j];
     }
-    let middle = if n % 2 == 0 { a[n / 2] * a[n / 2] } else { 0.0 };
+    let middle = if n.is_multiple_of(2) {
+        a[n / 2] * a[n / 2]
+    } else {
+        0.0
+    };
     2.0 * twice + middle
 }
 
