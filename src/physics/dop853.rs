@@ -13,174 +13,34 @@
 
 use bevy::math::DVec2;
 
-use super::body::{AngularState, BodyState, LinearState};
+use super::body::BodyState;
+use super::engine_state::{
+    COMPONENTS, Components, DISSIPATED, RELATIVE_TOLERANCE, error_weights, pack, unpack,
+};
 use super::forces::{ForceModel, Forces};
 
 const STAGES: usize = 12;
 
-/// The components integrated: x, y, cos θ, sin θ, θ, vx, vy, ω, and the energy damping took out.
-const N: usize = 9;
-type Vector = [f64; N];
+const N: usize = COMPONENTS;
+type Vector = Components;
 
 // The tableau, as SciPy's `dop853_coefficients.py` gives it (printed to f64 by a script);
 // the nodes c are not needed: the scene's forces do not depend on time within a step.
 /// Row i: the coefficients of stages 0..i in stage i (explicit: zero on and above the diagonal).
+#[rustfmt::skip]
 const A: [[f64; STAGES]; STAGES] = [
     [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
-    [
-        0.05260015195876773,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        0.0197250569845379,
-        0.0591751709536137,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        0.02958758547680685,
-        0.0,
-        0.08876275643042054,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        0.2413651341592667,
-        0.0,
-        -0.8845494793282861,
-        0.924834003261792,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        0.037037037037037035,
-        0.0,
-        0.0,
-        0.17082860872947386,
-        0.12546768756682242,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        0.037109375,
-        0.0,
-        0.0,
-        0.17025221101954405,
-        0.06021653898045596,
-        -0.017578125,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        0.03709200011850479,
-        0.0,
-        0.0,
-        0.17038392571223998,
-        0.10726203044637328,
-        -0.015319437748624402,
-        0.008273789163814023,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        0.6241109587160757,
-        0.0,
-        0.0,
-        -3.3608926294469414,
-        -0.868219346841726,
-        27.59209969944671,
-        20.154067550477894,
-        -43.48988418106996,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        0.47766253643826434,
-        0.0,
-        0.0,
-        -2.4881146199716677,
-        -0.590290826836843,
-        21.230051448181193,
-        15.279233632882423,
-        -33.28821096898486,
-        -0.020331201708508627,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        -0.9371424300859873,
-        0.0,
-        0.0,
-        5.186372428844064,
-        1.0914373489967295,
-        -8.149787010746927,
-        -18.52006565999696,
-        22.739487099350505,
-        2.4936055526796523,
-        -3.0467644718982196,
-        0.0,
-        0.0,
-    ],
-    [
-        2.273310147516538,
-        0.0,
-        0.0,
-        -10.53449546673725,
-        -2.0008720582248625,
-        -17.9589318631188,
-        27.94888452941996,
-        -2.8589982771350235,
-        -8.87285693353063,
-        12.360567175794303,
-        0.6433927460157636,
-        0.0,
-    ],
+    [0.05260015195876773, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [0.0197250569845379, 0.0591751709536137, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [0.02958758547680685, 0.0, 0.08876275643042054, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [0.2413651341592667, 0.0, -0.8845494793282861, 0.924834003261792, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [0.037037037037037035, 0.0, 0.0, 0.17082860872947386, 0.12546768756682242, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [0.037109375, 0.0, 0.0, 0.17025221101954405, 0.06021653898045596, -0.017578125, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [0.03709200011850479, 0.0, 0.0, 0.17038392571223998, 0.10726203044637328, -0.015319437748624402, 0.008273789163814023, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [0.6241109587160757, 0.0, 0.0, -3.3608926294469414, -0.868219346841726, 27.59209969944671, 20.154067550477894, -43.48988418106996, 0.0, 0.0, 0.0, 0.0],
+    [0.47766253643826434, 0.0, 0.0, -2.4881146199716677, -0.590290826836843, 21.230051448181193, 15.279233632882423, -33.28821096898486, -0.020331201708508627, 0.0, 0.0, 0.0],
+    [-0.9371424300859873, 0.0, 0.0, 5.186372428844064, 1.0914373489967295, -8.149787010746927, -18.52006565999696, 22.739487099350505, 2.4936055526796523, -3.0467644718982196, 0.0, 0.0],
+    [2.273310147516538, 0.0, 0.0, -10.53449546673725, -2.0008720582248625, -17.9589318631188, 27.94888452941996, -2.8589982771350235, -8.87285693353063, 12.360567175794303, 0.6433927460157636, 0.0],
 ];
 /// The eighth-order weights (row 12 of the extended tableau).
 const B: [f64; STAGES] = [
@@ -234,10 +94,6 @@ const SAFETY: f64 = 0.9;
 const MIN_FACTOR: f64 = 0.2;
 const MAX_FACTOR: f64 = 10.0;
 const ERROR_EXPONENT: f64 = -1.0 / 8.0;
-
-/// The error allowed per unit of a component's size, on top of the tolerance: some thousand
-/// times f64's round-off.
-const RELATIVE_TOLERANCE: f64 = 1e-13;
 
 /// The right-hand side, with every constant of the force model unpacked once per fixed step.
 struct Rhs {
@@ -298,34 +154,6 @@ impl Rhs {
     }
 }
 
-fn pack(state: &BodyState) -> Vector {
-    let (sin, cos) = state.angular.orientation.sin_cos();
-    [
-        state.linear.position.x,
-        state.linear.position.y,
-        cos,
-        sin,
-        state.angular.orientation,
-        state.linear.velocity.x,
-        state.linear.velocity.y,
-        state.angular.angular_velocity,
-        0.0,
-    ]
-}
-
-fn unpack(y: &Vector) -> BodyState {
-    BodyState {
-        linear: LinearState {
-            position: DVec2::new(y[0], y[1]),
-            velocity: DVec2::new(y[5], y[6]),
-        },
-        angular: AngularState {
-            orientation: y[4],
-            angular_velocity: y[7],
-        },
-    }
-}
-
 /// What one fixed step of the engine did.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Integrated {
@@ -362,23 +190,7 @@ pub fn integrate(
     let mut y = pack(state);
     let mut f = rhs.rate_with(&y, start.applied.force, start.applied.torque);
 
-    // Error weights: positions in px, the orientation (and its unit vector) as the
-    // displacement of the farthest corner, velocities over the time in which they move the
-    // box by that much (the faster of the motion's rate and the fixed step), none for the
-    // energy quadrature.
-    let reach = 0.5 * model.mass.size().length();
-    let rate = model.fastest_rate(state).max(1.0 / dt);
-    let weights: Vector = [
-        1.0,
-        1.0,
-        reach,
-        reach,
-        reach,
-        1.0 / rate,
-        1.0 / rate,
-        reach / rate,
-        0.0,
-    ];
+    let weights = error_weights(state, model, dt);
 
     let mut remaining = dt;
     let mut h = dt / expected;
@@ -474,6 +286,6 @@ pub fn integrate(
     Some(Integrated {
         state: unpack(&y),
         attempts,
-        dissipated: y[8],
+        dissipated: y[DISSIPATED],
     })
 }

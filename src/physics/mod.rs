@@ -6,6 +6,7 @@
 pub mod auto;
 pub mod body;
 pub mod dop853;
+pub mod engine_state;
 pub mod forces;
 pub mod integrators;
 pub mod ledger;

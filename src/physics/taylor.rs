@@ -15,14 +15,16 @@
 
 use bevy::math::DVec2;
 
-use super::body::{AngularState, BodyState, LinearState};
+use super::body::BodyState;
+use super::engine_state::{
+    COMPONENTS, DISSIPATED, RELATIVE_TOLERANCE, error_weights, pack, unpack,
+};
 use super::forces::ForceModel;
 
 /// The highest order the engine can be asked for.
 pub const MAX_ORDER: usize = 24;
 
-/// The components: x, y, cos θ, sin θ, θ, vx, vy, ω, and the energy damping took out.
-const N: usize = 9;
+const N: usize = COMPONENTS;
 type Series = [f64; MAX_ORDER + 1];
 
 /// The longest step, as rate times step, at which every truncation from order 2 up of the
@@ -35,11 +37,6 @@ const MIN_ORDER: usize = 4;
 /// Slightly under the step the last two coefficients allow: the terms past the truncation
 /// then shrink geometrically.
 const SAFETY: f64 = 0.9;
-
-/// The error allowed per unit of a component's size, on top of the tolerance: some thousand
-/// times f64's round-off, so that round-off far from the origin (the anchor a million px away)
-/// is never asked to beat the tolerance.
-const RELATIVE_TOLERANCE: f64 = 1e-13;
 
 /// What one fixed step of the engine did.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -101,39 +98,13 @@ pub fn integrate(
     // c·I: the angular damping torque per unit ω.
     let angular_damping = model.angular_damping * model.mass.inertia();
 
-    // Error weights: positions in px, the orientation (and its unit vector) as the
-    // displacement of the farthest corner, velocities over the time in which they move the
-    // box that far (the faster of the motion's rate and the fixed step), none for the energy.
-    let reach = 0.5 * model.mass.size().length();
-    let rate = model.fastest_rate(state).max(1.0 / dt);
-    let weights: [f64; N] = [
-        1.0,
-        1.0,
-        reach,
-        reach,
-        reach,
-        1.0 / rate,
-        1.0 / rate,
-        reach / rate,
-        0.0,
-    ];
+    let weights = error_weights(state, model, dt);
 
     // Never a step past where a truncated series of the fastest decay or oscillation could
     // grow: tiny states pass any absolute tolerance, and must still decay.
     let longest = STABLE_RATE_TIMES_STEP / model.fastest_rate(state).max(f64::MIN_POSITIVE);
 
-    let (sin, cos) = state.angular.orientation.sin_cos();
-    let mut y: [f64; N] = [
-        state.linear.position.x,
-        state.linear.position.y,
-        cos,
-        sin,
-        state.angular.orientation,
-        state.linear.velocity.x,
-        state.linear.velocity.y,
-        state.angular.angular_velocity,
-        0.0,
-    ];
+    let mut y = pack(state);
     let mut series: [Series; N] = [[0.0; MAX_ORDER + 1]; N];
     let mut arm_x: Series = [0.0; MAX_ORDER + 1];
     let mut arm_y: Series = [0.0; MAX_ORDER + 1];
@@ -246,19 +217,10 @@ pub fn integrate(
         remaining -= h;
     }
     Some(Integrated {
-        state: BodyState {
-            linear: LinearState {
-                position: DVec2::new(y[0], y[1]),
-                velocity: DVec2::new(y[5], y[6]),
-            },
-            angular: AngularState {
-                orientation: y[4],
-                angular_velocity: y[7],
-            },
-        },
+        state: unpack(&y),
         steps,
         orders,
-        dissipated: y[8],
+        dissipated: y[DISSIPATED],
     })
 }
 
