@@ -11,30 +11,30 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
-use rubber_band_box::physics::scenario::SEED_DRAG_TARGET;
-use rubber_band_box::physics::{BandEnds, BodyState, Integrator, SceneParams, Simulation};
+use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
+use rubber_band_box::physics::{BandEnds, BodyState, Integrator, SceneParams, Stepper};
 use rubber_band_box::simulation::{
-    Band, RenderSnapshots, RigidBox, SimulationPlugin, run_single_threaded,
+    Band, RigidBox, SimulationPlugin, rigid_box, run_single_threaded,
 };
 
 fn core_step(c: &mut Criterion) {
     let mut group = c.benchmark_group("core_step");
     for integrator in Integrator::ALL {
-        let mut sim = Simulation::new(SceneParams::seed()).unwrap();
-        sim.integrator = integrator;
-        sim.grab(SEED_DRAG_TARGET);
+        let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
+        stepper.integrator = integrator;
+        stepper.grab(TUTORIAL_PULL_TARGET);
         // Start from a moving state so that every method does its real work.
         for _ in 0..50 {
-            sim.step(0.01);
+            stepper.step(0.01);
         }
-        let start = sim.state;
+        let start = stepper.state;
         let mut steps = 0;
         group.bench_function(integrator.name(), |b| {
             b.iter(|| {
-                sim.step(black_box(0.01));
+                stepper.step(black_box(0.01));
                 steps += 1;
                 if steps == 10_000 {
-                    sim.state = start;
+                    stepper.state = start;
                     steps = 0;
                 }
             })
@@ -44,8 +44,8 @@ fn core_step(c: &mut Criterion) {
 }
 
 /// A headless app whose every `update()` runs one 10 ms fixed step, every schedule on the
-/// single-threaded executor (on two cores the multi-threaded one costs ~20x more per update
-/// for a scene this small: see README).
+/// single-threaded executor (on two cores the multi-threaded one costs far more per update for
+/// a scene this small: README, "Benchmarks").
 fn headless_app(physics: bool, boxes: usize, single_threaded: bool) -> App {
     let mut app = App::new();
     app.add_plugins(MinimalPlugins)
@@ -60,31 +60,21 @@ fn headless_app(physics: bool, boxes: usize, single_threaded: bool) -> App {
     app.cleanup();
     app.update(); // starts the clock, runs Startup (spawns the box)
     if physics {
-        let params = SceneParams::seed();
+        let params = SceneParams::tutorial();
         let mass = params.mass_properties().unwrap();
         let world = app.world_mut();
         let mut existing = world.query_filtered::<Entity, With<RigidBox>>();
         let mut bodies: Vec<Entity> = existing.iter(world).collect();
         for i in bodies.len()..boxes {
             let state = BodyState::at_rest(DVec2::new(i as f64, 0.0));
-            bodies.push(
-                world
-                    .spawn((
-                        RigidBox,
-                        mass,
-                        state.linear,
-                        state.angular,
-                        RenderSnapshots::at_rest(state),
-                    ))
-                    .id(),
-            );
+            bodies.push(world.spawn(rigid_box(mass, state)).id());
         }
         for body in bodies {
             world.spawn(Band {
                 body,
                 ends: BandEnds {
                     local_point: DVec2::new(30.0, 30.0),
-                    anchor: SEED_DRAG_TARGET,
+                    anchor: TUTORIAL_PULL_TARGET,
                 },
             });
         }

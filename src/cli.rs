@@ -9,7 +9,7 @@ use bevy::math::DVec2;
 use clap::{Args, Parser, Subcommand};
 
 use crate::physics::{
-    AngularState, BodyState, Diverged, Drag, Integrator, LinearState, Run, Scenario, SceneParams,
+    AngularState, BodyState, Diverged, Integrator, LinearState, Pull, Run, Scenario, SceneParams,
 };
 
 #[derive(Parser, Debug)]
@@ -45,9 +45,9 @@ pub struct PlayArgs {
 
 #[derive(Args, Debug)]
 pub struct SimulateArgs {
-    /// Named scene: seed, diagonal, stiff, light, spin, spin-band, far, undamped,
+    /// Named scene: tutorial, diagonal, stiff, light, spin, spin-band, far, undamped,
     /// zero-length, rest.
-    #[arg(long, default_value = "seed", value_parser = parse_scene)]
+    #[arg(long, default_value = "tutorial", value_parser = parse_scene)]
     pub scene: Scenario,
     /// euler, symplectic, verlet, rk4, implicit, seed or auto [default: auto].
     #[arg(long, value_parser = parse_integrator)]
@@ -59,9 +59,9 @@ pub struct SimulateArgs {
     #[arg(long, default_value_t = 600, allow_hyphen_values = true)]
     pub steps: u64,
     /// START:END:X,Y: from step START the band pulls the corner nearest (X,Y) toward (X,Y),
-    /// for steps START <= s < END. Repeatable; replaces the scene's own drags.
-    #[arg(long = "drag", value_parser = parse_drag, allow_hyphen_values = true)]
-    pub drags: Vec<Drag>,
+    /// for steps START <= s < END. Repeatable; replaces the scene's own pulls.
+    #[arg(long = "pull", value_parser = parse_pull, allow_hyphen_values = true)]
+    pub pulls: Vec<Pull>,
     /// Band stiffness k.
     #[arg(long, value_parser = non_negative, allow_hyphen_values = true)]
     pub k: Option<f64>,
@@ -121,27 +121,27 @@ impl SimulateArgs {
     }
 
     pub fn run(&self) -> Result<Run, String> {
-        let drags = if self.drags.is_empty() {
-            self.scene.drags_in_steps(self.dt)
+        let pulls = if self.pulls.is_empty() {
+            self.scene.pulls_in_steps(self.dt)
         } else {
-            self.drags.clone()
+            self.pulls.clone()
         };
         let mut run = Run::new(
             self.params(),
             self.init.unwrap_or(self.scene.initial),
-            drags,
+            pulls,
             self.integrator.unwrap_or_default(),
             self.dt,
         )
         .map_err(|error| error.to_string())?;
         if let Some(tolerance) = self.auto_tolerance {
-            run.sim.auto.tolerance = tolerance;
+            run.stepper.auto.tolerance = tolerance;
         }
         if let Some(order) = self.auto_order {
-            run.sim.auto.order = order as usize;
+            run.stepper.auto.order = order as usize;
         }
         if let Some(max) = self.auto_max_substeps {
-            run.sim.auto.max_substeps = max;
+            run.stepper.auto.max_substeps = max;
         }
         Ok(run)
     }
@@ -152,7 +152,7 @@ pub const CSV_HEADER: &str =
 
 /// One CSV row: the state after `run.step` steps.
 pub fn csv_row(run: &Run) -> String {
-    let s = &run.sim.state;
+    let s = &run.stepper.state;
     format!(
         "{},{},{},{},{},{},{},{},{},{},{},{},{}",
         run.step,
@@ -163,11 +163,11 @@ pub fn csv_row(run: &Run) -> String {
         s.linear.velocity.x,
         s.linear.velocity.y,
         s.angular.angular_velocity,
-        run.sim.energy(),
-        u8::from(run.sim.band.is_some()),
+        run.stepper.energy(),
+        u8::from(run.stepper.band.is_some()),
         run.last_step.substeps,
         run.fallbacks,
-        run.ledger.residual(run.sim.energy()),
+        run.ledger.residual(run.stepper.energy()),
     )
 }
 
@@ -248,7 +248,7 @@ fn parse_numbers<const N: usize>(text: &str, what: &str) -> Result<[f64; N], Str
     Ok(values)
 }
 
-fn parse_drag(text: &str) -> Result<Drag, String> {
+fn parse_pull(text: &str) -> Result<Pull, String> {
     let malformed = || format!("expected START:END:X,Y (for example 0:300:200,120), got '{text}'");
     let mut parts = text.splitn(3, ':');
     let (Some(start), Some(end), Some(target)) = (parts.next(), parts.next(), parts.next()) else {
@@ -261,10 +261,10 @@ fn parse_drag(text: &str) -> Result<Drag, String> {
     };
     let (start, end) = (step(start)?, step(end)?);
     if start >= end {
-        return Err(format!("the drag must end after it starts, got '{text}'"));
+        return Err(format!("the pull must end after it starts, got '{text}'"));
     }
     let [x, y] = parse_numbers::<2>(target, "X,Y")?;
-    Ok(Drag {
+    Ok(Pull {
         start,
         end,
         target: DVec2::new(x, y),

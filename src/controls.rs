@@ -1,55 +1,41 @@
-//! Keyboard controls, each applied before the fixed loop so it acts on the very next step.
-//! The window title shows the state they set.
-//!
-//! | key | effect |
-//! |---|---|
-//! | Space | pause / resume |
-//! | N | one fixed step while paused |
-//! | R | reset: the box at rest at the centre, no band |
-//! | I | next integrator |
-//! | `[` / `]` | band stiffness k ÷10 / ×10 (1e-2 to 1e12) |
-//! | `-` / `=` | time scale ÷2 / ×2 (1/16 to 16) |
-//! | PageDown / PageUp | fixed step rate ÷2 / ×2 (8 to 4096 Hz) |
-//! | V | force and velocity vectors |
-//! | T | trail of the pulled corner |
-//! | H | hide / show the HUD |
+//! The keyboard controls, each applied before the fixed loop ([`GameSystems::Controls`]) so
+//! that it acts on the very next step. The keys are listed once, in [`CONTROLS`]: the HUD's
+//! help line, the window title's hint and README's table are written from it (a test holds
+//! README to it).
 
-use bevy::ecs::system::SystemParam;
+use bevy::input::common_conditions::input_just_pressed;
 use bevy::prelude::*;
-use bevy::window::PrimaryWindow;
 
-use crate::hud::EnergyHistory;
-use crate::physics::{AngularState, BodyState, Integrator, LinearState, SceneParams};
-use crate::pointer::Grip;
-use crate::simulation::{
-    Band, EnergyBooks, ForceAccumulator, RenderSnapshots, RigidBox, StepStats, apply_step_rate,
-};
+use crate::overlays::Overlays;
+use crate::physics::{Integrator, SceneParams};
+use crate::schedule::GameSystems;
+use crate::simulation::ResetScene;
 
 pub struct ControlsPlugin;
 
 impl Plugin for ControlsPlugin {
     fn build(&self, app: &mut App) {
-        app.init_resource::<Overlays>()
-            .add_systems(
-                RunFixedMainLoop,
-                (
-                    cycle_integrator,
-                    pause_and_step,
-                    reset_scene,
-                    tune_parameters,
-                    toggle_overlays,
-                )
-                    .before(apply_step_rate)
-                    .in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+        app.init_resource::<Overlays>().add_systems(
+            RunFixedMainLoop,
+            (
+                cycle_integrator.run_if(input_just_pressed(CYCLE_INTEGRATOR)),
+                pause_and_step,
+                reset_scene.run_if(input_just_pressed(RESET)),
+                tune_parameters,
+                toggle_overlays,
             )
-            .add_systems(Update, show_state_in_title);
+                // One order within the set too: pausing and the time scale both write the
+                // virtual clock.
+                .chain()
+                .in_set(GameSystems::Controls),
+        );
     }
 }
 
-pub const CYCLE_INTEGRATOR: KeyCode = KeyCode::KeyI;
 pub const PAUSE: KeyCode = KeyCode::Space;
 pub const SINGLE_STEP: KeyCode = KeyCode::KeyN;
 pub const RESET: KeyCode = KeyCode::KeyR;
+pub const CYCLE_INTEGRATOR: KeyCode = KeyCode::KeyI;
 pub const SOFTER: KeyCode = KeyCode::BracketLeft;
 pub const STIFFER: KeyCode = KeyCode::BracketRight;
 pub const SLOWER: KeyCode = KeyCode::Minus;
@@ -64,21 +50,101 @@ pub const STIFFNESS_RANGE: (f64, f64) = (1e-2, 1e12);
 pub const TIME_SCALE_RANGE: (f64, f64) = (1.0 / 16.0, 16.0);
 pub const STEP_RATE_RANGE: (f64, f64) = (8.0, 4096.0);
 
-/// What the drawing shows besides the box and the band.
-#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
-pub struct Overlays {
-    pub vectors: bool,
-    pub trail: bool,
-    /// The HUD (text and energy graph) shows unless hidden.
-    pub hud_hidden: bool,
+/// One control: its keys, how the help line names them, and what it does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Control {
+    pub keys: &'static [KeyCode],
+    /// The keys as the help line, the title and README write them ("[ ]").
+    pub label: &'static str,
+    /// What it does, in a word (the help line).
+    pub name: &'static str,
+    /// What it does, in full (README's table).
+    pub effect: &'static str,
+}
+
+/// Every key the game reads, in the order the help line lists them.
+pub const CONTROLS: [Control; 10] = [
+    Control {
+        keys: &[PAUSE],
+        label: "Space",
+        name: "pause",
+        effect: "pause / resume (from the next frame: Bevy advances its clocks before it reads input)",
+    },
+    Control {
+        keys: &[SINGLE_STEP],
+        label: "N",
+        name: "step",
+        effect: "one fixed step while paused",
+    },
+    Control {
+        keys: &[RESET],
+        label: "R",
+        name: "reset",
+        effect: "reset: the box at rest at the centre, no band, the books, the graph and the trail started over",
+    },
+    Control {
+        keys: &[CYCLE_INTEGRATOR],
+        label: "I",
+        name: "integrator",
+        effect: "the next integrator",
+    },
+    Control {
+        keys: &[SOFTER, STIFFER],
+        label: "[ ]",
+        name: "k",
+        effect: "band stiffness k ÷10 / ×10, from 1e-2 to 1e12 (the hard cases are a few presses away)",
+    },
+    Control {
+        keys: &[SLOWER, FASTER],
+        label: "- =",
+        name: "time",
+        effect: "time scale ÷2 / ×2, from 1/16 to 16 (slow motion, fast forward)",
+    },
+    Control {
+        keys: &[FEWER_STEPS, MORE_STEPS],
+        label: "PgDn PgUp",
+        name: "rate",
+        effect: "fixed step rate ÷2 / ×2, from 8 to 4096 Hz",
+    },
+    Control {
+        keys: &[VECTORS],
+        label: "V",
+        name: "vectors",
+        effect: "vectors: velocity at the centre (green, where it will be in 0.25 s), the band's force at its corner (orange, length growing with log force)",
+    },
+    Control {
+        keys: &[TRAIL],
+        label: "T",
+        name: "trail",
+        effect: "a fading trail of the pulled corner",
+    },
+    Control {
+        keys: &[HUD],
+        label: "H",
+        name: "HUD",
+        effect: "hide / show the HUD and the energy graph",
+    },
+];
+
+/// The HUD's help line: "drag: pull  Space: pause  N: step ...".
+pub fn help_line() -> String {
+    let keys: Vec<String> = CONTROLS
+        .iter()
+        .map(|control| format!("{}: {}", control.label, control.name))
+        .collect();
+    format!("drag: pull  {}", keys.join("  "))
+}
+
+/// The window title's reminder of the keys: "Space N R I [ ] ...".
+pub fn key_hint() -> String {
+    let labels: Vec<&str> = CONTROLS.iter().map(|control| control.label).collect();
+    labels.join(" ")
 }
 
 /// The switch takes effect on the next fixed step.
-pub fn cycle_integrator(keys: Res<ButtonInput<KeyCode>>, mut integrator: ResMut<Integrator>) {
-    if keys.just_pressed(CYCLE_INTEGRATOR) {
-        *integrator = integrator.next();
-        info!("integrator: {}", *integrator);
-    }
+pub fn cycle_integrator(mut integrator: ResMut<Integrator>) {
+    *integrator = integrator.next();
+    info!("integrator: {}", *integrator);
 }
 
 /// Pausing stops the virtual clock, so no fixed step runs; a single step feeds the fixed clock
@@ -101,51 +167,9 @@ fn pause_and_step(
     }
 }
 
-/// Everything a reset puts back: the run's books and counters, the grip, the graph and clock.
-#[derive(SystemParam)]
-struct RunRecords<'w> {
-    grip: ResMut<'w, Grip>,
-    stats: ResMut<'w, StepStats>,
-    books: ResMut<'w, EnergyBooks>,
-    fixed_time: Res<'w, Time<Fixed>>,
-    history: Option<ResMut<'w, EnergyHistory>>,
-}
-
-fn reset_scene(
-    keys: Res<ButtonInput<KeyCode>>,
-    mut commands: Commands,
-    bands: Query<Entity, With<Band>>,
-    mut boxes: Query<
-        (
-            &mut LinearState,
-            &mut AngularState,
-            &mut ForceAccumulator,
-            &mut RenderSnapshots,
-        ),
-        With<RigidBox>,
-    >,
-    mut records: RunRecords,
-) {
-    if !keys.just_pressed(RESET) {
-        return;
-    }
-    for band in &bands {
-        commands.entity(band).despawn();
-    }
-    let rest = BodyState::default();
-    for (mut linear, mut angular, mut accumulator, mut snapshots) in &mut boxes {
-        *linear = rest.linear;
-        *angular = rest.angular;
-        *accumulator = ForceAccumulator::default();
-        *snapshots = RenderSnapshots::at_rest(rest);
-    }
-    records.grip.0 = None;
-    *records.stats = StepStats::default();
-    *records.books = EnergyBooks::default();
-    let now = records.fixed_time.elapsed_secs_f64();
-    if let Some(history) = records.history.as_mut() {
-        history.restart(now);
-    }
+/// Each plugin puts back what it owns (see [`ResetScene`]).
+fn reset_scene(mut commands: Commands) {
+    commands.trigger(ResetScene);
 }
 
 /// k, the time scale and the step rate move by factors, so that a player reaches the hard
@@ -194,45 +218,5 @@ fn toggle_overlays(keys: Res<ButtonInput<KeyCode>>, mut overlays: ResMut<Overlay
     }
     if keys.just_pressed(HUD) {
         overlays.hud_hidden = !overlays.hud_hidden;
-    }
-}
-
-/// "Rubber Band Box: auto (2 substeps, 0 fall-backs), k 20, 100 Hz, time ×1, paused".
-fn show_state_in_title(
-    integrator: Res<Integrator>,
-    stats: Res<StepStats>,
-    params: Res<SceneParams>,
-    books: Res<EnergyBooks>,
-    virtual_time: Res<Time<Virtual>>,
-    mut window: Option<Single<&mut Window, With<PrimaryWindow>>>,
-) {
-    let Some(window) = window.as_deref_mut() else {
-        return;
-    };
-    let mut title = format!("Rubber Band Box: {}", *integrator);
-    if *integrator == Integrator::Auto {
-        let plural = |n: u64, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
-        title += &format!(
-            " ({}, {})",
-            plural(u64::from(stats.substeps), "substep"),
-            plural(stats.fallbacks, "fall-back")
-        );
-    }
-    title += &format!(
-        ", k {}, {} Hz, time ×{}",
-        params.stiffness,
-        params.step_rate_hz,
-        virtual_time.relative_speed_f64()
-    );
-    title += &format!(", energy error {:.1e}", books.residual);
-    if virtual_time.is_paused() {
-        title += ", paused (N steps)";
-    }
-    if let Some((diverged, step)) = stats.divergence {
-        title += &format!(", {diverged} diverged at step {step}: steps refused");
-    }
-    title += "; Space I R [ ] - = V T H";
-    if window.title != title {
-        window.title = title;
     }
 }

@@ -9,10 +9,9 @@ use std::collections::VecDeque;
 
 use bevy::math::DVec2;
 
-use crate::controls::Overlays;
-use crate::hud::{BAND_ENERGY_COLOUR, EnergyHistory, KINETIC_COLOUR, TOTAL_COLOUR};
+use crate::overlays::Overlays;
 use crate::physics::{MassProperties, SCENE_SIZE, SceneParams};
-use crate::simulation::{Band, RenderSnapshots, RigidBox};
+use crate::simulation::{Band, RenderSnapshots, ResetScene, RigidBox};
 use crate::view::interpolated_state;
 
 pub const BOX_FILL: Color = Color::srgb(0.16, 0.42, 0.72);
@@ -29,6 +28,7 @@ impl Plugin for DrawPlugin {
     fn build(&self, app: &mut App) {
         app.add_observer(fill_box)
             .add_observer(pin_band)
+            .add_observer(clear_trail_on_reset)
             .init_resource::<Trail>()
             .add_systems(Startup, thicken_lines)
             .add_systems(
@@ -37,9 +37,8 @@ impl Plugin for DrawPlugin {
                     draw_scene_border,
                     draw_boxes,
                     draw_bands,
-                    draw_vectors,
+                    draw_vectors.run_if(|overlays: Res<Overlays>| overlays.vectors),
                     (record_trail, draw_trail).chain(),
-                    draw_energy_graph,
                 ),
             );
     }
@@ -139,15 +138,11 @@ fn force_arrow_length(force: f64) -> f64 {
 /// Velocity at the centre; the band's force at its corner.
 fn draw_vectors(
     mut gizmos: Gizmos,
-    overlays: Res<Overlays>,
     params: Res<SceneParams>,
     fixed_time: Res<Time<Fixed>>,
     bodies: Query<&RenderSnapshots>,
     bands: Query<&Band>,
 ) {
-    if !overlays.vectors {
-        return;
-    }
     for snapshots in &bodies {
         let state = interpolated_state(snapshots, &fixed_time);
         let centre = state.linear.position.as_vec2();
@@ -199,6 +194,10 @@ fn record_trail(
     }
 }
 
+fn clear_trail_on_reset(_reset: On<ResetScene>, mut trail: ResMut<Trail>) {
+    *trail = Trail::default();
+}
+
 /// Older points fade out.
 fn draw_trail(mut gizmos: Gizmos, trail: Res<Trail>) {
     let n = trail.points.len().max(1) as f32;
@@ -209,58 +208,4 @@ fn draw_trail(mut gizmos: Gizmos, trail: Res<Trail>) {
             .enumerate()
             .map(|(i, &p)| (p, PIN_FILL.with_alpha(i as f32 / n))),
     );
-}
-
-/// The graph's size in world units, and its distance from the view's top-right corner.
-const GRAPH_SIZE: Vec2 = Vec2::new(200.0, 80.0);
-const GRAPH_MARGIN: f32 = 8.0;
-
-/// Kinetic, band and total energy over the last seconds, in the view's top-right corner,
-/// scaled so that the largest total in view reaches the top.
-fn draw_energy_graph(
-    mut gizmos: Gizmos,
-    overlays: Res<Overlays>,
-    history: Res<EnergyHistory>,
-    camera: Single<&Projection, With<Camera2d>>,
-) {
-    let Projection::Orthographic(projection) = *camera else {
-        return;
-    };
-    if overlays.hud_hidden {
-        return;
-    }
-    let area = projection.area;
-    let top_right = area.max - Vec2::splat(GRAPH_MARGIN);
-    let frame = Rect::from_corners(top_right - GRAPH_SIZE, top_right);
-    gizmos.rect_2d(
-        Isometry2d::from_translation(frame.center()),
-        GRAPH_SIZE,
-        SCENE_BORDER,
-    );
-    let Some(&(now, _)) = history.samples.back() else {
-        return;
-    };
-    let highest = history
-        .samples
-        .iter()
-        .map(|(_, e)| e.total())
-        .fold(0.0, f64::max);
-    let point = |t: f64, energy: f64| {
-        let x = 1.0 - ((now - t) / EnergyHistory::SPAN) as f32;
-        let y = if highest > 0.0 {
-            (energy / highest) as f32
-        } else {
-            0.0
-        };
-        frame.min + Vec2::new(x, y) * GRAPH_SIZE
-    };
-    let mut line = |energy: fn(&crate::physics::Energies) -> f64, colour: Color| {
-        gizmos.linestrip_2d(
-            history.samples.iter().map(|(t, e)| point(*t, energy(e))),
-            colour,
-        );
-    };
-    line(|e| e.kinetic(), KINETIC_COLOUR);
-    line(|e| e.band, BAND_ENERGY_COLOUR);
-    line(|e| e.total(), TOTAL_COLOUR);
 }

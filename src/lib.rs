@@ -1,27 +1,55 @@
 //! Rubber Band Box: a 2D rigid box pulled by a rubber band, on Bevy.
 //!
-//! Layers, each usable without the ones after it:
-//! - [`physics`]: the numerical core, plain Rust over f64 state;
+//! Layers, each importing only the ones before it:
+//! - [`physics`]: the numerical core, plain Rust over f64 state (no `App`);
+//! - [`schedule`] and [`overlays`]: leaves the plugins share (the frame's order, what shows);
 //! - [`simulation`]: the Bevy plugin that steps the core in `FixedUpdate` (headless);
-//! - [`pointer`]: mouse and touch to the band entity (headless);
-//! - [`hud`]: the heads-up display's text and energy history (headless too);
-//! - [`view`] and [`draw`]: camera, interpolation and drawing (need a window).
+//! - [`pointer`] and [`controls`]: mouse, touch and keys (headless);
+//! - [`hud`]: the heads-up display, its energy graph and the window title (headless, but the
+//!   graph, which needs gizmos);
+//! - [`view`] and [`draw`]: camera, interpolation and drawing (need a window);
+//! - [`cli`], [`report`], [`references`] and [`peers`]: the native tools on top of the core.
+//!
+//! The plugins are wired here, once: [`GameLogicPlugin`] is the game without a screen (what
+//! the headless tests run), [`GamePlugin`] adds the screen.
 
 #[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
 pub mod controls;
 pub mod draw;
 pub mod hud;
+pub mod overlays;
 #[cfg(all(feature = "peers", not(target_arch = "wasm32")))]
 pub mod peers;
 pub mod physics;
 pub mod pointer;
 #[cfg(not(target_arch = "wasm32"))]
+pub mod references;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod report;
+pub mod schedule;
 pub mod simulation;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod timing;
 pub mod view;
 
 use bevy::prelude::*;
+
+/// The game without a screen: the physics, the pointer, the keys and the HUD's text, in the
+/// frame's order ([`schedule`]). Runs under `MinimalPlugins`.
+pub struct GameLogicPlugin;
+
+impl Plugin for GameLogicPlugin {
+    fn build(&self, app: &mut App) {
+        schedule::order_the_frame(app);
+        app.add_plugins((
+            simulation::SimulationPlugin,
+            pointer::PointerPlugin,
+            controls::ControlsPlugin,
+            hud::HudPlugin,
+        ));
+    }
+}
 
 /// Everything the game needs on top of `DefaultPlugins` and lyon's `ShapePlugin`.
 pub struct GamePlugin;
@@ -29,12 +57,10 @@ pub struct GamePlugin;
 impl Plugin for GamePlugin {
     fn build(&self, app: &mut App) {
         app.add_plugins((
-            simulation::SimulationPlugin,
-            pointer::PointerPlugin,
-            controls::ControlsPlugin,
-            hud::HudPlugin,
+            GameLogicPlugin,
             view::ViewPlugin,
             draw::DrawPlugin,
+            hud::graph::EnergyGraphPlugin,
         ));
     }
 }

@@ -62,7 +62,7 @@ fn main() -> ExitCode {
 }
 
 fn play(args: PlayArgs) -> ExitCode {
-    let mut params = SceneParams::seed();
+    let mut params = SceneParams::tutorial();
     if let Some(rate) = args.step_rate {
         params.step_rate_hz = rate;
     }

@@ -1,7 +1,7 @@
 //! The pointer plugin: the left mouse button, or one finger, holds the band.
 //!
-//! Two systems run before the fixed loop each frame, so that a press is felt by the very next
-//! fixed step: [`read_pointer`] turns mouse, touch and focus input into [`PointerAction`]s in
+//! Two systems run before the fixed loop each frame, in [`GameSystems::Input`], so that a press
+//! is felt by the very next fixed step: [`read_pointer`] turns mouse, touch and focus input into [`PointerAction`]s in
 //! world coordinates (through the camera), and [`drive_band`] spawns, moves and despawns the
 //! band entity from them. Tests can drive either end.
 //!
@@ -20,7 +20,8 @@ use bevy::prelude::*;
 use bevy::window::{PrimaryWindow, WindowFocused};
 
 use crate::physics::{AngularState, BandEnds, LinearState, MassProperties};
-use crate::simulation::{Band, RigidBox, Tap, body_state};
+use crate::schedule::GameSystems;
+use crate::simulation::{Band, ResetScene, RigidBox, Tap, body_state};
 
 pub struct PointerPlugin;
 
@@ -28,11 +29,12 @@ impl Plugin for PointerPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Grip>()
             .add_message::<PointerAction>()
+            .add_observer(let_go_on_reset)
             .add_systems(
                 RunFixedMainLoop,
                 (read_pointer, drive_band)
                     .chain()
-                    .in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+                    .in_set(GameSystems::Input),
             );
     }
 }
@@ -136,6 +138,20 @@ fn release(grip: &mut Grip, actions: &mut MessageWriter<PointerAction>, source: 
         grip.0 = None;
         actions.write(PointerAction::Release);
     }
+}
+
+/// A reset lets go: no band, and no device holds one (a button still down grabs again only
+/// with a new press).
+fn let_go_on_reset(
+    _reset: On<ResetScene>,
+    mut commands: Commands,
+    bands: Query<Entity, With<Band>>,
+    mut grip: ResMut<Grip>,
+) {
+    for band in &bands {
+        commands.entity(band).despawn();
+    }
+    grip.0 = None;
 }
 
 /// [`PointerAction`]s to the band entity: at most one band exists after this system.

@@ -12,17 +12,16 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use bevy::math::DVec2;
 use clap::Args;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use crate::physics::scenario::SEED_DRAG_TARGET;
-use crate::physics::taylor::{self, TaylorSettings};
-use crate::physics::{
-    BandEnds, BodyState, Integrator, MassProperties, Run, Scenario, SceneParams,
-    angular_momentum_about, dop853,
+use crate::physics::scenario::TUTORIAL_PULL_TARGET;
+use crate::physics::{Integrator, Run, Scenario, SceneParams, angular_momentum_about};
+use crate::references::{
+    Engine, StiffCase, UNRESOLVABLE_SECONDS, run_engine, work_reference, work_scenes,
 };
+use crate::timing::median_ns;
 
 #[derive(Args, Debug)]
 pub struct ReportArgs {
@@ -52,95 +51,6 @@ fn steps_swept(quick: bool) -> Vec<f64> {
     rates.iter().map(|rate| 1.0 / rate).collect()
 }
 
-/// A scene of the work-precision sweep and how its reference is obtained.
-pub struct WorkScene {
-    pub scenario: Scenario,
-    /// Simulated time; short for the chaotic stiff band.
-    pub horizon: f64,
-    /// Step of the fine RK4 reference (unused where the answer is exact).
-    pub reference_step: f64,
-    pub exact: Option<fn(f64) -> BodyState>,
-    /// Report the energy drift (undamped scenes, where energy is an invariant).
-    pub energy_invariant: bool,
-}
-
-/// The converged answer of a work scene at time `t`.
-pub fn work_reference(scene: &WorkScene, t: f64) -> BodyState {
-    match scene.exact {
-        Some(exact) => exact(t),
-        None => reference_state(&scene.scenario, t, scene.reference_step),
-    }
-}
-
-pub fn work_scenes() -> Vec<WorkScene> {
-    let named = |name: &str| Scenario::named(name).expect("a built-in scene");
-    vec![
-        WorkScene {
-            scenario: named("diagonal"),
-            horizon: 4.0,
-            reference_step: 0.0,
-            exact: Some(diagonal_exact),
-            energy_invariant: false,
-        },
-        WorkScene {
-            scenario: named("seed"),
-            horizon: 4.0,
-            reference_step: 1e-5,
-            exact: None,
-            energy_invariant: false,
-        },
-        WorkScene {
-            scenario: named("stiff"),
-            horizon: 0.1,
-            reference_step: 1e-6,
-            exact: None,
-            energy_invariant: false,
-        },
-        WorkScene {
-            scenario: named("undamped"),
-            horizon: 10.0,
-            reference_step: 1e-5,
-            exact: None,
-            energy_invariant: true,
-        },
-    ]
-}
-
-/// The diagonal pull in closed form: the corner (30, 30) pulled toward (150, 150) moves the
-/// box along the diagonal as m u'' + b u' + k u = 0 with u = x − 120, u(0) = −120, u'(0) = 0.
-pub fn diagonal_exact(t: f64) -> BodyState {
-    let p = SceneParams::seed();
-    let equilibrium = 150.0 - 30.0;
-    let u0 = -equilibrium;
-    let gamma = p.linear_damping / (2.0 * p.mass);
-    let omega_d = (p.stiffness / p.mass - gamma * gamma).sqrt();
-    let (sin, cos) = (omega_d * t).sin_cos();
-    let decay = (-gamma * t).exp();
-    let u = decay * (u0 * cos + gamma * u0 / omega_d * sin);
-    let du = decay * (-(gamma * gamma / omega_d + omega_d) * u0 * sin);
-    let mut state = BodyState::at_rest(DVec2::splat(equilibrium + u));
-    state.linear.velocity = DVec2::splat(du);
-    state
-}
-
-/// The largest distance between corresponding corners of two poses.
-pub fn pose_error(a: &BodyState, b: &BodyState, mass: &MassProperties) -> f64 {
-    mass.corners()
-        .iter()
-        .map(|&c| a.local_to_world(c).distance(b.local_to_world(c)))
-        .fold(0.0, f64::max)
-}
-
-/// A fine RK4 run of `scenario` to time `t`, with an even number of steps so that drags at
-/// whole seconds fall on step boundaries.
-pub fn reference_state(scenario: &Scenario, t: f64, step: f64) -> BodyState {
-    let n = ((t / step).ceil() as u64).max(2).next_multiple_of(2);
-    let mut run = Run::of(scenario, Integrator::Rk4, t / n as f64).expect("valid scene");
-    run.advance_by(n)
-        .expect("the reference converges on every built-in scene");
-    run.sim.state
-}
-
 #[derive(Clone, Debug)]
 pub struct WorkPoint {
     pub scene: &'static str,
@@ -152,25 +62,6 @@ pub struct WorkPoint {
     pub diverged_at: Option<u64>,
     pub energy_drift: Option<f64>,
     pub ns_per_simulated_second: f64,
-}
-
-/// The median of some measurements (the upper one of an even count).
-pub fn median(mut values: Vec<f64>) -> f64 {
-    values.sort_by(f64::total_cmp);
-    values[values.len() / 2]
-}
-
-/// Median wall time of `reps` runs of `work`, in nanoseconds.
-fn median_ns(reps: usize, mut work: impl FnMut()) -> f64 {
-    median(
-        (0..reps)
-            .map(|_| {
-                let start = Instant::now();
-                work();
-                start.elapsed().as_nanos() as f64
-            })
-            .collect(),
-    )
 }
 
 fn work_precision(quick: bool) -> Vec<WorkPoint> {
@@ -186,14 +77,14 @@ fn work_precision(quick: bool) -> Vec<WorkPoint> {
                 let fresh = || Run::of(&scene.scenario, integrator, dt).expect("valid");
                 let mut run = fresh();
                 let mut energy_drift: f64 = 0.0;
-                let e0 = run.sim.energy();
+                let e0 = run.stepper.energy();
                 let mut outcome = Ok(());
                 for _ in 0..steps {
                     outcome = run.advance();
                     if outcome.is_err() {
                         break;
                     }
-                    energy_drift = energy_drift.max((run.sim.energy() - e0).abs() / e0);
+                    energy_drift = energy_drift.max((run.stepper.energy() - e0).abs() / e0);
                 }
                 let diverged_at = outcome.err().map(|d| d.step);
                 let reps = if quick { 3 } else { 7 };
@@ -208,7 +99,7 @@ fn work_precision(quick: bool) -> Vec<WorkPoint> {
                     steps,
                     error: diverged_at
                         .is_none()
-                        .then(|| pose_error(&run.sim.state, &reference, &mass)),
+                        .then(|| run.stepper.state.pose_error(&reference, &mass)),
                     diverged_at,
                     energy_drift: (scene.energy_invariant && diverged_at.is_none())
                         .then_some(energy_drift),
@@ -222,9 +113,9 @@ fn work_precision(quick: bool) -> Vec<WorkPoint> {
 
 /// Whether the seed scene with the band held at stiffness `k` stays bounded for 20 s.
 fn stable_at(integrator: Integrator, k: f64, rate: f64) -> bool {
-    let mut scenario = Scenario::named("seed").expect("built-in");
+    let mut scenario = Scenario::named("tutorial").expect("built-in");
     scenario.params.stiffness = k;
-    scenario.drags = vec![(0.0, f64::INFINITY, SEED_DRAG_TARGET)];
+    scenario.pulls = vec![(0.0, f64::INFINITY, TUTORIAL_PULL_TARGET)];
     let dt = 1.0 / rate;
     let mut run = Run::of(&scenario, integrator, dt).expect("valid");
     run.advance_by((20.0 * rate) as u64).is_ok()
@@ -243,7 +134,7 @@ pub struct StabilityRow {
 impl StabilityRow {
     /// ω·dt of the stiffest mode, ω = 2·sqrt(k/m), at the largest stable k.
     pub fn omega_dt(&self) -> Option<f64> {
-        let mass = SceneParams::seed().mass;
+        let mass = SceneParams::tutorial().mass;
         self.largest_stable_k
             .map(|k| 2.0 * (k / mass).sqrt() / self.rate)
     }
@@ -338,113 +229,7 @@ fn run_hard_cases(quick: bool) -> Vec<(HardCase, Vec<Option<u64>>)> {
         .collect()
 }
 
-/// How long after a stiff drag from rest two tight references still agree well enough to
-/// judge an integrator by its state: the stiffer the band, the sooner its chaotic motion
-/// parts them (README, "Horizons"; the report prints how far its two references agree).
-/// None beyond k = 1e7, where no state can be compared and only boundedness and energy can.
-pub fn resolvable_horizon(k: f64) -> Option<f64> {
-    if k <= 1e5 {
-        Some(0.1)
-    } else if k <= 1e6 {
-        Some(0.05)
-    } else if k <= 1e7 {
-        Some(0.02)
-    } else {
-        None
-    }
-}
-
-/// Simulated seconds of the undamped runs that judge a band too stiff for any horizon.
-pub const UNRESOLVABLE_SECONDS: f64 = 10.0;
-
-/// Two references for a resolvable case: where both agree, the report can judge errors down
-/// to their agreement.
-#[derive(Clone, Copy, Debug)]
-pub struct StiffReference {
-    /// The tightest the core has: Taylor series of order 24 at a tolerance of 1e-15 px.
-    pub state: BodyState,
-    /// How far a second, independent method (DOP853 at 1e-13 px) ends from it.
-    pub agreement: f64,
-}
-
-/// A candidate engine for `auto` with its setting, as the engine comparison runs it: inside
-/// each fixed step of a stiff drag, restarted at every fixed step.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Engine {
-    /// Classical RK4 with this many equal substeps per fixed step.
-    Rk4(u32),
-    /// DOP853 at this tolerance (px per substep).
-    Dop853(f64),
-    /// Taylor series of this order at this tolerance (px per step).
-    Taylor(usize, f64),
-}
-
-impl Engine {
-    pub const TIGHTEST_TAYLOR: Self = Self::Taylor(24, 1e-15);
-    pub const TIGHTEST_DOP853: Self = Self::Dop853(1e-13);
-
-    pub fn name(&self) -> String {
-        match *self {
-            Self::Rk4(n) => format!("rk4 x{n}"),
-            Self::Dop853(tolerance) => format!("dop853 {tolerance:.0e}"),
-            Self::Taylor(order, tolerance) => format!("taylor {order} {tolerance:.0e}"),
-        }
-    }
-}
-
-/// A stiff drag (one drag, held from the start) run by `engine`: the final state and the
-/// force evaluations (Taylor: coefficient orders) per fixed step; None if the engine gave up.
-pub fn run_engine(
-    scenario: &Scenario,
-    rate: f64,
-    ticks: u64,
-    engine: Engine,
-) -> Option<(BodyState, f64)> {
-    let mass = scenario.params.mass_properties().ok()?;
-    let band = BandEnds::grabbing(&mass, &scenario.initial, scenario.drags.first()?.2);
-    let model = scenario.params.force_model(mass, Some(band));
-    let dt = 1.0 / rate;
-    let mut state = scenario.initial;
-    let mut evaluations = 0.0;
-    for _ in 0..ticks {
-        match engine {
-            Engine::Rk4(n) => {
-                for _ in 0..n {
-                    let start = model.forces(&state);
-                    Integrator::Rk4.step(&mut state, &model, start, dt / f64::from(n));
-                }
-                evaluations += 4.0 * f64::from(n);
-            }
-            Engine::Dop853(tolerance) => {
-                let done = dop853::integrate(
-                    &state,
-                    &model,
-                    model.forces(&state),
-                    dt,
-                    tolerance,
-                    u32::MAX,
-                )?;
-                state = done.state;
-                evaluations += 1.0 + 12.0 * f64::from(done.attempts);
-            }
-            Engine::Taylor(order, tolerance) => {
-                let settings = TaylorSettings {
-                    order,
-                    tolerance,
-                    max_steps: u32::MAX,
-                };
-                let done = taylor::integrate(&state, &model, dt, &settings)?;
-                state = done.state;
-                evaluations += f64::from(done.orders);
-            }
-        }
-    }
-    state
-        .is_finite()
-        .then_some((state, evaluations / ticks as f64))
-}
-
-/// The engine comparison: each candidate at several settings on the stiff drags at 100 Hz,
+/// The engine comparison: each candidate at several settings on the stiff pulls at 100 Hz,
 /// error at the horizon against the reference, cost per fixed step of the core alone.
 pub struct EnginePoint {
     pub k: f64,
@@ -483,64 +268,13 @@ fn engines_compared(cases: &[StiffCase], quick: bool) -> Vec<EnginePoint> {
             points.push(EnginePoint {
                 k: case.k,
                 engine,
-                error: outcome.map(|(state, _)| pose_error(&state, &reference.state, &mass)),
+                error: outcome.map(|(state, _)| state.pose_error(&reference.state, &mass)),
                 ns_per_tick: ns / case.ticks as f64,
                 evaluations_per_tick: outcome.map_or(0.0, |o| o.1),
             });
         }
     }
     points
-}
-
-/// One point of the stiffness sweep: the stiff drag at band stiffness `k` and rate `rate`,
-/// run to its resolvable horizon and compared there, or, beyond k = 1e7, run undamped for
-/// [`UNRESOLVABLE_SECONDS`] and judged by boundedness and energy.
-#[derive(Clone, Debug)]
-pub struct StiffCase {
-    pub k: f64,
-    pub rate: f64,
-    pub ticks: u64,
-    pub scenario: Scenario,
-    pub reference: Option<StiffReference>,
-}
-
-impl StiffCase {
-    pub fn new(k: f64, rate: f64) -> Self {
-        let Some(horizon) = resolvable_horizon(k) else {
-            let mut scenario = Scenario::named("undamped").expect("built-in");
-            scenario.params.stiffness = k;
-            return Self {
-                k,
-                rate,
-                ticks: (UNRESOLVABLE_SECONDS * rate).round() as u64,
-                scenario,
-                reference: None,
-            };
-        };
-        let mut scenario = Scenario::named("stiff").expect("built-in");
-        scenario.params.stiffness = k;
-        let ticks = ((horizon * rate).round() as u64).max(1);
-        let mass = scenario.params.mass_properties().expect("valid");
-        let taylor = run_engine(&scenario, rate, ticks, Engine::TIGHTEST_TAYLOR)
-            .expect("the tight reference converges");
-        let dop853 = run_engine(&scenario, rate, ticks, Engine::TIGHTEST_DOP853)
-            .expect("the tight reference converges");
-        Self {
-            k,
-            rate,
-            ticks,
-            reference: Some(StiffReference {
-                state: taylor.0,
-                agreement: pose_error(&taylor.0, &dop853.0, &mass),
-            }),
-            scenario,
-        }
-    }
-
-    /// Simulated seconds run.
-    pub fn seconds(&self) -> f64 {
-        self.ticks as f64 / self.rate
-    }
 }
 
 /// One integrator on one [`StiffCase`].
@@ -594,7 +328,7 @@ fn stiffness_sweep(cases: &[StiffCase], quick: bool) -> Vec<StiffPoint> {
         for integrator in Integrator::ALL {
             let fresh = || Run::of(scenario, integrator, dt).expect("valid");
             let mut run = fresh();
-            let e0 = run.sim.energy();
+            let e0 = run.stepper.energy();
             let (mut substeps, mut evaluations) = (0u64, 0u64);
             let mut growth = f64::NEG_INFINITY;
             let mut outcome = Ok(());
@@ -605,7 +339,7 @@ fn stiffness_sweep(cases: &[StiffCase], quick: bool) -> Vec<StiffPoint> {
                 }
                 substeps += u64::from(run.last_step.substeps);
                 evaluations += u64::from(run.last_step.evaluations);
-                growth = growth.max((run.sim.energy() - e0) / e0);
+                growth = growth.max((run.stepper.energy() - e0) / e0);
             }
             let diverged_at = outcome.err().map(|d| d.step);
             let ns = median_ns(if quick { 3 } else { 15 }, || {
@@ -621,7 +355,7 @@ fn stiffness_sweep(cases: &[StiffCase], quick: bool) -> Vec<StiffPoint> {
                 error: case
                     .reference
                     .filter(|_| diverged_at.is_none())
-                    .map(|r| pose_error(&run.sim.state, &r.state, &mass)),
+                    .map(|r| run.stepper.state.pose_error(&r.state, &mass)),
                 energy_growth: (case.reference.is_none() && diverged_at.is_none())
                     .then_some(growth),
                 diverged_at,
@@ -647,16 +381,16 @@ fn stiff_invariants(quick: bool) -> Vec<(Integrator, InvariantDrift)> {
         .iter()
         .map(|&integrator| {
             let mut run = Run::of(&scenario, integrator, 0.01).expect("valid");
-            let mass = run.sim.mass;
-            let e0 = run.sim.energy();
-            let l0 = angular_momentum_about(&run.sim.state, &mass, SEED_DRAG_TARGET);
+            let mass = run.stepper.mass;
+            let e0 = run.stepper.energy();
+            let l0 = angular_momentum_about(&run.stepper.state, &mass, TUTORIAL_PULL_TARGET);
             let (mut energy, mut momentum) = (0.0_f64, 0.0_f64);
             for _ in 0..steps {
                 if let Err(d) = run.advance() {
                     return (integrator, Err(d.step));
                 }
-                energy = energy.max((run.sim.energy() - e0).abs() / e0);
-                let l = angular_momentum_about(&run.sim.state, &mass, SEED_DRAG_TARGET);
+                energy = energy.max((run.stepper.energy() - e0).abs() / e0);
+                let l = angular_momentum_about(&run.stepper.state, &mass, TUTORIAL_PULL_TARGET);
                 momentum = momentum.max((l - l0).abs());
             }
             (integrator, Ok((energy, momentum)))
@@ -676,7 +410,7 @@ fn ledger_residual(scenario: &Scenario, integrator: Integrator, steps: u64) -> R
     let mut worst: f64 = 0.0;
     for _ in 0..steps {
         run.advance().map_err(|d| d.step)?;
-        worst = worst.max(run.ledger.residual(run.sim.energy()).abs());
+        worst = worst.max(run.ledger.residual(run.stepper.energy()).abs());
     }
     Ok(worst / run.ledger.throughput())
 }
@@ -857,7 +591,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     let sweep = stiffness_sweep(&cases, args.quick);
     writeln!(
         table,
-        "\n## Stiffness sweep: stiff drags from rest, each k judged at the horizon its \
+        "\n## Stiffness sweep: stiff pulls from rest, each k judged at the horizon its \
          references resolve (error in px against the RK4 reference / ns per step; auto: mean \
          substeps and force evaluations per step, fall-backs). Beyond k = 1e7 no horizon \
          resolves a state: undamped for {UNRESOLVABLE_SECONDS} s, bounded or not, and the \
@@ -913,7 +647,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
 
     writeln!(
         table,
-        "\n## Engines for auto: candidates on the stiff drags at 100 Hz, restarted every fixed \
+        "\n## Engines for auto: candidates on the stiff pulls at 100 Hz, restarted every fixed \
          step (error in px at the horizon against the reference; ns per fixed step of the core \
          alone; force evaluations per fixed step, for Taylor series coefficient orders)\n"
     )?;
@@ -965,7 +699,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     )?;
     writeln!(table, "| integrator | seed | stiff |")?;
     writeln!(table, "|---|---|---|")?;
-    let seed = Scenario::named("seed").expect("built-in");
+    let seed = Scenario::named("tutorial").expect("built-in");
     let stiff = Scenario::named("stiff").expect("built-in");
     let steps = if args.quick { 100 } else { 1000 };
     for integrator in Integrator::ALL {
@@ -1289,7 +1023,7 @@ fn peers_section(
         let empty = measure::empty_app_ns_per_tick(rate, args.quick);
         let seed = points
             .iter()
-            .find(|p| p.scene == "seed" && p.rate == rate && p.contender == NAMES[0]);
+            .find(|p| p.scene == "tutorial" && p.rate == rate && p.contender == NAMES[0]);
         if let Some(seed) = seed {
             writeln!(
                 table,

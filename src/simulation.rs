@@ -1,7 +1,12 @@
 //! The physics plugin: the box's state as components, the band as an entity, and the fixed
-//! step as three chained system sets: accumulate forces and torques, integrate, publish.
+//! step as three chained system sets: accumulate forces and torques (and book the hand's
+//! work), integrate (and book what damping took out), publish (render snapshots, the energy
+//! books' settlement, taps ended, the step counted). It owns the body, the energy books and
+//! the step statistics, and puts them back on [`ResetScene`].
 //!
-//! Every system is a thin loop over the numerical core in [`crate::physics`].
+//! Headless, and usable alone (the benchmarks and the side-by-side with the peers run it
+//! without the rest of the game). Every system is a thin loop over the numerical core in
+//! [`crate::physics`].
 
 use std::time::Duration;
 
@@ -14,6 +19,7 @@ use crate::physics::{
     AngularState, AutoSettings, BandEnds, BodyState, Energies, EnergyLedger, Forces, Integrator,
     LinearState, MassProperties, SceneParams, damping_wrench,
 };
+use crate::schedule::GameSystems;
 
 pub struct SimulationPlugin;
 
@@ -35,12 +41,19 @@ impl Plugin for SimulationPlugin {
                     .chain(),
             )
             .add_systems(Startup, spawn_box)
-            // The step rate can change during play (a control); apply it before the loop.
+            .add_observer(reset_bodies_and_books)
+            // The step rate can change during play (a control); apply it before the loop. The
+            // game orders this set after its input and controls (`schedule`); placed before the
+            // loop here too, because the plugin also runs without the game.
+            .configure_sets(
+                RunFixedMainLoop,
+                GameSystems::ApplySettings.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+            )
             .add_systems(
                 RunFixedMainLoop,
                 apply_step_rate
                     .run_if(resource_changed::<SceneParams>)
-                    .in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+                    .in_set(GameSystems::ApplySettings),
             )
             .add_systems(
                 FixedUpdate,
@@ -60,14 +73,23 @@ impl Plugin for SimulationPlugin {
 /// The fixed step, in order: the tutorial's total reaction split into ECS stages.
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum PhysicsSystems {
-    /// Sum every force and torque on each body into its [`ForceAccumulator`].
+    /// Book the hand's work since the last step in the energy ledger, then sum every force
+    /// and torque on each body into its [`ForceAccumulator`].
     Accumulate,
     /// Advance each body by one fixed step with the [`Integrator`] resource, from its
     /// accumulated forces, then clear the accumulator.
     Integrate,
-    /// Hand the new state to the rest of the app (render snapshots, step counter).
+    /// Hand the new state to the rest of the app: the render snapshots, the energy books
+    /// settled (energies by kind, the ledger's residual), taps' bands removed after their one
+    /// step, the step counted.
     Publish,
 }
+
+/// The scene back at its start: the box at rest at the centre, no band, the books, the
+/// statistics, the graph and the trail started over. Triggered by the reset control; each
+/// plugin observes it for the state it owns.
+#[derive(Event, Debug, Clone, Copy, Default)]
+pub struct ResetScene;
 
 /// Marks the pulled box.
 #[derive(Component, Debug, Default)]
@@ -133,14 +155,14 @@ fn lerp(a: f64, b: f64, t: f64) -> f64 {
     a + (b - a) * t
 }
 
-/// What the integrator did: the latest step's substeps (most over the bodies) and whether
-/// the budget capped it (`auto` fell back to `implicit`), the fall-backs since start-up, and
-/// the latest step refused because it would have left the state non-finite (which
-/// integrator, which step).
+/// What the integrator did: the latest step's substeps (most over the bodies) and whether it
+/// fell back (`auto`, over its budget, took one `implicit` step), the fall-backs since
+/// start-up, and the latest step refused because it would have left the state non-finite
+/// (which integrator, which step).
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
 pub struct StepStats {
     pub substeps: u32,
-    pub capped: bool,
+    pub fell_back: bool,
     pub fallbacks: u64,
     pub divergence: Option<(Integrator, u64)>,
 }
@@ -211,9 +233,9 @@ fn settle_books(
     books.residual = books.ledger.residual(energies.total());
 }
 
-/// Puts every schedule the app has now on the single-threaded executor: for one box, on two
-/// cores, the multi-threaded one costs 50 to 60 times more per tick (README, "Benchmarks").
-/// The benchmarks and the side-by-side with the peers measure with it.
+/// Puts every schedule the app has now on the single-threaded executor: for one box the
+/// multi-threaded one costs many times more per tick (README, "Benchmarks"). The benchmarks
+/// and the side-by-side with the peers measure with it.
 pub fn run_single_threaded(app: &mut App) {
     let mut schedules = app.world_mut().resource_mut::<Schedules>();
     for (_, schedule) in schedules.iter_mut() {
@@ -255,24 +277,46 @@ pub fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) 
     }
 }
 
-/// Spawns the box at rest at the centre of the scene.
-pub fn spawn_box(mut commands: Commands, params: Res<SceneParams>) {
-    let mass = match params.mass_properties() {
-        Ok(mass) => mass,
-        Err(error) => {
-            error!("cannot spawn the box: {error}");
-            return;
-        }
-    };
-    let state = BodyState::at_rest(DVec2::ZERO);
-    commands.spawn((
-        Name::new("Box"),
+/// The box as components, in `state`, with nothing acting on it yet: the one way every box
+/// is made or put back (the game, reset, the benchmarks, the side-by-side). Its render
+/// snapshots both hold `state`, so the first frame drawn never jumps.
+pub fn rigid_box(mass: MassProperties, state: BodyState) -> impl Bundle {
+    (
         RigidBox,
         mass,
         state.linear,
         state.angular,
+        ForceAccumulator::default(),
         RenderSnapshots::at_rest(state),
-    ));
+    )
+}
+
+/// Spawns the box at rest at the centre of the scene.
+pub fn spawn_box(mut commands: Commands, params: Res<SceneParams>) {
+    match params.mass_properties() {
+        Ok(mass) => {
+            let rest = BodyState::at_rest(DVec2::ZERO);
+            commands.spawn((Name::new("Box"), rigid_box(mass, rest)));
+        }
+        Err(error) => error!("cannot spawn the box: {error}"),
+    }
+}
+
+/// Every box back at rest at the centre (its mass kept), and the books and statistics of the
+/// run started over.
+fn reset_bodies_and_books(
+    _reset: On<ResetScene>,
+    mut commands: Commands,
+    boxes: Query<(Entity, &MassProperties), With<RigidBox>>,
+    mut stats: ResMut<StepStats>,
+    mut books: ResMut<EnergyBooks>,
+) {
+    for (entity, mass) in &boxes {
+        let rest = BodyState::at_rest(DVec2::ZERO);
+        commands.entity(entity).insert(rigid_box(*mass, rest));
+    }
+    *stats = StepStats::default();
+    *books = EnergyBooks::default();
 }
 
 /// Band force k·(anchor − corner) at the corner, and its torque r × F.
@@ -297,7 +341,7 @@ fn accumulate_band_force(
     }
 }
 
-/// Drag force −b·v and drag torque −c·I·ω.
+/// Damping force −b·v and damping torque −c·I·ω.
 fn accumulate_damping(
     params: Res<SceneParams>,
     mut bodies: Query<(
@@ -346,13 +390,13 @@ fn integrate(
     } = settings;
     let dt = time.timestep().as_secs_f64();
     stats.substeps = 0;
-    stats.capped = false;
+    stats.fell_back = false;
     for (mut linear, mut angular, mass, mut accumulator) in &mut bodies {
         let model = params.force_model(*mass, accumulator.band);
         let mut state = body_state(&linear, &angular);
         let info = integrator.step_with(&mut state, &model, accumulator.forces, dt, &auto);
         stats.substeps = stats.substeps.max(info.substeps);
-        stats.capped |= info.fell_back;
+        stats.fell_back |= info.fell_back;
         stats.fallbacks += u64::from(info.fell_back);
         // A divergent explicit method (a stiff band) must not put NaN, infinity or an absurd
         // value into a component: refuse the step, keep the last sane state, and say so.

@@ -31,7 +31,7 @@ fn simulate_writes_a_header_and_a_row_per_step_from_the_initial_state() {
     let last: Vec<f64> = lines[11].split(',').map(|v| v.parse().unwrap()).collect();
     assert_eq!(last[0], 10.0);
     assert!((last[1] - 0.1).abs() < 1e-12);
-    // The seed drag pulls up and to the right.
+    // The tutorial scene pulls up and to the right.
     assert!(last[2] > 0.0 && last[3] > 0.0);
 }
 
@@ -42,9 +42,9 @@ fn simulate_is_bit_identical_across_runs() {
         "rk4",
         "--steps",
         "300",
-        "--drag",
+        "--pull",
         "0:100:-200,80",
-        "--drag",
+        "--pull",
         "150:250:100,-150",
     ];
     let first = simulate(&args);
@@ -54,7 +54,7 @@ fn simulate_is_bit_identical_across_runs() {
 }
 
 #[test]
-fn simulate_applies_overrides_initial_state_and_drags() {
+fn simulate_applies_overrides_initial_state_and_pulls() {
     let output = simulate(&[
         "--scene",
         "rest",
@@ -84,8 +84,8 @@ fn simulate_applies_overrides_initial_state_and_drags() {
 }
 
 #[test]
-fn a_drag_pulls_only_during_its_steps() {
-    let output = simulate(&["--scene", "rest", "--steps", "6", "--drag", "2:4:100,0"]);
+fn a_pull_pulls_only_during_its_steps() {
+    let output = simulate(&["--scene", "rest", "--steps", "6", "--pull", "2:4:100,0"]);
     assert!(output.status.success());
     let text = stdout(&output);
     let column = text
@@ -115,10 +115,10 @@ fn bad_arguments_get_a_clear_message_and_a_non_zero_exit() {
         (&["--width", "0"], "greater than zero"),
         (&["--k", "-1"], "zero or more"),
         (&["--angular-damping", "inf"], "not a finite number"),
-        (&["--drag", "10:5:1,2"], "must end after it starts"),
-        (&["--drag", "0:5"], "expected START:END:X,Y"),
-        (&["--drag", "0:5:1"], "expected X,Y"),
-        (&["--drag", "a:5:1,2"], "not a step number"),
+        (&["--pull", "10:5:1,2"], "must end after it starts"),
+        (&["--pull", "0:5"], "expected START:END:X,Y"),
+        (&["--pull", "0:5:1"], "expected X,Y"),
+        (&["--pull", "a:5:1,2"], "not a step number"),
         (&["--init", "1,2,3"], "expected X,Y,THETA,VX,VY,OMEGA"),
         (&["--steps", "-3"], "--steps"),
         (&["--k", "abc"], "'abc' is not a number"),

@@ -4,9 +4,10 @@ mod common;
 
 use common::*;
 use rubber_band_box::controls::{
-    FASTER, MORE_STEPS, Overlays, PAUSE, RESET, SINGLE_STEP, SLOWER, SOFTER, STIFFER, TRAIL,
-    VECTORS,
+    CONTROLS, FASTER, MORE_STEPS, PAUSE, RESET, SINGLE_STEP, SLOWER, SOFTER, STIFFER, TRAIL,
+    VECTORS, help_line, key_hint,
 };
+use rubber_band_box::overlays::Overlays;
 
 #[test]
 fn pause_stops_the_fixed_steps_and_resume_continues() {
@@ -92,12 +93,12 @@ fn k_moves_by_factors_of_ten_within_its_range_and_the_next_step_uses_it() {
     let anchor = game.the_band().ends.anchor;
     game.tap_key(STIFFER);
     game.update(1);
-    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
-    sim.grab(anchor);
-    sim.step(0.01);
-    sim.params.stiffness = 200.0;
-    sim.step(0.01);
-    assert_eq!(game.state(), (sim.state.linear, sim.state.angular));
+    let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
+    stepper.grab(anchor);
+    stepper.step(0.01);
+    stepper.params.stiffness = 200.0;
+    stepper.step(0.01);
+    assert_eq!(game.state(), (stepper.state.linear, stepper.state.angular));
 }
 
 #[test]
@@ -145,4 +146,31 @@ fn vectors_and_trail_toggle() {
     game.tap_key(VECTORS);
     game.update(1);
     assert!(!game.world().resource::<Overlays>().vectors);
+}
+
+/// The keys are listed once (`CONTROLS`): README's table, the help line and the title hint
+/// are all written from that list, so none can name a key the game does not read or miss one.
+#[test]
+fn readme_the_help_line_and_the_title_name_every_control_as_the_list_does() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .expect("README.md");
+    let help = help_line();
+    let hint = key_hint();
+    for control in CONTROLS {
+        let keys: Vec<String> = control
+            .label
+            .split(' ')
+            .map(|key| format!("`{key}`"))
+            .collect();
+        let row = format!("| {} | {} |", keys.join(" / "), control.effect);
+        assert!(readme.contains(&row), "README lacks the row\n{row}");
+        assert!(help.contains(&format!("{}: {}", control.label, control.name)));
+        assert!(hint.contains(control.label));
+    }
+    let mut game = Game::stepping();
+    game.update(1);
+    assert_eq!(game.hud(HudLine::Help), help);
+    let window = game.window;
+    let title = game.world().get::<Window>(window).unwrap().title.clone();
+    assert!(title.ends_with(&hint), "{title}");
 }

@@ -2,13 +2,13 @@
 
 use bevy::math::DVec2;
 use rubber_band_box::physics::{
-    BandEnds, BodyState, Energies, Integrator, MassProperties, ParamError, SceneParams, Simulation,
+    BandEnds, BodyState, Energies, Integrator, MassProperties, ParamError, SceneParams, Stepper,
     Wrench, damping_wrench, rotate, symplectic_euler,
 };
 
 #[test]
 fn seed_scene_converts_the_tutorials_per_frame_units() {
-    let p = SceneParams::seed();
+    let p = SceneParams::tutorial();
     assert_eq!(p.mass, 5.0);
     assert_eq!(p.size, DVec2::new(60.0, 60.0));
     assert!((p.stiffness - 20.0).abs() < 1e-12);
@@ -34,14 +34,14 @@ fn bad_parameters_are_refused_with_the_field_and_value() {
         (|p| p.step_rate_hz = 0.0, "step rate"),
     ];
     for (spoil, field) in cases {
-        let mut params = SceneParams::seed();
+        let mut params = SceneParams::tutorial();
         spoil(&mut params);
         let error: ParamError = params.validate().unwrap_err();
         assert_eq!(error.field, field);
         assert!(error.to_string().starts_with(field), "{error}");
-        assert!(Simulation::new(params).is_err());
+        assert!(Stepper::new(params).is_err());
     }
-    assert!(SceneParams::seed().validate().is_ok());
+    assert!(SceneParams::tutorial().validate().is_ok());
 }
 
 #[test]
@@ -52,7 +52,7 @@ fn rotation_is_counter_clockwise() {
 
 #[test]
 fn nearest_corner_follows_the_orientation_and_breaks_ties_in_tutorial_order() {
-    let mass = SceneParams::seed().mass_properties().unwrap();
+    let mass = SceneParams::tutorial().mass_properties().unwrap();
     let mut state = BodyState::at_rest(DVec2::new(100.0, 0.0));
     assert_eq!(
         mass.nearest_corner(&state, DVec2::new(200.0, 100.0)),
@@ -78,7 +78,7 @@ fn nearest_corner_follows_the_orientation_and_breaks_ties_in_tutorial_order() {
 /// The tutorial's five steps by hand, for one state and band, against one core step.
 #[test]
 fn one_step_equals_the_five_step_total_reaction_by_hand() {
-    let params = SceneParams::seed();
+    let params = SceneParams::tutorial();
     let (m, inertia, k, b, c, dt) = (5.0, 3000.0, 20.0, 5.0, params.angular_damping, 0.01);
     let (x, y, vx, vy, theta, omega) = (10.0, -5.0, 3.0, 4.0, 0.3_f64, 0.5);
     let (local_x, local_y, anchor_x, anchor_y) = (30.0, 30.0, 100.0, 50.0);
@@ -87,11 +87,11 @@ fn one_step_equals_the_five_step_total_reaction_by_hand() {
     let (s, co) = theta.sin_cos();
     let (rx, ry) = (co * local_x - s * local_y, s * local_x + co * local_y);
     let (band_x, band_y) = (k * (anchor_x - (x + rx)), k * (anchor_y - (y + ry)));
-    // 1. Sum all forces: band and drag.
+    // 1. Sum all forces: band and pull.
     let (fx, fy) = (band_x - b * vx, band_y - b * vy);
     // 2. Linear acceleration.
     let (ax, ay) = (fx / m, fy / m);
-    // 3. Total torque: r x F of the band, plus the drag torque.
+    // 3. Total torque: r x F of the band, plus the pull torque.
     let torque = rx * band_y - ry * band_x - c * inertia * omega;
     // 4. Angular acceleration.
     let alpha = torque / inertia;
@@ -99,20 +99,20 @@ fn one_step_equals_the_five_step_total_reaction_by_hand() {
     let (vx1, vy1, omega1) = (vx + ax * dt, vy + ay * dt, omega + alpha * dt);
     let (x1, y1, theta1) = (x + vx1 * dt, y + vy1 * dt, theta + omega1 * dt);
 
-    let mut sim = Simulation::new(params).unwrap();
-    sim.integrator = Integrator::Symplectic;
-    sim.state.linear.position = DVec2::new(x, y);
-    sim.state.linear.velocity = DVec2::new(vx, vy);
-    sim.state.angular.orientation = theta;
-    sim.state.angular.angular_velocity = omega;
-    sim.band = Some(BandEnds {
+    let mut stepper = Stepper::new(params).unwrap();
+    stepper.integrator = Integrator::Symplectic;
+    stepper.state.linear.position = DVec2::new(x, y);
+    stepper.state.linear.velocity = DVec2::new(vx, vy);
+    stepper.state.angular.orientation = theta;
+    stepper.state.angular.angular_velocity = omega;
+    stepper.band = Some(BandEnds {
         local_point: DVec2::new(local_x, local_y),
         anchor: DVec2::new(anchor_x, anchor_y),
     });
-    sim.step(dt);
+    stepper.step(dt);
 
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1.0);
-    let s1 = sim.state;
+    let s1 = stepper.state;
     assert!(close(s1.linear.velocity.x, vx1) && close(s1.linear.velocity.y, vy1));
     assert!(close(s1.angular.angular_velocity, omega1));
     assert!(close(s1.linear.position.x, x1) && close(s1.linear.position.y, y1));
@@ -131,20 +131,23 @@ fn a_force_at_the_centre_makes_no_torque_and_an_off_centre_one_does() {
 
 #[test]
 fn a_pull_along_the_diagonal_through_the_centre_never_turns_the_box() {
-    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
-    sim.grab(DVec2::new(150.0, 150.0));
-    assert_eq!(sim.band.unwrap().local_point, DVec2::new(30.0, 30.0));
+    let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
+    stepper.grab(DVec2::new(150.0, 150.0));
+    assert_eq!(stepper.band.unwrap().local_point, DVec2::new(30.0, 30.0));
     for _ in 0..500 {
-        sim.step(0.01);
-        assert_eq!(sim.state.angular.angular_velocity, 0.0);
-        assert_eq!(sim.state.linear.position.x, sim.state.linear.position.y);
+        stepper.step(0.01);
+        assert_eq!(stepper.state.angular.angular_velocity, 0.0);
+        assert_eq!(
+            stepper.state.linear.position.x,
+            stepper.state.linear.position.y
+        );
     }
-    assert!(sim.state.linear.position.x > 50.0);
+    assert!(stepper.state.linear.position.x > 50.0);
 }
 
 #[test]
 fn damping_alone_decays_each_step_by_one_minus_rate_times_dt() {
-    let params = SceneParams::seed();
+    let params = SceneParams::tutorial();
     let mass = params.mass_properties().unwrap();
     let dt = params.dt();
     let mut state = BodyState::at_rest(DVec2::ZERO);
@@ -172,12 +175,12 @@ fn damping_alone_decays_each_step_by_one_minus_rate_times_dt() {
 
 #[test]
 fn without_a_band_a_box_at_rest_stays_exactly_at_rest() {
-    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
-    let start = sim.state;
+    let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
+    let start = stepper.state;
     for _ in 0..1000 {
-        sim.step(0.01);
+        stepper.step(0.01);
     }
-    assert_eq!(sim.state, start);
+    assert_eq!(stepper.state, start);
 }
 
 #[test]
@@ -185,16 +188,16 @@ fn undamped_band_energy_stays_bounded_under_symplectic_euler() {
     let params = SceneParams {
         linear_damping: 0.0,
         angular_damping: 0.0,
-        ..SceneParams::seed()
+        ..SceneParams::tutorial()
     };
-    let mut sim = Simulation::new(params).unwrap();
-    sim.integrator = Integrator::Symplectic;
-    sim.grab(DVec2::new(150.0, 100.0));
-    let e0 = sim.energy();
+    let mut stepper = Stepper::new(params).unwrap();
+    stepper.integrator = Integrator::Symplectic;
+    stepper.grab(DVec2::new(150.0, 100.0));
+    let e0 = stepper.energy();
     let mut worst: f64 = 0.0;
     for _ in 0..10_000 {
-        sim.step(0.01);
-        worst = worst.max((sim.energy() - e0).abs() / e0);
+        stepper.step(0.01);
+        worst = worst.max((stepper.energy() - e0).abs() / e0);
     }
     // Symplectic: the energy error oscillates at O(omega dt) and does not grow.
     assert!(worst < 0.05, "relative energy error {worst}");
@@ -209,7 +212,7 @@ fn mass_properties_refuse_a_degenerate_box() {
 
 #[test]
 fn energies_by_kind_add_up_to_the_models_energy() {
-    let params = SceneParams::seed();
+    let params = SceneParams::tutorial();
     let mass = params.mass_properties().unwrap();
     let band = BandEnds {
         anchor: DVec2::new(100.0, -40.0),

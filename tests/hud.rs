@@ -12,7 +12,7 @@ fn readings() -> HudReadings {
     HudReadings {
         integrator: Integrator::Auto,
         substeps: 3,
-        capped: false,
+        fell_back: false,
         fallbacks: 0,
         divergence: None,
         step_rate_hz: 100.0,
@@ -52,14 +52,14 @@ fn lines_say_what_the_readings_hold() {
     // No energy has passed through yet: no relative error to show.
     assert!(HudLine::Residual.text(&r).contains("(- of energy"));
 
-    let capped = HudReadings {
-        capped: true,
+    let fell_back = HudReadings {
+        fell_back: true,
         fallbacks: 4,
         ..readings()
     };
     assert_eq!(
-        HudLine::Integrator.text(&capped),
-        "integrator auto: budget capped: implicit, 4 fall-backs to implicit"
+        HudLine::Integrator.text(&fell_back),
+        "integrator auto: fell back to implicit (over budget), 4 fall-backs to implicit"
     );
 
     let paused = HudReadings {
@@ -156,18 +156,21 @@ fn the_history_starts_over_if_time_goes_back() {
 }
 
 #[test]
-fn a_capped_step_is_shown_as_such() {
+fn a_step_that_fell_back_is_shown_as_such() {
     let mut game = Game::stepping();
     game.world().resource_mut::<SceneParams>().stiffness = 1e9;
     game.press_at(DVec2::new(200.0, 100.0));
     game.update(3);
-    assert!(game.world().resource::<StepStats>().capped);
+    assert!(game.world().resource::<StepStats>().fell_back);
     let line = game.hud(HudLine::Integrator);
-    assert!(line.contains("budget capped: implicit"), "{line}");
+    assert!(
+        line.contains("fell back to implicit (over budget)"),
+        "{line}"
+    );
     // Back to a soft band: the next steps are substeps again.
     game.world().resource_mut::<SceneParams>().stiffness = 20.0;
     game.update(2);
-    assert!(!game.world().resource::<StepStats>().capped);
+    assert!(!game.world().resource::<StepStats>().fell_back);
 }
 
 #[test]
@@ -197,7 +200,7 @@ fn the_energy_panel_is_live_while_paused() {
     game.tap_key(PAUSE);
     game.update(2);
     let before = game.hud(HudLine::BandPotential);
-    // Drag the anchor further while paused: no step runs, the band stretches.
+    // Pull the anchor further while paused: no step runs, the band stretches.
     game.cursor(Some(world_to_screen(DVec2::new(300.0, 200.0))));
     game.update(2);
     let after = game.hud(HudLine::BandPotential);

@@ -1,11 +1,12 @@
 //! The integrators against closed forms, invariants, the tutorial and the hard cases.
 
 use bevy::math::DVec2;
-use rubber_band_box::physics::scenario::SEED_DRAG_TARGET;
+use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
 use rubber_band_box::physics::{
-    AutoSettings, BodyState, Drag, Integrator, Run, Scenario, SceneParams, angular_momentum_about,
+    AutoSettings, BodyState, Integrator, Pull, Run, Scenario, SceneParams, angular_momentum_about,
 };
-use rubber_band_box::report::{diagonal_exact, hard_cases, pose_error};
+use rubber_band_box::references::diagonal_exact;
+use rubber_band_box::report::hard_cases;
 
 /// The largest pose error against the closed form over 2 s of the diagonal pull.
 fn diagonal_error(integrator: Integrator, dt: f64) -> f64 {
@@ -17,7 +18,7 @@ fn diagonal_error(integrator: Integrator, dt: f64) -> f64 {
     for _ in 0..steps {
         run.advance().unwrap();
         let exact = diagonal_exact(run.time());
-        worst = worst.max(pose_error(&run.sim.state, &exact, &mass));
+        worst = worst.max(run.stepper.state.pose_error(&exact, &mass));
     }
     worst
 }
@@ -61,7 +62,7 @@ fn no_integrator_turns_the_box_on_the_diagonal_pull() {
         let mut run = Run::of(&Scenario::named("diagonal").unwrap(), integrator, 0.01).unwrap();
         for _ in 0..500 {
             run.advance().unwrap();
-            let s = run.sim.state;
+            let s = run.stepper.state;
             assert_eq!(s.angular.angular_velocity, 0.0, "{integrator}");
             assert_eq!(s.angular.orientation, 0.0, "{integrator}");
             assert_eq!(s.linear.position.x, s.linear.position.y, "{integrator}");
@@ -82,10 +83,10 @@ struct InvariantDrift {
 fn undamped_drift(integrator: Integrator, steps: u64) -> Result<InvariantDrift, u64> {
     let scenario = Scenario::named("undamped").unwrap();
     let mut run = Run::of(&scenario, integrator, 0.01).unwrap();
-    let mass = run.sim.mass;
-    let anchor = SEED_DRAG_TARGET;
-    let e0 = run.sim.energy();
-    let l0 = angular_momentum_about(&run.sim.state, &mass, anchor);
+    let mass = run.stepper.mass;
+    let anchor = TUTORIAL_PULL_TARGET;
+    let e0 = run.stepper.energy();
+    let l0 = angular_momentum_about(&run.stepper.state, &mass, anchor);
     let tenth = steps / 10;
     let mut drift = InvariantDrift {
         energy_start: e0,
@@ -96,14 +97,14 @@ fn undamped_drift(integrator: Integrator, steps: u64) -> Result<InvariantDrift, 
     };
     for step in 1..=steps {
         run.advance().map_err(|d| d.step)?;
-        let e = run.sim.energy();
+        let e = run.stepper.energy();
         let error = (e - e0).abs() / e0;
         if step <= tenth {
             drift.energy_error_early = drift.energy_error_early.max(error);
         } else if step > steps - tenth {
             drift.energy_error_late = drift.energy_error_late.max(error);
         }
-        let l = angular_momentum_about(&run.sim.state, &mass, anchor);
+        let l = angular_momentum_about(&run.stepper.state, &mass, anchor);
         drift.momentum_error = drift.momentum_error.max((l - l0).abs());
         drift.energy_end = e;
     }
@@ -223,22 +224,22 @@ const TUTORIAL_FRAMES: [(u64, [f64; 6]); 6] = [
 #[test]
 fn seed_reproduces_the_tutorials_trajectory_to_round_off() {
     // Screen (520, 120) is world (200, 120); pressed for 30 frames.
-    let drags = vec![Drag {
+    let pulls = vec![Pull {
         start: 0,
         end: 30,
         target: DVec2::new(200.0, 120.0),
     }];
     let mut run = Run::new(
-        SceneParams::seed(),
+        SceneParams::tutorial(),
         BodyState::default(),
-        drags,
+        pulls,
         Integrator::Seed,
         0.01,
     )
     .unwrap();
     for (frame, [x, y, theta, vx, vy, omega]) in TUTORIAL_FRAMES {
         run.advance_by(frame - run.step).unwrap();
-        let s = run.sim.state;
+        let s = run.stepper.state;
         // y down to y up, per frame to per second.
         let expected = [
             x - 320.0,
@@ -272,7 +273,7 @@ fn the_default_integrator_never_diverges_on_a_hard_case() {
         let mut run = Run::of(&case.scenario, default, 1.0 / case.rate).unwrap();
         run.advance_by(case.steps)
             .unwrap_or_else(|d| panic!("{}: {d}", case.name));
-        assert!(run.sim.state.is_finite());
+        assert!(run.stepper.state.is_finite());
     }
 }
 
@@ -283,7 +284,7 @@ fn every_integrator_stays_bounded_or_reports_its_divergence() {
         for integrator in Integrator::ALL {
             let mut run = Run::of(&case.scenario, integrator, 1.0 / case.rate).unwrap();
             match run.advance_by(case.steps) {
-                Ok(()) => assert!(run.sim.state.is_finite(), "{} {integrator}", case.name),
+                Ok(()) => assert!(run.stepper.state.is_finite(), "{} {integrator}", case.name),
                 Err(d) => {
                     assert_eq!(d.integrator, integrator);
                     assert!(d.step <= case.steps);
@@ -304,7 +305,7 @@ fn a_zero_length_band_exerts_nothing() {
     for integrator in Integrator::ALL {
         let mut run = Run::of(&Scenario::named("zero-length").unwrap(), integrator, 0.01).unwrap();
         run.advance_by(100).unwrap();
-        assert_eq!(run.sim.state, BodyState::default(), "{integrator}");
+        assert_eq!(run.stepper.state, BodyState::default(), "{integrator}");
     }
 }
 
@@ -314,10 +315,10 @@ fn the_implicit_step_holds_a_very_stiff_band_at_its_corner() {
     scenario.params.stiffness = 1e9;
     let mut run = Run::of(&scenario, Integrator::Implicit, 1.0 / 64.0).unwrap();
     run.advance_by(640).unwrap();
-    let band = run.sim.band.unwrap();
-    assert!(band.length(&run.sim.state) < 1e-3);
+    let band = run.stepper.band.unwrap();
+    assert!(band.length(&run.stepper.state) < 1e-3);
     // The box hangs from the corner, its centre on the line through the anchor.
-    assert!(run.sim.state.linear.velocity.length() < 1.0);
+    assert!(run.stepper.state.linear.velocity.length() < 1.0);
 }
 
 #[test]
@@ -400,13 +401,13 @@ fn autos_engine_converges_at_the_order_of_its_series_on_the_diagonal_pull() {
                 let scenario = Scenario::named("diagonal").unwrap();
                 let mass = scenario.params.mass_properties().unwrap();
                 let mut run = Run::of(&scenario, Integrator::Auto, dt).unwrap();
-                run.sim.auto = one_step_per_fixed_step(order);
+                run.stepper.auto = one_step_per_fixed_step(order);
                 let mut worst: f64 = 0.0;
                 for _ in 0..(2.0 / dt).round() as u64 {
                     run.advance().unwrap();
                     assert_eq!(run.last_step.substeps, 1);
                     let exact = diagonal_exact(run.time());
-                    worst = worst.max(pose_error(&run.sim.state, &exact, &mass));
+                    worst = worst.max(run.stepper.state.pose_error(&exact, &mass));
                 }
                 worst
             })
@@ -421,7 +422,7 @@ fn autos_engine_converges_at_the_order_of_its_series_on_the_diagonal_pull() {
     }
 }
 
-/// The stiff drags' reference states, from tests/fixtures/stiff_references.py (SciPy's DOP853
+/// The stiff pulls' reference states, from tests/fixtures/stiff_references.py (SciPy's DOP853
 /// at a tolerance of 1e-13, checked against 3e-14): (k, rate, ticks, state, agreement).
 fn stiff_references() -> Vec<(f64, f64, u64, BodyState, f64)> {
     include_str!("fixtures/stiff_references.csv")
@@ -448,7 +449,7 @@ fn auto_meets_the_stiff_targets_at_each_horizon_without_falling_back() {
         let mass = scenario.params.mass_properties().unwrap();
         let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
         run.advance_by(ticks).unwrap();
-        let error = pose_error(&run.sim.state, &reference, &mass);
+        let error = run.stepper.state.pose_error(&reference, &mass);
         // The targets of README's stiffness table; the fixture's two solutions agree to well
         // within them.
         let target = if k <= 1e6 { 1e-5 } else { 1e-4 };
@@ -468,19 +469,19 @@ fn beyond_every_horizon_auto_falls_back_counts_it_and_never_gains_energy() {
             let mut scenario = Scenario::named("undamped").unwrap();
             scenario.params.stiffness = k;
             let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
-            let e0 = run.sim.energy();
+            let e0 = run.stepper.energy();
             let mut previous = e0;
             let steps = (10.0 * rate) as u64;
             for _ in 0..steps {
                 run.advance().unwrap();
-                let e = run.sim.energy();
+                let e = run.stepper.energy();
                 assert!(
                     e <= previous,
                     "k {k:e} at {rate} Hz, step {}: {e} > {previous}",
                     run.step
                 );
                 previous = e;
-                assert!(run.sim.state.is_sane());
+                assert!(run.stepper.state.is_sane());
             }
             // Every step fell back (the budget cannot afford any), and each was counted.
             assert_eq!(run.fallbacks, steps, "k {k:e} at {rate} Hz");
@@ -489,14 +490,14 @@ fn beyond_every_horizon_auto_falls_back_counts_it_and_never_gains_energy() {
 }
 
 #[test]
-fn the_ledger_balances_on_stiff_drags_where_auto_did_not_fall_back() {
+fn the_ledger_balances_on_stiff_pulls_where_auto_did_not_fall_back() {
     for (k, rate, ticks, _, _) in stiff_references() {
         let mut scenario = Scenario::named("stiff").unwrap();
         scenario.params.stiffness = k;
         let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
         for _ in 0..ticks {
             run.advance().unwrap();
-            let residual = run.ledger.residual(run.sim.energy()).abs();
+            let residual = run.ledger.residual(run.stepper.energy()).abs();
             assert!(
                 residual <= 1e-6 * run.ledger.throughput(),
                 "k {k:e} step {}: residual {residual} of {}",
@@ -514,7 +515,7 @@ fn a_tighter_budget_makes_auto_fall_back_sooner() {
     scenario.params.stiffness = 1e5;
     let mut run = Run::of(&scenario, Integrator::Auto, 0.01).unwrap();
     // k = 1e5 at 100 Hz needs about ten Taylor steps a fixed step.
-    run.sim.auto = AutoSettings {
+    run.stepper.auto = AutoSettings {
         max_substeps: 2,
         ..AutoSettings::default()
     };
@@ -530,18 +531,18 @@ fn soak_ten_million_undamped_steps() {
     let steps = 10_000_000;
     let scenario = Scenario::named("undamped").unwrap();
     let mut run = Run::of(&scenario, Integrator::default(), 0.01).unwrap();
-    let mass = run.sim.mass;
-    let e0 = run.sim.energy();
-    let l0 = angular_momentum_about(&run.sim.state, &mass, SEED_DRAG_TARGET);
+    let mass = run.stepper.mass;
+    let e0 = run.stepper.energy();
+    let l0 = angular_momentum_about(&run.stepper.state, &mass, TUTORIAL_PULL_TARGET);
     let (mut energy, mut momentum) = (0.0_f64, 0.0_f64);
     let started = std::time::Instant::now();
     for _ in 0..steps {
         run.advance().unwrap();
-        energy = energy.max((run.sim.energy() - e0).abs() / e0);
-        let l = angular_momentum_about(&run.sim.state, &mass, SEED_DRAG_TARGET);
+        energy = energy.max((run.stepper.energy() - e0).abs() / e0);
+        let l = angular_momentum_about(&run.stepper.state, &mass, TUTORIAL_PULL_TARGET);
         momentum = momentum.max((l - l0).abs());
     }
-    let final_energy = (run.sim.energy() - e0) / e0;
+    let final_energy = (run.stepper.energy() - e0) / e0;
     println!(
         "soak: {steps} steps of {} in {:.1} s; energy: largest relative error {energy:.2e}, \
          final {final_energy:.2e}; angular momentum about the anchor: largest change \
@@ -556,12 +557,12 @@ fn soak_ten_million_undamped_steps() {
 /// The largest ledger residual over a run of the seed scene (pulled 2 s, released, 4 s),
 /// relative to the energy that passed through.
 fn ledger_residual(integrator: Integrator, dt: f64) -> f64 {
-    let scenario = Scenario::named("seed").unwrap();
+    let scenario = Scenario::named("tutorial").unwrap();
     let mut run = Run::of(&scenario, integrator, dt).unwrap();
     let mut worst: f64 = 0.0;
     for _ in 0..(4.0 / dt).round() as u64 {
         run.advance().unwrap();
-        worst = worst.max(run.ledger.residual(run.sim.energy()).abs());
+        worst = worst.max(run.ledger.residual(run.stepper.energy()).abs());
     }
     worst / run.ledger.throughput()
 }
@@ -569,7 +570,7 @@ fn ledger_residual(integrator: Integrator, dt: f64) -> f64 {
 #[test]
 fn the_ledger_balances_exactly_where_nothing_acts() {
     // Free flight and spin, no band, no damping: every integrator keeps the energy.
-    let mut params = SceneParams::seed();
+    let mut params = SceneParams::tutorial();
     params.linear_damping = 0.0;
     params.angular_damping = 0.0;
     let mut initial = BodyState::default();
@@ -579,7 +580,7 @@ fn the_ledger_balances_exactly_where_nothing_acts() {
         let mut run = Run::new(params, initial, vec![], integrator, 0.01).unwrap();
         run.advance_by(500).unwrap();
         // Zero to round-off (`implicit` recovers the velocity from two positions).
-        let residual = run.ledger.residual(run.sim.energy());
+        let residual = run.ledger.residual(run.stepper.energy());
         assert!(
             residual.abs() <= 1e-13 * run.ledger.initial,
             "{integrator}: {residual}"

@@ -7,18 +7,18 @@ use rubber_band_box::peers::ours::Ours;
 use rubber_band_box::peers::rapier::Rapier;
 use rubber_band_box::peers::{Contender, PeerRun, unwrap_angle};
 use rubber_band_box::physics::{BodyState, Integrator, Run, Scenario};
-use rubber_band_box::report::{pose_error, reference_state};
+use rubber_band_box::references::reference_state;
 
 #[test]
 fn our_contender_steps_exactly_as_the_core() {
-    let scenario = Scenario::named("seed").unwrap();
+    let scenario = Scenario::named("tutorial").unwrap();
     let mut app = PeerRun::<Ours>::of(&scenario, 100.0);
     let mut core = Run::of(&scenario, Integrator::Auto, 0.01).unwrap();
     for _ in 0..300 {
         app.advance();
         core.advance().unwrap();
     }
-    assert_eq!(app.state(), core.sim.state);
+    assert_eq!(app.state(), core.stepper.state);
 }
 
 /// A box at rest with no band stays at rest, and a pulled one moves toward the anchor and
@@ -29,11 +29,11 @@ fn holds_the_scene<C: Contender>(tolerance: f64) {
     run.advance_by(50);
     assert_eq!(run.state(), BodyState::default(), "{}", C::NAME);
 
-    let seed = Scenario::named("seed").unwrap();
+    let seed = Scenario::named("tutorial").unwrap();
     let mut run = PeerRun::<C>::of(&seed, 100.0);
     run.advance_by(400);
     let reference = reference_state(&seed, 4.0, 1e-4);
-    let error = pose_error(&run.state(), &reference, &run.mass);
+    let error = run.state().pose_error(&reference, &run.mass);
     assert!(error < tolerance, "{}: {error} px after 4 s", C::NAME);
 }
 
@@ -51,7 +51,7 @@ fn rapier_holds_the_scene() {
 fn a_released_band_stops_pulling() {
     // Pulled for 2 s then released: afterwards only damping acts, so the speed only falls.
     fn speeds<C: Contender>() -> Vec<f64> {
-        let seed = Scenario::named("seed").unwrap();
+        let seed = Scenario::named("tutorial").unwrap();
         let mut run = PeerRun::<C>::of(&seed, 100.0);
         run.advance_by(201);
         (0..100)
@@ -82,7 +82,7 @@ fn angles_unwrap_to_the_nearest_turn() {
 #[test]
 fn the_band_acts_from_the_first_step() {
     fn first_step<C: Contender>() -> BodyState {
-        let seed = Scenario::named("seed").unwrap();
+        let seed = Scenario::named("tutorial").unwrap();
         let mut run = PeerRun::<C>::of(&seed, 100.0);
         run.advance();
         run.state()

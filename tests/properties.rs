@@ -1,4 +1,4 @@
-//! Property tests: random scenes, states, drags and input sequences. Nothing panics, nothing
+//! Property tests: random scenes, states, pulls and input sequences. Nothing panics, nothing
 //! non-finite reaches a component, there is never more than one band, and the default
 //! integrator never diverges. About 1e5 generated cases in all; set RBB_LONG=1 for ten times
 //! as many (`RBB_LONG=1 cargo test --release --test properties`).
@@ -17,7 +17,7 @@ use proptest::prelude::*;
 use common::Game;
 use rubber_band_box::controls;
 use rubber_band_box::physics::{
-    AngularState, BodyState, Drag, Integrator, LinearState, Run, SceneParams, Simulation,
+    AngularState, BodyState, Integrator, LinearState, Pull, Run, SceneParams, Stepper,
     kinetic_energy,
 };
 use rubber_band_box::pointer::Grip;
@@ -75,10 +75,10 @@ fn state() -> impl Strategy<Value = BodyState> {
     })
 }
 
-fn drags() -> impl Strategy<Value = Vec<Drag>> {
+fn pulls() -> impl Strategy<Value = Vec<Pull>> {
     prop::collection::vec(
         (0u64..100, 1u64..100, prop_oneof![point(500.0), point(1e6)]).prop_map(
-            |(start, length, target)| Drag {
+            |(start, length, target)| Pull {
                 start,
                 end: start + length,
                 target,
@@ -101,20 +101,20 @@ proptest! {
     fn runs_stay_sane_or_report_their_divergence(
         params in scene(),
         initial in state(),
-        drags in drags(),
+        pulls in pulls(),
         integrator in integrator(),
         dt in log_uniform(1e-4, 0.1),
     ) {
-        let mut run = Run::new(params, initial, drags.clone(), integrator, dt).unwrap();
+        let mut run = Run::new(params, initial, pulls.clone(), integrator, dt).unwrap();
         match run.advance_by(120) {
-            Ok(()) => prop_assert!(run.sim.state.is_sane()),
+            Ok(()) => prop_assert!(run.stepper.state.is_sane()),
             Err(d) => {
                 prop_assert_eq!(d.integrator, integrator);
                 prop_assert!(integrator != Integrator::default(), "the default diverged: {}", d);
             }
         }
         // Even a diverged run leaves finite numbers behind for the last step it accepted.
-        prop_assert!(run.sim.state.is_finite() || integrator != Integrator::default());
+        prop_assert!(run.stepper.state.is_finite() || integrator != Integrator::default());
     }
 }
 
@@ -149,7 +149,7 @@ proptest! {
             && non_negative(params.stiffness) && non_negative(params.linear_damping)
             && non_negative(params.angular_damping);
         prop_assert_eq!(params.validate().is_ok(), valid);
-        prop_assert_eq!(Simulation::new(params).is_ok(), valid);
+        prop_assert_eq!(Stepper::new(params).is_ok(), valid);
     }
 }
 
@@ -166,12 +166,12 @@ proptest! {
         dt in log_uniform(1e-4, 0.1),
     ) {
         let params = SceneParams { linear_damping: b, angular_damping: c, ..params };
-        let mut sim = Simulation::new(params).unwrap();
-        sim.state = initial;
-        let mut energy = kinetic_energy(&sim.state, &sim.mass);
+        let mut stepper = Stepper::new(params).unwrap();
+        stepper.state = initial;
+        let mut energy = kinetic_energy(&stepper.state, &stepper.mass);
         for _ in 0..20 {
-            sim.step(dt);
-            let now = kinetic_energy(&sim.state, &sim.mass);
+            stepper.step(dt);
+            let now = kinetic_energy(&stepper.state, &stepper.mass);
             prop_assert!(now <= energy * (1.0 + 1e-12), "{} -> {}", energy, now);
             energy = now;
         }

@@ -1,5 +1,5 @@
-//! Headless `App` tests of the schedule: `MinimalPlugins` plus the physics and pointer plugins,
-//! no window and no renderer. Time is driven by `TimeUpdateStrategy`, input by the same
+//! Headless `App` tests of the schedule: `MinimalPlugins` plus the game without its screen,
+//! no window and no renderer, every schedule checked for ambiguities. Time is driven by `TimeUpdateStrategy`, input by the same
 //! messages winit would send, and the cursor is turned into world coordinates by a camera set
 //! up exactly as the game's.
 
@@ -103,7 +103,7 @@ fn a_pull_turns_the_box_the_way_r_cross_f_says() {
 
 #[test]
 fn after_release_the_velocities_decay_at_the_damping_rates() {
-    let params = SceneParams::seed();
+    let params = SceneParams::tutorial();
     let dt = params.dt();
     let linear_rate = params.linear_damping / params.mass;
     let angular_rate = params.angular_damping;
@@ -208,23 +208,26 @@ fn the_schedule_steps_exactly_as_the_core_does() {
     game.update(50);
 
     // The pointer's anchor went through f32 screen coordinates: use the one the game saw.
-    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
+    let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
     let seen_anchor = {
         let mut probe = Game::stepping();
         probe.press_at(anchor);
         probe.update(1);
         probe.the_band().ends.anchor
     };
-    sim.grab(seen_anchor);
+    stepper.grab(seen_anchor);
     for _ in 0..150 {
-        sim.step(0.01);
+        stepper.step(0.01);
     }
-    sim.release();
+    stepper.release();
     for _ in 0..50 {
-        sim.step(0.01);
+        stepper.step(0.01);
     }
     let (linear, angular) = game.state();
-    assert_eq!((linear, angular), (sim.state.linear, sim.state.angular));
+    assert_eq!(
+        (linear, angular),
+        (stepper.state.linear, stepper.state.angular)
+    );
 }
 
 #[test]
@@ -240,16 +243,19 @@ fn a_press_and_release_in_one_frame_pulls_for_exactly_one_step() {
     let mut probe = Game::stepping();
     probe.press_at(anchor);
     probe.update(1);
-    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
-    sim.grab(probe.the_band().ends.anchor);
-    sim.step(0.01);
-    sim.release();
+    let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
+    stepper.grab(probe.the_band().ends.anchor);
+    stepper.step(0.01);
+    stepper.release();
     for _ in 0..9 {
-        sim.step(0.01);
+        stepper.step(0.01);
     }
     let (linear, angular) = game.state();
     assert!(linear.velocity.length() > 0.0);
-    assert_eq!((linear, angular), (sim.state.linear, sim.state.angular));
+    assert_eq!(
+        (linear, angular),
+        (stepper.state.linear, stepper.state.angular)
+    );
 }
 
 #[test]
@@ -337,6 +343,60 @@ fn a_second_press_while_a_band_exists_replaces_it() {
     assert!(game.bands().is_empty());
 }
 
+/// R in the frame of a press: the frame's order puts the pointer before the controls, so the
+/// reset always lets go of the band that press made, and leaves the grip and the band agreeing
+/// (before the order was written down, the two wrote both with no order between them).
+#[test]
+fn a_reset_in_the_frame_of_a_press_lets_go_and_leaves_no_band_behind() {
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(10);
+    game.mouse(ButtonState::Released);
+    game.update(1);
+    assert_ne!(
+        game.state(),
+        (LinearState::default(), AngularState::default())
+    );
+
+    game.press_at(DVec2::new(-200.0, 100.0));
+    game.tap_key(rubber_band_box::controls::RESET);
+    game.update(1);
+    assert!(game.bands().is_empty(), "{:?}", game.bands());
+    assert_eq!(*game.world().resource::<Grip>(), Grip(None));
+    let rest = (LinearState::default(), AngularState::default());
+    assert_eq!(game.state(), rest);
+
+    // The button is still down: moving it grabs nothing, and the box stays at rest.
+    game.cursor(Some(world_to_screen(DVec2::new(-250.0, 150.0))));
+    game.update(5);
+    assert!(game.bands().is_empty());
+    assert_eq!(game.state(), rest);
+    // Its release is nothing to let go of; the next press grabs as usual.
+    game.mouse(ButtonState::Released);
+    game.update(1);
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(1);
+    assert_eq!(game.bands().len(), 1);
+}
+
+/// What makes the test above hold for every pair of systems: the headless game builds its
+/// schedules with ambiguity detection as an error, so a system that writes what another reads,
+/// with no order between them, stops the game before its first frame.
+#[test]
+#[should_panic(expected = "conflicting")]
+fn an_unordered_pair_of_writers_fails_the_schedules_ambiguity_check() {
+    fn grab_from_elsewhere(mut grip: ResMut<Grip>) {
+        grip.0 = Some(PointerSource::Mouse);
+    }
+    let mut game = Game::with(Duration::from_millis(10), |app| {
+        app.add_systems(
+            RunFixedMainLoop,
+            grab_from_elsewhere.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+        );
+    });
+    game.update(1);
+}
+
 #[test]
 fn a_long_frame_catches_up_a_bounded_number_of_steps() {
     let mut game = Game::new(Duration::from_secs(10));
@@ -363,19 +423,22 @@ fn the_integrator_key_switches_on_the_next_step_and_names_it_in_the_title() {
     let mut probe = Game::stepping();
     probe.press_at(DVec2::new(200.0, 100.0));
     probe.update(1);
-    let mut sim = Simulation::new(SceneParams::seed()).unwrap();
-    sim.grab(probe.the_band().ends.anchor);
+    let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
+    stepper.grab(probe.the_band().ends.anchor);
     for _ in 0..20 {
-        sim.step(0.01);
+        stepper.step(0.01);
     }
-    sim.integrator = expected_next;
-    sim.step(0.01);
+    stepper.integrator = expected_next;
+    stepper.step(0.01);
 
     game.key(CYCLE_INTEGRATOR, ButtonState::Pressed);
     game.update(1);
     assert_eq!(*game.world().resource::<Integrator>(), expected_next);
     let (linear, angular) = game.state();
-    assert_eq!((linear, angular), (sim.state.linear, sim.state.angular));
+    assert_eq!(
+        (linear, angular),
+        (stepper.state.linear, stepper.state.angular)
+    );
     let window = game.window;
     let title = game.world().get::<Window>(window).unwrap().title.clone();
     assert!(title.contains(expected_next.name()), "{title}");
@@ -410,7 +473,7 @@ fn a_step_rate_the_clock_cannot_hold_is_refused_without_a_panic() {
         app.add_plugins((MinimalPlugins, SimulationPlugin))
             .insert_resource(SceneParams {
                 step_rate_hz: rate,
-                ..SceneParams::seed()
+                ..SceneParams::tutorial()
             });
         app.update();
         let step = app.world().resource::<Time<Fixed>>().timestep();

@@ -1,4 +1,4 @@
-//! The side-by-side measurement: every contender on the same scripted drags, in one process,
+//! The side-by-side measurement: every contender on the same scripted pulls, in one process,
 //! each tick a full headless `App` update on the single-threaded executor.
 
 use std::time::{Duration, Instant};
@@ -8,7 +8,8 @@ use super::ours::Ours;
 use super::rapier::Rapier;
 use super::{Contender, PeerRun, headless_app, start};
 use crate::physics::{BodyState, Scenario};
-use crate::report::{StiffCase, WorkScene, median, pose_error, work_reference, work_scenes};
+use crate::references::{StiffCase, WorkScene, work_reference, work_scenes};
+use crate::timing::median;
 
 /// The contenders' names, ours first (the ratios are to ours).
 pub const NAMES: [&str; 3] = [Ours::NAME, Avian::NAME, Rapier::NAME];
@@ -101,13 +102,13 @@ fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, timed: u64, reps: u
     median(times)
 }
 
-/// `scenario` with every drag one fixed step later: the box rests through the first tick (the
+/// `scenario` with every pull one fixed step later: the box rests through the first tick (the
 /// engines' set-up, untimed), so that the ticks timed are exactly those of the original run.
 fn one_tick_later(scenario: &Scenario, rate: f64) -> Scenario {
     let mut later = scenario.clone();
-    for drag in &mut later.drags {
-        drag.0 += 1.0 / rate;
-        drag.1 += 1.0 / rate;
+    for pull in &mut later.pulls {
+        pull.0 += 1.0 / rate;
+        pull.1 += 1.0 / rate;
     }
     later
 }
@@ -129,7 +130,7 @@ fn point<C: Contender>(
         steps,
         error: state
             .is_finite()
-            .then(|| pose_error(&state, reference, &mass)),
+            .then(|| state.pose_error(reference, &mass)),
         energy_drift: drift.filter(|_| scene.energy_invariant),
         ns_per_tick: ns_per_tick::<C>(scenario, rate, steps.saturating_sub(1), reps),
     }
@@ -186,7 +187,7 @@ fn stiff_point<C: Contender>(case: &StiffCase, reps: usize) -> PeerStiffPoint {
         error: case
             .reference
             .filter(|_| bounded)
-            .map(|r| pose_error(&state, &r.state, &mass)),
+            .map(|r| state.pose_error(&r.state, &mass)),
         energy_growth: growth.filter(|_| case.reference.is_none() && bounded),
         bounded,
     }

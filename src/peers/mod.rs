@@ -1,5 +1,5 @@
 //! The peers (issue #5): the seed scene in the Bevy physics crates avian2d and bevy_rapier2d,
-//! each in a headless `App` beside our own plugin, driven by the same scripted drags so that
+//! each in a headless `App` beside our own plugin, driven by the same scripted pulls so that
 //! the report can measure error, energy drift and the cost of a tick side by side.
 //!
 //! Compiled only with the `peers` feature: the game, the tests and CI never build these crates.
@@ -14,7 +14,8 @@ use std::time::Duration;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 
-use crate::physics::{BandEnds, BodyState, Drag, MassProperties, Scenario, SceneParams};
+use crate::physics::scenario::{BandChange, PullSchedule};
+use crate::physics::{BandEnds, BodyState, MassProperties, Scenario, SceneParams};
 use crate::simulation::run_single_threaded;
 
 /// A physics engine holding the scene in a headless `App` that takes exactly one fixed step
@@ -56,14 +57,13 @@ pub fn start(app: &mut App) {
     run_single_threaded(app);
 }
 
-/// A scripted run of a scenario on a contender: the same drags, at the same steps, attached
-/// to the corner nearest the target at the drag's first step, as [`crate::physics::Run`].
+/// A scripted run of a scenario on a contender: the same pulls, at the same steps, attached
+/// to the corner nearest the target at the pull's first step, as [`crate::physics::Run`].
 pub struct PeerRun<C: Contender> {
     pub contender: C,
     pub mass: MassProperties,
     pub step: u64,
-    drags: Vec<Drag>,
-    active_drag: Option<usize>,
+    schedule: PullSchedule,
     pub band: Option<BandEnds>,
 }
 
@@ -77,33 +77,33 @@ impl<C: Contender> PeerRun<C> {
             contender: C::new(&scenario.params, scenario.initial, rate_hz),
             mass,
             step: 0,
-            drags: scenario.drags_in_steps(1.0 / rate_hz),
-            active_drag: None,
+            schedule: PullSchedule::new(scenario.pulls_in_steps(1.0 / rate_hz)),
             band: None,
         };
-        run.apply_drags();
+        run.apply_pulls();
         run
     }
 
-    fn apply_drags(&mut self) {
-        let current = Drag::active(&self.drags, self.step);
-        if current == self.active_drag {
+    fn apply_pulls(&mut self) {
+        let Some(change) = self.schedule.change_at(self.step) else {
             return;
-        }
-        self.active_drag = current;
+        };
         let state = self.contender.state();
-        self.band = current.map(|i| BandEnds::grabbing(&self.mass, &state, self.drags[i].target));
+        self.band = match change {
+            BandChange::Grab(target) => Some(BandEnds::grabbing(&self.mass, &state, target)),
+            BandChange::Release => None,
+        };
         self.contender.set_band(self.band);
     }
 
-    /// One fixed step (one `App` update), then the drags for the next. The state is read
+    /// One fixed step (one `App` update), then the pulls for the next. The state is read
     /// after every step, so that engines that keep the rotation as (cos, sin) count whole
     /// turns (see [`unwrap_angle`]); every contender pays the same small read.
     pub fn advance(&mut self) {
         self.contender.app().update();
         self.step += 1;
         self.contender.state();
-        self.apply_drags();
+        self.apply_pulls();
     }
 
     pub fn advance_by(&mut self, steps: u64) {

@@ -5,7 +5,7 @@ use bevy::prelude::*;
 
 use super::{Contender, headless_app, start};
 use crate::physics::{BandEnds, BodyState, SceneParams};
-use crate::simulation::{Band, RenderSnapshots, RigidBox, SimulationPlugin, body_state};
+use crate::simulation::{Band, RigidBox, SimulationPlugin, body_state, rigid_box};
 
 pub struct Ours {
     app: App,
@@ -29,11 +29,8 @@ impl Contender for Ours {
             .query_filtered::<Entity, With<RigidBox>>()
             .single(world)
             .expect("the plugin spawns one box");
-        world.entity_mut(body).insert((
-            initial.linear,
-            initial.angular,
-            RenderSnapshots::at_rest(initial),
-        ));
+        let mass = params.mass_properties().expect("the plugin spawned it");
+        world.entity_mut(body).insert(rigid_box(mass, initial));
         Self {
             app,
             body,

@@ -6,7 +6,7 @@
 use bevy::math::DVec2;
 use bevy::prelude::Component;
 
-use super::scene::ParamError;
+use super::param_error::ParamError;
 
 /// Linear state: where the centre of mass is and how fast it moves.
 #[derive(Component, Clone, Copy, Debug, Default, PartialEq)]
@@ -56,6 +56,16 @@ impl BodyState {
             && self.linear.velocity.abs().max_element() <= STATE_LIMIT
             && self.angular.orientation.abs() <= STATE_LIMIT
             && self.angular.angular_velocity.abs() <= STATE_LIMIT
+    }
+
+    /// How far this pose is from `other`: the largest distance between corresponding corners
+    /// of the box `mass` describes (px). It weighs the orientation by the box's size, as the
+    /// corner's 30·θ.
+    pub fn pose_error(&self, other: &BodyState, mass: &MassProperties) -> f64 {
+        mass.corners()
+            .iter()
+            .map(|&c| self.local_to_world(c).distance(other.local_to_world(c)))
+            .fold(0.0, f64::max)
     }
 
     pub fn is_finite(&self) -> bool {

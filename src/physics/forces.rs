@@ -1,12 +1,11 @@
 //! The force laws the scene needs, and nothing else: a zero-length rubber band between a body
-//! point and a world point, linear drag and angular drag.
+//! point and a world point, linear and angular damping.
 
 use std::ops::{Add, AddAssign};
 
 use bevy::math::DVec2;
 
 use super::body::{BodyState, MassProperties};
-use super::ledger::Energies;
 
 /// A force through the centre of mass plus a torque about it (counter-clockwise positive).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -104,11 +103,6 @@ pub fn damping_wrench(
     }
 }
 
-/// Kinetic energy, linear plus rotational: ½ m |v|² + ½ I ω².
-pub fn kinetic_energy(state: &BodyState, mass: &MassProperties) -> f64 {
-    Energies::of(state, mass, None, 0.0).kinetic()
-}
-
 /// What acts on a body during one step, kept in two parts because the integrators treat them
 /// differently: the forces the scene applies (the band), and damping.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -198,11 +192,6 @@ impl ForceModel {
         let power =
             |s: &BodyState| self.damping_power(s.linear.velocity, s.angular.angular_velocity);
         0.5 * dt * (power(before) + power(after))
-    }
-
-    /// Band potential plus kinetic energy.
-    pub fn energy(&self, state: &BodyState) -> f64 {
-        Energies::of(state, &self.mass, self.band.as_ref(), self.stiffness).total()
     }
 }
 

@@ -1,36 +1,74 @@
-//! Scripted runs: a scene, an initial state, and drags of the band, stepped by one integrator.
+//! Scripted runs: a scene, an initial state, and pulls of the band, stepped by one integrator.
 //! The `simulate` command, the report and the tests all run through [`Run`].
 
 use std::fmt;
 
 use bevy::math::DVec2;
 
-use super::auto::StepInfo;
 use super::body::BodyState;
-use super::integrators::Integrator;
-use super::ledger::EnergyLedger;
-use super::scene::{ParamError, SceneParams};
-use super::simulation::Simulation;
+use super::energy::EnergyLedger;
+use super::integrators::{Integrator, StepInfo};
+use super::param_error::ParamError;
+use super::scene::SceneParams;
+use super::stepper::Stepper;
 
 /// During steps `start <= s < end` the band pulls toward `target`, attached at the step
 /// `start` to the corner nearest `target`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Drag {
+pub struct Pull {
     pub start: u64,
     pub end: u64,
     pub target: DVec2,
 }
 
-impl Drag {
-    /// The drag acting during step `step` (the latest one started, if drags overlap).
-    pub fn active(drags: &[Drag], step: u64) -> Option<usize> {
-        drags
+impl Pull {
+    /// The pull acting during step `step` (the latest one started, if pulls overlap).
+    pub fn active(pulls: &[Pull], step: u64) -> Option<usize> {
+        pulls
             .iter()
-            .rposition(|drag| drag.start <= step && step < drag.end)
+            .rposition(|pull| pull.start <= step && step < pull.end)
     }
 }
 
-/// A named scene: parameters, initial state and drags given in seconds, so that the same
+/// The pulls of a scripted run, in steps, and which one acts: [`Run`] and the peers' runs
+/// follow the same schedule, so they attach and release at the same steps.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PullSchedule {
+    pulls: Vec<Pull>,
+    active: Option<usize>,
+}
+
+/// What the band does before a step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum BandChange {
+    /// A new band, at the corner nearest this target, pulling toward it (any old band goes).
+    Grab(DVec2),
+    /// No band from now on.
+    Release,
+}
+
+impl PullSchedule {
+    pub fn new(pulls: Vec<Pull>) -> Self {
+        Self {
+            pulls,
+            active: None,
+        }
+    }
+
+    /// What must change before step `step`; `None` while the same pull (or none) goes on.
+    pub fn change_at(&mut self, step: u64) -> Option<BandChange> {
+        let current = Pull::active(&self.pulls, step);
+        if current == self.active {
+            return None;
+        }
+        self.active = current;
+        Some(current.map_or(BandChange::Release, |index| {
+            BandChange::Grab(self.pulls[index].target)
+        }))
+    }
+}
+
+/// A named scene: parameters, initial state and pulls given in seconds, so that the same
 /// scene can be run at any step.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scenario {
@@ -39,15 +77,15 @@ pub struct Scenario {
     pub params: SceneParams,
     pub initial: BodyState,
     /// (from, until, target) in seconds; `until` may be infinite.
-    pub drags: Vec<(f64, f64, DVec2)>,
+    pub pulls: Vec<(f64, f64, DVec2)>,
 }
 
-/// Where the seed drag pulls: up and to the right of the box, off its diagonals.
-pub const SEED_DRAG_TARGET: DVec2 = DVec2::new(200.0, 120.0);
+/// Where the tutorial scene pulls: up and to the right of the box, off its diagonals.
+pub const TUTORIAL_PULL_TARGET: DVec2 = DVec2::new(200.0, 120.0);
 
 impl Scenario {
     pub const NAMES: [&'static str; 10] = [
-        "seed",
+        "tutorial",
         "diagonal",
         "stiff",
         "light",
@@ -64,7 +102,7 @@ impl Scenario {
             .into_iter()
             .find(|&known| known == name)
             .ok_or_else(|| UnknownScenario(name.to_owned()))?;
-        let seed = SceneParams::seed();
+        let tutorial = SceneParams::tutorial();
         let at_rest = BodyState::default();
         let spinning = {
             let mut state = at_rest;
@@ -72,16 +110,16 @@ impl Scenario {
             state
         };
         let held = f64::INFINITY;
-        let (summary, params, initial, drags) = match name {
-            "seed" => (
+        let (summary, params, initial, pulls) = match name {
+            "tutorial" => (
                 "the tutorial's scene: pulled for 2 s, then released",
-                seed,
+                tutorial,
                 at_rest,
-                vec![(0.0, 2.0, SEED_DRAG_TARGET)],
+                vec![(0.0, 2.0, TUTORIAL_PULL_TARGET)],
             ),
             "diagonal" => (
                 "pulled along the diagonal through the centre: no torque, a 1D damped oscillator",
-                seed,
+                tutorial,
                 at_rest,
                 vec![(0.0, held, DVec2::new(150.0, 150.0))],
             ),
@@ -89,27 +127,30 @@ impl Scenario {
                 "a stiff band, k = 1e5 (omega dt = 2.83 at 100 Hz)",
                 SceneParams {
                     stiffness: 1e5,
-                    ..seed
+                    ..tutorial
                 },
                 at_rest,
-                vec![(0.0, held, SEED_DRAG_TARGET)],
+                vec![(0.0, held, TUTORIAL_PULL_TARGET)],
             ),
             "light" => (
-                "a light box, mass 1e-3, with the seed band",
-                SceneParams { mass: 1e-3, ..seed },
+                "a light box, mass 1e-3, with the tutorial's band",
+                SceneParams {
+                    mass: 1e-3,
+                    ..tutorial
+                },
                 at_rest,
-                vec![(0.0, held, SEED_DRAG_TARGET)],
+                vec![(0.0, held, TUTORIAL_PULL_TARGET)],
             ),
-            "spin" => ("spinning at 100 rad/s, no band", seed, spinning, vec![]),
+            "spin" => ("spinning at 100 rad/s, no band", tutorial, spinning, vec![]),
             "spin-band" => (
                 "spinning at 100 rad/s, with the band",
-                seed,
+                tutorial,
                 spinning,
-                vec![(0.0, held, SEED_DRAG_TARGET)],
+                vec![(0.0, held, TUTORIAL_PULL_TARGET)],
             ),
             "far" => (
                 "the anchor 1e6 units away",
-                seed,
+                tutorial,
                 at_rest,
                 vec![(0.0, held, DVec2::new(1e6, 0.0))],
             ),
@@ -118,30 +159,30 @@ impl Scenario {
                 SceneParams {
                     linear_damping: 0.0,
                     angular_damping: 0.0,
-                    ..seed
+                    ..tutorial
                 },
                 at_rest,
-                vec![(0.0, held, SEED_DRAG_TARGET)],
+                vec![(0.0, held, TUTORIAL_PULL_TARGET)],
             ),
             "zero-length" => (
                 "the anchor exactly at the corner: no force at all",
-                seed,
+                tutorial,
                 at_rest,
                 vec![(0.0, held, DVec2::new(30.0, 30.0))],
             ),
-            _ => ("the box at rest, no band", seed, at_rest, vec![]),
+            _ => ("the box at rest, no band", tutorial, at_rest, vec![]),
         };
         Ok(Self {
             name,
             summary,
             params,
             initial,
-            drags,
+            pulls,
         })
     }
 
-    /// The drags in steps of `dt`.
-    pub fn drags_in_steps(&self, dt: f64) -> Vec<Drag> {
+    /// The pulls in steps of `dt`.
+    pub fn pulls_in_steps(&self, dt: f64) -> Vec<Pull> {
         let to_step = |t: f64| {
             if t.is_finite() {
                 (t / dt).round() as u64
@@ -149,9 +190,9 @@ impl Scenario {
                 u64::MAX
             }
         };
-        self.drags
+        self.pulls
             .iter()
-            .map(|&(from, until, target)| Drag {
+            .map(|&(from, until, target)| Pull {
                 start: to_step(from),
                 end: to_step(until),
                 target,
@@ -205,12 +246,11 @@ impl std::error::Error for Diverged {}
 /// One scripted run, stepped one fixed step at a time.
 #[derive(Clone, Debug)]
 pub struct Run {
-    pub sim: Simulation,
+    pub stepper: Stepper,
     pub dt: f64,
     /// Steps taken so far.
     pub step: u64,
-    drags: Vec<Drag>,
-    active_drag: Option<usize>,
+    schedule: PullSchedule,
     energy_budget: f64,
     /// The latest step's substeps, and how many steps fell back to `implicit` so far.
     pub last_step: StepInfo,
@@ -223,27 +263,26 @@ impl Run {
     pub fn new(
         params: SceneParams,
         initial: BodyState,
-        drags: Vec<Drag>,
+        pulls: Vec<Pull>,
         integrator: Integrator,
         dt: f64,
     ) -> Result<Self, ParamError> {
         ParamError::check_positive("dt", dt)?;
-        let mut sim = Simulation::new(params)?;
-        sim.state = initial;
-        sim.integrator = integrator;
-        let energy_budget = sim.energy();
+        let mut stepper = Stepper::new(params)?;
+        stepper.state = initial;
+        stepper.integrator = integrator;
+        let energy_budget = stepper.energy();
         let mut run = Self {
-            sim,
+            stepper,
             dt,
             step: 0,
-            drags,
-            active_drag: None,
+            schedule: PullSchedule::new(pulls),
             energy_budget,
             last_step: StepInfo::SINGLE,
             fallbacks: 0,
             ledger: EnergyLedger::starting_at(energy_budget),
         };
-        run.apply_drags();
+        run.apply_pulls();
         Ok(run)
     }
 
@@ -251,7 +290,7 @@ impl Run {
         Self::new(
             scenario.params,
             scenario.initial,
-            scenario.drags_in_steps(dt),
+            scenario.pulls_in_steps(dt),
             integrator,
             dt,
         )
@@ -261,49 +300,47 @@ impl Run {
         self.step as f64 * self.dt
     }
 
-    /// Attaches or releases the band as the drags say for the coming step.
-    fn apply_drags(&mut self) {
-        let current = Drag::active(&self.drags, self.step);
-        if current == self.active_drag {
+    /// Attaches or releases the band as the pulls say for the coming step.
+    fn apply_pulls(&mut self) {
+        let Some(change) = self.schedule.change_at(self.step) else {
             return;
-        }
-        self.active_drag = current;
-        let band_energy = |sim: &Simulation| {
-            sim.band.map_or(0.0, |band| {
-                band.potential_energy(&sim.state, sim.params.stiffness)
+        };
+        let band_energy = |stepper: &Stepper| {
+            stepper.band.map_or(0.0, |band| {
+                band.potential_energy(&stepper.state, stepper.params.stiffness)
             })
         };
         // The hand takes the old band's energy away and puts the new one's in.
-        self.ledger.hand(-band_energy(&self.sim));
-        match current {
-            Some(index) => {
-                self.sim.grab(self.drags[index].target);
-                let attached = band_energy(&self.sim);
+        self.ledger.hand(-band_energy(&self.stepper));
+        match change {
+            BandChange::Grab(target) => {
+                self.stepper.grab(target);
+                let attached = band_energy(&self.stepper);
                 self.energy_budget += attached;
                 self.ledger.hand(attached);
             }
-            None => self.sim.release(),
+            BandChange::Release => self.stepper.release(),
         }
     }
 
     /// One step; `Err` once the state is no longer finite or its energy left every bound.
     pub fn advance(&mut self) -> Result<(), Diverged> {
-        self.last_step = self.sim.step(self.dt);
+        self.last_step = self.stepper.step(self.dt);
         self.ledger.dissipated += self.last_step.dissipated;
         self.fallbacks += u64::from(self.last_step.fell_back);
         self.step += 1;
-        let energy = self.sim.energy();
-        if !self.sim.state.is_sane()
+        let energy = self.stepper.energy();
+        if !self.stepper.state.is_sane()
             || !energy.is_finite()
             || energy > DIVERGENCE_FACTOR * self.energy_budget + 1.0
         {
             return Err(Diverged {
-                integrator: self.sim.integrator,
+                integrator: self.stepper.integrator,
                 step: self.step,
                 time: self.time(),
             });
         }
-        self.apply_drags();
+        self.apply_pulls();
         Ok(())
     }
 

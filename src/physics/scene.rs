@@ -1,13 +1,12 @@
 //! The scene's parameters, their units, their defaults (the tutorial's Rubber Band Box) and
 //! their validation. One source of truth: the game, the tests and README read them from here.
 
-use std::fmt;
-
 use bevy::math::DVec2;
 use bevy::prelude::Resource;
 
 use super::body::MassProperties;
 use super::forces::{BandEnds, ForceModel};
+use super::param_error::ParamError;
 
 /// The tutorial runs one update per frame at this rate; its per-frame constants convert to
 /// per-second ones through it.
@@ -28,9 +27,9 @@ pub struct SceneParams {
     pub size: DVec2,
     /// Band stiffness k: force per unit of stretch.
     pub stiffness: f64,
-    /// Linear drag b: force −b·v, so the velocity decays at the rate b/m.
+    /// Linear damping b: force −b·v, so the velocity decays at the rate b/m.
     pub linear_damping: f64,
-    /// Angular drag rate c: ω decays as exp(−c t).
+    /// Angular damping rate c: ω decays as exp(−c t).
     pub angular_damping: f64,
     /// Fixed physics steps per second.
     pub step_rate_hz: f64,
@@ -39,7 +38,7 @@ pub struct SceneParams {
 impl SceneParams {
     /// The tutorial's scene converted from its per-frame units at 100 frames per second:
     /// k = 0.002 /frame² → 20, b = 0.05 /frame → 5, ω·0.98 per frame → c = −ln(0.98)·100.
-    pub fn seed() -> Self {
+    pub fn tutorial() -> Self {
         let f = TUTORIAL_FRAME_RATE;
         Self {
             mass: 5.0,
@@ -86,52 +85,6 @@ impl SceneParams {
 
 impl Default for SceneParams {
     fn default() -> Self {
-        Self::seed()
+        Self::tutorial()
     }
 }
-
-/// A parameter outside its domain: names the field and the value it was given.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ParamError {
-    pub field: &'static str,
-    pub value: f64,
-    pub requirement: &'static str,
-}
-
-impl ParamError {
-    pub fn check_positive(field: &'static str, value: f64) -> Result<(), Self> {
-        if value.is_finite() && value > 0.0 {
-            Ok(())
-        } else {
-            Err(Self {
-                field,
-                value,
-                requirement: "a finite number greater than zero",
-            })
-        }
-    }
-
-    pub fn check_non_negative(field: &'static str, value: f64) -> Result<(), Self> {
-        if value.is_finite() && value >= 0.0 {
-            Ok(())
-        } else {
-            Err(Self {
-                field,
-                value,
-                requirement: "a finite number, zero or more",
-            })
-        }
-    }
-}
-
-impl fmt::Display for ParamError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} must be {}, got {}",
-            self.field, self.requirement, self.value
-        )
-    }
-}
-
-impl std::error::Error for ParamError {}

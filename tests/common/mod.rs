@@ -1,11 +1,14 @@
 //! The headless game shared by the schedule and property tests: `MinimalPlugins`, input and
-//! window messages, the physics, pointer, controls and HUD plugins, and a camera set up as the
-//! game's.
+//! window messages, the game without its screen (`GameLogicPlugin`: physics, pointer, controls
+//! and HUD, in the frame's order), and a camera set up as the game's. Every schedule is built
+//! with Bevy's ambiguity detection as an error: two systems that touch the same data with no
+//! order between them fail every test.
 #![allow(dead_code, unused_imports)]
 
 pub use std::time::Duration;
 
 pub use bevy::camera::RenderTargetInfo;
+pub use bevy::ecs::schedule::{LogLevel, ScheduleBuildSettings};
 pub use bevy::input::ButtonState;
 pub use bevy::input::InputPlugin;
 pub use bevy::input::keyboard::{Key, KeyboardInput};
@@ -18,10 +21,11 @@ pub use bevy::window::{
     ExitCondition, PrimaryWindow, WindowFocused, WindowPlugin, WindowResolution,
 };
 
-pub use rubber_band_box::controls::{CYCLE_INTEGRATOR, ControlsPlugin};
-pub use rubber_band_box::hud::{EnergyHistory, Hud, HudLine, HudPlugin};
+pub use rubber_band_box::GameLogicPlugin;
+pub use rubber_band_box::controls::CYCLE_INTEGRATOR;
+pub use rubber_band_box::hud::{EnergyHistory, Hud, HudLine};
 pub use rubber_band_box::physics::{
-    AngularState, Integrator, LinearState, SceneParams, Simulation, Wrench,
+    AngularState, Integrator, LinearState, SceneParams, Stepper, Wrench,
 };
 pub use rubber_band_box::pointer::{Grip, PointerPlugin, PointerSource};
 pub use rubber_band_box::simulation::{
@@ -58,6 +62,12 @@ pub struct Game {
 impl Game {
     /// A headless game whose every `update()` advances the clock by `frame`.
     pub fn new(frame: Duration) -> Self {
+        Self::with(frame, |_| {})
+    }
+
+    /// [`Game::new`] with `extra` applied to the app after the game's plugins (a test's own
+    /// systems), before its schedules are built.
+    pub fn with(frame: Duration, extra: impl FnOnce(&mut App)) -> Self {
         let mut app = App::new();
         app.add_plugins((
             MinimalPlugins,
@@ -68,10 +78,7 @@ impl Game {
                 close_when_requested: false,
                 ..default()
             },
-            SimulationPlugin,
-            PointerPlugin,
-            ControlsPlugin,
-            HudPlugin,
+            GameLogicPlugin,
         ))
         .insert_resource(TimeUpdateStrategy::ManualDuration(frame))
         .init_resource::<AccumulatorAudit>()
@@ -102,6 +109,13 @@ impl Game {
         app.world_mut()
             .spawn((Camera2d, camera, projection, GlobalTransform::IDENTITY));
 
+        extra(&mut app);
+        // After every plugin, so that it applies to every schedule they made.
+        app.configure_schedules(ScheduleBuildSettings {
+            ambiguity_detection: LogLevel::Error,
+            hierarchy_detection: LogLevel::Error,
+            ..default()
+        });
         app.finish();
         app.cleanup();
         // The first update only starts the clock: it runs Startup and no fixed step.

@@ -5,9 +5,11 @@
 
 use bevy::prelude::Resource;
 
-use super::body::BodyState;
-use super::forces::ForceModel;
+use super::implicit::backward_euler;
+use super::step_info::StepInfo;
 use super::taylor::{self, TaylorSettings};
+use crate::physics::body::BodyState;
+use crate::physics::forces::ForceModel;
 
 /// The settings of `auto`; defaults from the report's engine comparison and stiffness sweep
 /// (see README).
@@ -32,34 +34,12 @@ impl Default for AutoSettings {
     }
 }
 
-/// What one fixed step did: how many substeps and how much work, whether it fell back to
-/// `implicit`, and the energy damping took out during it (for the energy ledger).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct StepInfo {
-    pub substeps: u32,
-    /// Force-law evaluations the step made, the one at its start included (for `auto`, one
-    /// per order of each Taylor step): the work done, counted rather than timed.
-    pub evaluations: u32,
-    pub fell_back: bool,
-    pub dissipated: f64,
-}
-
-impl StepInfo {
-    pub const SINGLE: Self = Self {
-        substeps: 1,
-        evaluations: 1,
-        fell_back: false,
-        dissipated: 0.0,
-    };
-}
-
 /// One fixed step of `auto`.
 pub fn auto_step(
     state: &mut BodyState,
     model: &ForceModel,
     dt: f64,
     settings: &AutoSettings,
-    implicit: impl Fn(&mut BodyState, &ForceModel, f64) -> u32,
 ) -> StepInfo {
     let engine = TaylorSettings {
         order: settings.order,
@@ -78,7 +58,7 @@ pub fn auto_step(
         }
         None => {
             let before = *state;
-            let evaluations = implicit(state, model, dt);
+            let evaluations = backward_euler(state, model, dt);
             StepInfo {
                 substeps: 1,
                 evaluations,

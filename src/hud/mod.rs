@@ -1,33 +1,38 @@
 //! The heads-up display: what the simulation is doing (integrator, step, parameters, time),
 //! where the energy is, how much of it the integrator got wrong (the ledger's residual), and
-//! the controls. The numbers come from resources the physics keeps; this module only formats
-//! them, so it runs headless too (the text is plain `Text` components).
+//! the keys; the energy graph ([`graph`]) and the window title ([`title`]) say the same for a
+//! glance and for a hidden HUD.
+//!
+//! The numbers come from resources the physics keeps; this module only formats them, so its
+//! text, history and title run headless too (the text is plain `Text` components). The graph
+//! draws with gizmos and is added with the screen.
 
-use std::collections::VecDeque;
+pub mod graph;
+pub mod history;
+pub mod title;
 
+use bevy::diagnostic::{DiagnosticsStore, FrameTimeDiagnosticsPlugin};
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
-use crate::controls::Overlays;
+use crate::controls::help_line;
+use crate::overlays::Overlays;
 use crate::physics::{
     AngularState, Energies, EnergyLedger, Integrator, LinearState, MassProperties, SceneParams,
 };
-use crate::simulation::{
-    Band, EnergyBooks, PhysicsSystems, RigidBox, StepStats, mechanical_energies,
-};
+use crate::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
+pub use history::EnergyHistory;
 
 pub struct HudPlugin;
 
 impl Plugin for HudPlugin {
     fn build(&self, app: &mut App) {
-        app.init_resource::<EnergyHistory>()
-            .init_resource::<FrameRate>()
+        if !app.is_plugin_added::<FrameTimeDiagnosticsPlugin>() {
+            app.add_plugins(FrameTimeDiagnosticsPlugin::default());
+        }
+        app.add_plugins(history::EnergyHistoryPlugin)
             .add_systems(Startup, spawn_hud)
-            .add_systems(
-                FixedUpdate,
-                record_energy_history.after(PhysicsSystems::Publish),
-            )
-            .add_systems(Update, (measure_frame_rate, show_hud).chain());
+            .add_systems(Update, (show_hud, title::show_state_in_title));
     }
 }
 
@@ -40,10 +45,6 @@ const WARNING_COLOUR: Color = Color::srgb(1.0, 0.4, 0.3);
 const PANEL_COLOUR: Color = Color::srgba(0.0, 0.0, 0.0, 0.55);
 const FONT_SIZE: f32 = 13.0;
 const HELP_FONT_SIZE: f32 = 12.0;
-
-/// The keys, as the help line shows them.
-pub const HELP: &str = "drag: pull  Space: pause  N: step  R: reset  I: integrator  [ ]: k  \
-- =: time  PgDn/PgUp: rate  V: vectors  T: trail  H: HUD";
 
 /// One line of the HUD. Each is a `Text` entity whose content [`HudLine::text`] writes.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
@@ -94,8 +95,8 @@ impl HudLine {
             HudLine::Integrator => {
                 let mut line = format!("integrator {}", r.integrator);
                 if r.integrator == Integrator::Auto {
-                    let latest = if r.capped {
-                        "budget capped: implicit".to_owned()
+                    let latest = if r.fell_back {
+                        "fell back to implicit (over budget)".to_owned()
                     } else {
                         format!(
                             "{} taylor step{}/step",
@@ -150,7 +151,7 @@ impl HudLine {
                     r.residual
                 )
             }
-            HudLine::Help => HELP.to_owned(),
+            HudLine::Help => help_line(),
         }
     }
 }
@@ -171,8 +172,8 @@ fn energy(value: f64) -> String {
 pub struct HudReadings {
     pub integrator: Integrator,
     pub substeps: u32,
-    /// The budget capped the latest step: it was one `implicit` step.
-    pub capped: bool,
+    /// The latest step fell back: `auto` was over its budget and took one `implicit` step.
+    pub fell_back: bool,
     pub fallbacks: u64,
     pub divergence: Option<(Integrator, u64)>,
     pub step_rate_hz: f64,
@@ -198,7 +199,7 @@ pub struct HudSources<'w, 's> {
     books: Res<'w, EnergyBooks>,
     virtual_time: Res<'w, Time<Virtual>>,
     fixed_time: Res<'w, Time<Fixed>>,
-    frame_rate: Res<'w, FrameRate>,
+    diagnostics: Res<'w, DiagnosticsStore>,
     history: Res<'w, EnergyHistory>,
     boxes: Query<
         'w,
@@ -225,7 +226,7 @@ impl HudSources<'_, '_> {
         HudReadings {
             integrator: *self.integrator,
             substeps: self.stats.substeps,
-            capped: self.stats.capped,
+            fell_back: self.stats.fell_back,
             fallbacks: self.stats.fallbacks,
             divergence: self.stats.divergence,
             // The clock's step, which a refused rate leaves as it was.
@@ -233,7 +234,11 @@ impl HudSources<'_, '_> {
             time_scale: self.virtual_time.relative_speed_f64(),
             paused: self.virtual_time.is_paused(),
             simulated_seconds: self.fixed_time.elapsed_secs_f64() - self.history.since,
-            frames_per_second: self.frame_rate.0,
+            frames_per_second: self
+                .diagnostics
+                .get(&FrameTimeDiagnosticsPlugin::FPS)
+                .and_then(|fps| fps.smoothed())
+                .unwrap_or(0.0),
             mass,
             stiffness: params.stiffness,
             linear_rate: params.linear_damping / mass,
@@ -314,69 +319,4 @@ fn show_hud(
         }
         colour.set_if_neq(TextColor(line.colour(&readings)));
     }
-}
-
-/// Frames per second of real time, smoothed over about ten frames.
-#[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
-pub struct FrameRate(pub f64);
-
-fn measure_frame_rate(time: Res<Time<Real>>, mut rate: ResMut<FrameRate>) {
-    let delta = time.delta_secs_f64();
-    if delta > 0.0 {
-        let now = 1.0 / delta;
-        rate.0 = if rate.0 > 0.0 {
-            rate.0 + 0.1 * (now - rate.0)
-        } else {
-            now
-        };
-    }
-}
-
-/// The energies over the last [`EnergyHistory::SPAN`] seconds of simulated time, for the
-/// graph: at most [`EnergyHistory::SAMPLES`] samples whatever the step rate. A reset starts
-/// it over, and the HUD's clock from it.
-#[derive(Resource, Debug, Default, Clone)]
-pub struct EnergyHistory {
-    pub samples: VecDeque<(f64, Energies)>,
-    /// Simulated time of the latest reset (0 before any).
-    pub since: f64,
-}
-
-impl EnergyHistory {
-    pub const SPAN: f64 = 10.0;
-    pub const SAMPLES: usize = 500;
-
-    /// Forgets the samples; the clock restarts at `now`.
-    pub fn restart(&mut self, now: f64) {
-        self.samples.clear();
-        self.since = now;
-    }
-
-    pub fn record(&mut self, time: f64, energies: Energies) {
-        let spacing = Self::SPAN / Self::SAMPLES as f64;
-        if let Some(&(last, _)) = self.samples.back() {
-            if time < last {
-                // The clock went back (it never does in play): start over.
-                self.samples.clear();
-            } else if time - last < spacing {
-                return;
-            }
-        }
-        self.samples.push_back((time, energies));
-        while self
-            .samples
-            .front()
-            .is_some_and(|&(t, _)| t < time - Self::SPAN)
-        {
-            self.samples.pop_front();
-        }
-    }
-}
-
-fn record_energy_history(
-    time: Res<Time<Fixed>>,
-    books: Res<EnergyBooks>,
-    mut history: ResMut<EnergyHistory>,
-) {
-    history.record(time.elapsed_secs_f64(), books.energies);
 }

@@ -1,10 +1,13 @@
-//! The energy ledger: where the box's mechanical energy came from and went. With the anchor
+//! Energy: the body's mechanical energy by kind, and the energy ledger. Built on the force
+//! laws (the band's potential), never the other way round.
+//!
+//! The ledger: where the box's mechanical energy came from and went. With the anchor
 //! fixed during a step, energy only changes by the work the hand does (attaching, moving or
 //! releasing the band) and by what damping takes out; whatever else changes it is the
 //! integrator's numerical error, the ledger's residual.
 
 use super::body::{BodyState, MassProperties};
-use super::forces::BandEnds;
+use super::forces::{BandEnds, ForceModel};
 
 /// A body's mechanical energy by kind, in the scene's units (mass · px² / s²).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -54,6 +57,18 @@ impl std::ops::Add for Energies {
 impl std::iter::Sum for Energies {
     fn sum<I: Iterator<Item = Self>>(iter: I) -> Self {
         iter.fold(Self::default(), |a, b| a + b)
+    }
+}
+
+/// Kinetic energy, linear plus rotational: ½ m |v|² + ½ I ω².
+pub fn kinetic_energy(state: &BodyState, mass: &MassProperties) -> f64 {
+    Energies::of(state, mass, None, 0.0).kinetic()
+}
+
+impl ForceModel {
+    /// Band potential plus kinetic energy.
+    pub fn energy(&self, state: &BodyState) -> f64 {
+        Energies::of(state, &self.mass, self.band.as_ref(), self.stiffness).total()
     }
 }
 

@@ -1,7 +1,7 @@
 //! Dormand and Prince's 8(5,3) embedded Runge-Kutta pair (DOP853, as in Hairer, Nørsett and
 //! Wanner's "Solving Ordinary Differential Equations I", and SciPy), with its step-size
 //! control, run inside one fixed step: the best explicit Runge-Kutta candidate for `auto`'s
-//! engine on the stiff drags, kept for the report's comparison of engines and as a second,
+//! engine on the stiff pulls, kept for the report's comparison of engines and as a second,
 //! independent reference (README, "Integrators").
 //!
 //! The orientation is carried as a unit vector (cos θ, sin θ), whose rate of change is ω times
@@ -13,11 +13,11 @@
 
 use bevy::math::DVec2;
 
-use super::body::BodyState;
 use super::engine_state::{
     COMPONENTS, Components, DISSIPATED, RELATIVE_TOLERANCE, error_weights, pack, unpack,
 };
-use super::forces::{ForceModel, Forces};
+use crate::physics::body::BodyState;
+use crate::physics::forces::{ForceModel, Forces};
 
 const STAGES: usize = 12;
 

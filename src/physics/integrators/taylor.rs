@@ -8,18 +8,18 @@
 //! So every Taylor coefficient costs a handful of running products, and a high order lets a
 //! step cover a large share of the band's oscillation and the spin. The report's comparison of
 //! engines (README, "Integrators") measured it against classical RK4 substeps
-//! and Dormand and Prince's 8(5,3) pair at the same error on the stiff drags.
+//! and Dormand and Prince's 8(5,3) pair at the same error on the stiff pulls.
 //!
 //! Everything is counted, nothing timed: the steps taken depend only on the state, the model,
 //! the step and the settings, so a run is bit-identical on every machine.
 
 use bevy::math::DVec2;
 
-use super::body::BodyState;
 use super::engine_state::{
     COMPONENTS, DISSIPATED, RELATIVE_TOLERANCE, error_weights, pack, unpack,
 };
-use super::forces::ForceModel;
+use crate::physics::body::BodyState;
+use crate::physics::forces::ForceModel;
 
 /// The highest order the engine can be asked for.
 pub const MAX_ORDER: usize = 24;
@@ -51,7 +51,7 @@ pub struct Integrated {
     pub dissipated: f64,
 }
 
-/// The rate times the step that a Taylor step covers on the stiff drags at the default
+/// The rate times the step that a Taylor step covers on the stiff pulls at the default
 /// settings: the band's oscillation sets the box spinning about three times faster than the
 /// band's own rate, and a step covers about one radian of that (the report's engine table).
 const RATE_TIMES_STEP: f64 = 0.3;

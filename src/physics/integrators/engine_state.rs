@@ -4,8 +4,8 @@
 
 use bevy::math::DVec2;
 
-use super::body::{AngularState, BodyState, LinearState};
-use super::forces::ForceModel;
+use crate::physics::body::{AngularState, BodyState, LinearState};
+use crate::physics::forces::ForceModel;
 
 /// x, y, cos θ, sin θ, θ, vx, vy, ω, and the energy damping took out (from zero).
 pub const COMPONENTS: usize = 9;

@@ -1,16 +1,18 @@
-//! One box and at most one band, stepped without Bevy: what the tests, and later the CLI and
-//! the benchmarks, drive directly. The ECS systems call the same functions, one set at a time.
+//! One box and at most one band, stepped without Bevy: what scripted runs ([`super::Run`],
+//! so the CLI and the report), the tests and the benchmarks drive directly. The ECS systems
+//! call the same functions, one set at a time.
 
 use bevy::math::DVec2;
 
-use super::auto::{AutoSettings, StepInfo};
 use super::body::{BodyState, MassProperties};
 use super::forces::{BandEnds, ForceModel, Forces};
 use super::integrators::Integrator;
-use super::scene::{ParamError, SceneParams};
+use super::integrators::{AutoSettings, StepInfo};
+use super::param_error::ParamError;
+use super::scene::SceneParams;
 
 #[derive(Clone, Debug)]
-pub struct Simulation {
+pub struct Stepper {
     pub params: SceneParams,
     pub mass: MassProperties,
     pub state: BodyState,
@@ -19,7 +21,7 @@ pub struct Simulation {
     pub auto: AutoSettings,
 }
 
-impl Simulation {
+impl Stepper {
     /// The box at rest at the origin, no band.
     pub fn new(params: SceneParams) -> Result<Self, ParamError> {
         params.validate()?;
