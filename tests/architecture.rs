@@ -1,0 +1,189 @@
+//! The house's shape: the imports between the source files form no circle, and the numerical
+//! core imports nothing of the game. Read from the sources themselves (`use crate::...`,
+//! `use super::...`, a module's `use child::...`, and paths written inline), so a new
+//! circle fails here, naming the files in it.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::fs;
+use std::path::Path;
+
+/// Every module of the crate (`physics::integrators::auto`; "" for the crate root) and its
+/// source without comments.
+fn modules() -> BTreeMap<String, String> {
+    fn walk(dir: &Path, found: &mut BTreeMap<String, String>, root: &Path) {
+        for entry in fs::read_dir(dir).expect("src is readable") {
+            let path = entry.expect("an entry").path();
+            if path.is_dir() {
+                walk(&path, found, root);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let relative = path.strip_prefix(root).unwrap().with_extension("");
+                let mut parts: Vec<String> = relative
+                    .iter()
+                    .map(|p| p.to_string_lossy().into_owned())
+                    .collect();
+                if matches!(
+                    parts.last().map(String::as_str),
+                    Some("mod" | "lib" | "main")
+                ) {
+                    parts.pop();
+                }
+                let source = fs::read_to_string(&path).expect("a source file");
+                let code: String = source
+                    .lines()
+                    .map(|line| line.split("//").next().unwrap_or(""))
+                    .collect::<Vec<_>>()
+                    .join("\n");
+                found.insert(parts.join("::"), code);
+            }
+        }
+    }
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut found = BTreeMap::new();
+    walk(&root, &mut found, &root);
+    // main.rs is the binary, not a module of the library: it may use anything.
+    found.remove("");
+    let lib = fs::read_to_string(root.join("lib.rs")).unwrap();
+    found.insert(String::new(), lib);
+    found
+}
+
+/// The longest known module that `path` (segments from the crate root) starts with.
+fn owner(path: &[String], known: &BTreeMap<String, String>) -> Option<String> {
+    (1..=path.len())
+        .rev()
+        .map(|n| path[..n].join("::"))
+        .find(|candidate| known.contains_key(candidate))
+}
+
+/// The modules `module` imports.
+fn imports(module: &str, code: &str, known: &BTreeMap<String, String>) -> BTreeSet<String> {
+    let here: Vec<String> = if module.is_empty() {
+        vec![]
+    } else {
+        module.split("::").map(str::to_owned).collect()
+    };
+    let mut found = BTreeSet::new();
+    let words: Vec<&str> = code
+        .split(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':' || c == '{'))
+        .filter(|w| !w.is_empty())
+        .collect();
+    for word in words {
+        let word = word.trim_end_matches([':', '{']);
+        let segments: Vec<&str> = word.split("::").filter(|s| !s.is_empty()).collect();
+        let Some((&first, rest)) = segments.split_first() else {
+            continue;
+        };
+        let mut path: Vec<String> = match first {
+            "crate" => vec![],
+            "super" => here[..here.len().saturating_sub(1)].to_vec(),
+            "self" => here.clone(),
+            // A child module named from its parent (`use child::Item`, `child::f()`).
+            child if !rest.is_empty() => {
+                let mut path = here.clone();
+                path.push(child.to_owned());
+                if !known.contains_key(&path.join("::")) {
+                    continue;
+                }
+                path
+            }
+            _ => continue,
+        };
+        let mut rest = rest;
+        while let Some((&"super", tail)) = rest.split_first() {
+            path.pop();
+            rest = tail;
+        }
+        path.extend(rest.iter().map(|s| (*s).to_owned()));
+        if let Some(target) = owner(&path, known)
+            && target != module
+            && !target.is_empty()
+        {
+            found.insert(target);
+        }
+    }
+    found
+}
+
+fn graph() -> BTreeMap<String, BTreeSet<String>> {
+    let known = modules();
+    known
+        .iter()
+        .map(|(module, code)| (module.clone(), imports(module, code, &known)))
+        .collect()
+}
+
+/// A circle through `start`, if there is one: the modules in order.
+fn circle_from(start: &str, graph: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
+    fn visit(
+        node: &str,
+        start: &str,
+        graph: &BTreeMap<String, BTreeSet<String>>,
+        path: &mut Vec<String>,
+        seen: &mut BTreeSet<String>,
+    ) -> bool {
+        for next in graph.get(node).into_iter().flatten() {
+            if next == start {
+                return true;
+            }
+            if seen.insert(next.clone()) {
+                path.push(next.clone());
+                if visit(next, start, graph, path, seen) {
+                    return true;
+                }
+                path.pop();
+            }
+        }
+        false
+    }
+    let mut path = vec![start.to_owned()];
+    let mut seen = BTreeSet::new();
+    visit(start, start, graph, &mut path, &mut seen).then_some(path)
+}
+
+#[test]
+fn the_imports_between_source_files_form_no_circle() {
+    let graph = graph();
+    assert!(graph.len() > 20, "the walk found the sources: {graph:?}");
+    // The reader sees real edges: a check that sees none would pass anything.
+    assert!(graph["simulation"].contains("physics"));
+    assert!(graph["physics::integrators::auto"].contains("physics::integrators::implicit"));
+    assert!(graph["physics"].contains("physics::body"));
+    let circles: Vec<String> = graph
+        .keys()
+        .filter_map(|module| circle_from(module, &graph))
+        .map(|circle| format!("{} -> {}", circle.join(" -> "), circle[0]))
+        .collect();
+    assert!(
+        circles.is_empty(),
+        "import circles:\n{}",
+        circles.join("\n")
+    );
+}
+
+#[test]
+fn the_numerical_core_imports_nothing_of_the_game() {
+    for (module, imported) in graph() {
+        if module == "physics" || module.starts_with("physics::") {
+            for target in imported {
+                assert!(
+                    target.starts_with("physics"),
+                    "{module} imports {target}: the core sits at the bottom"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_reader_finds_a_circle_when_there_is_one() {
+    let mut known = BTreeMap::new();
+    known.insert("a".to_owned(), "use crate::b::Thing;".to_owned());
+    known.insert("b".to_owned(), "fn f() { super::a::g() }".to_owned());
+    known.insert("c".to_owned(), "use crate::a;".to_owned());
+    let graph: BTreeMap<_, _> = known
+        .iter()
+        .map(|(m, code)| (m.clone(), imports(m, code, &known)))
+        .collect();
+    assert_eq!(circle_from("a", &graph), Some(vec!["a".into(), "b".into()]));
+    assert_eq!(circle_from("c", &graph), None);
+}
