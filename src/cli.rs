@@ -8,9 +8,7 @@ use std::io::{self, BufWriter, Write};
 use bevy::math::DVec2;
 use clap::{Args, Parser, Subcommand};
 
-use crate::physics::{
-    AngularState, BodyState, Diverged, Integrator, LinearState, Pull, Run, Scenario, SceneParams,
-};
+use crate::physics::{BodyState, Diverged, Integrator, Pull, Run, Scenario, SceneParams};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -152,17 +150,11 @@ pub const CSV_HEADER: &str =
 
 /// One CSV row: the state after `run.step` steps.
 pub fn csv_row(run: &Run) -> String {
-    let s = &run.stepper.state;
+    let [x, y, theta, vx, vy, omega] = run.stepper.state.to_array();
     format!(
-        "{},{},{},{},{},{},{},{},{},{},{},{},{}",
+        "{},{},{x},{y},{theta},{vx},{vy},{omega},{},{},{},{},{}",
         run.step,
         run.time(),
-        s.linear.position.x,
-        s.linear.position.y,
-        s.angular.orientation,
-        s.linear.velocity.x,
-        s.linear.velocity.y,
-        s.angular.angular_velocity,
         run.stepper.energy(),
         u8::from(run.stepper.band.is_some()),
         run.last_step.substeps,
@@ -272,15 +264,5 @@ fn parse_pull(text: &str) -> Result<Pull, String> {
 }
 
 fn parse_init(text: &str) -> Result<BodyState, String> {
-    let [x, y, theta, vx, vy, omega] = parse_numbers::<6>(text, "X,Y,THETA,VX,VY,OMEGA")?;
-    Ok(BodyState {
-        linear: LinearState {
-            position: DVec2::new(x, y),
-            velocity: DVec2::new(vx, vy),
-        },
-        angular: AngularState {
-            orientation: theta,
-            angular_velocity: omega,
-        },
-    })
+    parse_numbers::<6>(text, "X,Y,THETA,VX,VY,OMEGA").map(BodyState::from_array)
 }

@@ -133,26 +133,9 @@ impl RenderSnapshots {
 
     /// The state a fraction `alpha` (0 to 1) of the way from the previous step to the current.
     pub fn interpolate(&self, alpha: f64) -> BodyState {
-        let (a, b) = (&self.previous, &self.current);
-        BodyState {
-            linear: LinearState {
-                position: a.linear.position.lerp(b.linear.position, alpha),
-                velocity: a.linear.velocity.lerp(b.linear.velocity, alpha),
-            },
-            angular: AngularState {
-                orientation: lerp(a.angular.orientation, b.angular.orientation, alpha),
-                angular_velocity: lerp(
-                    a.angular.angular_velocity,
-                    b.angular.angular_velocity,
-                    alpha,
-                ),
-            },
-        }
+        let (a, b) = (self.previous.to_array(), self.current.to_array());
+        BodyState::from_array(std::array::from_fn(|i| a[i] + (b[i] - a[i]) * alpha))
     }
-}
-
-fn lerp(a: f64, b: f64, t: f64) -> f64 {
-    a + (b - a) * t
 }
 
 /// What the integrator did: the latest step's substeps (most over the bodies) and whether it

@@ -44,6 +44,28 @@ impl BodyState {
         }
     }
 
+    /// The state as six numbers: x, y, θ, vx, vy, ω (the order of the CLI's CSV columns and
+    /// `--init`). The one place the state is flattened and rebuilt.
+    pub fn to_array(&self) -> [f64; 6] {
+        let (p, v) = (self.linear.position, self.linear.velocity);
+        let a = &self.angular;
+        [p.x, p.y, a.orientation, v.x, v.y, a.angular_velocity]
+    }
+
+    /// The state from x, y, θ, vx, vy, ω (see [`Self::to_array`]).
+    pub fn from_array([x, y, orientation, vx, vy, angular_velocity]: [f64; 6]) -> Self {
+        Self {
+            linear: LinearState {
+                position: DVec2::new(x, y),
+                velocity: DVec2::new(vx, vy),
+            },
+            angular: AngularState {
+                orientation,
+                angular_velocity,
+            },
+        }
+    }
+
     /// A body-local point expressed in world coordinates.
     pub fn local_to_world(&self, local: DVec2) -> DVec2 {
         self.linear.position + rotate(local, self.angular.orientation)
@@ -51,11 +73,9 @@ impl BodyState {
 
     /// Finite, and every component within [`STATE_LIMIT`]: what the game accepts from a step.
     pub fn is_sane(&self) -> bool {
-        self.is_finite()
-            && self.linear.position.abs().max_element() <= STATE_LIMIT
-            && self.linear.velocity.abs().max_element() <= STATE_LIMIT
-            && self.angular.orientation.abs() <= STATE_LIMIT
-            && self.angular.angular_velocity.abs() <= STATE_LIMIT
+        self.to_array()
+            .iter()
+            .all(|v| v.is_finite() && v.abs() <= STATE_LIMIT)
     }
 
     /// How far this pose is from `other`: the largest distance between corresponding corners
@@ -69,10 +89,7 @@ impl BodyState {
     }
 
     pub fn is_finite(&self) -> bool {
-        self.linear.position.is_finite()
-            && self.linear.velocity.is_finite()
-            && self.angular.orientation.is_finite()
-            && self.angular.angular_velocity.is_finite()
+        self.to_array().iter().all(|v| v.is_finite())
     }
 }
 
