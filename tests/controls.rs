@@ -4,8 +4,8 @@ mod common;
 
 use common::*;
 use rubber_band_box::controls::{
-    CONTROLS, FASTER, MORE_STEPS, PAUSE, RESET, SINGLE_STEP, SLOWER, SOFTER, STIFFER, TRAIL,
-    VECTORS, help_line, key_hint,
+    CONTROLS, FASTER, FEWER_STEPS, MORE_STEPS, PAUSE, RESET, SINGLE_STEP, SLOWER, SOFTER, STIFFER,
+    TRAIL, VECTORS, help_line, key_hint,
 };
 use rubber_band_box::overlays::Overlays;
 
@@ -132,6 +132,21 @@ fn the_step_rate_changes_the_fixed_step() {
     let start = game.steps();
     game.update(10);
     assert_eq!(game.steps() - start, 20);
+}
+
+#[test]
+fn page_down_halves_the_step_rate_down_to_its_lower_end() {
+    let mut game = Game::stepping();
+    let rates: Vec<f64> = (0..6)
+        .map(|_| {
+            game.tap_key(FEWER_STEPS);
+            game.update(1);
+            game.world().resource::<SceneParams>().step_rate_hz
+        })
+        .collect();
+    assert_eq!(rates, [50.0, 25.0, 12.5, 8.0, 8.0, 8.0]);
+    let step = game.world().resource::<Time<Fixed>>().timestep();
+    assert_eq!(step, Duration::from_millis(125));
 }
 
 #[test]
