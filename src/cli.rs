@@ -33,8 +33,8 @@ pub enum Command {
 
 #[derive(Args, Debug, Default)]
 pub struct PlayArgs {
-    /// Integrator to start with (the I key cycles them).
-    #[arg(long, value_parser = parse_integrator)]
+    #[arg(long, value_parser = parse_integrator,
+          help = format!("Integrator to start with (the I key cycles them): {}", integrator_help()))]
     pub integrator: Option<Integrator>,
     /// Fixed physics steps per second.
     #[arg(long, value_parser = positive)]
@@ -43,12 +43,11 @@ pub struct PlayArgs {
 
 #[derive(Args, Debug)]
 pub struct SimulateArgs {
-    /// Named scene: tutorial, diagonal, stiff, light, spin, spin-band, far, undamped,
-    /// zero-length, rest.
-    #[arg(long, default_value = "tutorial", value_parser = parse_scene)]
+    // The lists in the help come from the core's tables, not a copy.
+    #[arg(long, default_value = "tutorial", value_parser = parse_scene,
+          help = format!("Named scene: {}", Scenario::NAMES.join(", ")))]
     pub scene: Scenario,
-    /// euler, symplectic, verlet, rk4, implicit, seed or auto [default: auto].
-    #[arg(long, value_parser = parse_integrator)]
+    #[arg(long, value_parser = parse_integrator, help = integrator_help())]
     pub integrator: Option<Integrator>,
     /// Fixed step in seconds.
     #[arg(long, default_value_t = 0.01, value_parser = positive, allow_hyphen_values = true)]
@@ -216,6 +215,12 @@ fn non_negative(text: &str) -> Result<f64, String> {
     } else {
         Err(format!("must be zero or more, got {value}"))
     }
+}
+
+/// "euler, symplectic, ..., auto [default: auto]".
+fn integrator_help() -> String {
+    let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
+    format!("{} [default: {}]", names.join(", "), Integrator::default())
 }
 
 fn parse_integrator(text: &str) -> Result<Integrator, String> {

@@ -189,3 +189,32 @@ fn the_report_says_when_it_cannot_write_its_files() {
         "{err}"
     );
 }
+
+/// The named scenes live once, in the core (`Scenario::NAMES`): README's `--scene` row and the
+/// CLI's help name each of them, and the CLI accepts each.
+#[test]
+fn readme_and_the_help_name_every_scene_the_core_has() {
+    use rubber_band_box::physics::Scenario;
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .expect("README.md");
+    let row = readme
+        .lines()
+        .find(|line| line.starts_with("| `--scene NAME` |"))
+        .expect("README documents --scene");
+    let listed = row.matches("`").count() / 2 - 1;
+    assert_eq!(listed, Scenario::NAMES.len(), "{row}");
+    let help = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
+        .args(["simulate", "--help"])
+        .output()
+        .expect("the binary runs");
+    let help = String::from_utf8_lossy(&help.stdout).replace('\n', " ");
+    for name in Scenario::NAMES {
+        assert!(row.contains(&format!("`{name}`")), "README lacks {name}");
+        assert!(help.contains(name), "--help lacks {name}");
+        assert!(
+            simulate(&["--scene", name, "--steps", "1"])
+                .status
+                .success()
+        );
+    }
+}
