@@ -1,13 +1,14 @@
 //! What the player sees: lyon fills the box and the band's pin; gizmos draw the box's outline,
-//! its centre, the band (red, turning magenta as it stretches, as in the tutorial) and the
-//! tutorial's 640 x 480 screen.
-
-use bevy::prelude::*;
-use bevy_prototype_lyon::prelude::*;
+//! its centre, the band (red, turning magenta as it stretches, as in the tutorial), the
+//! tutorial's 640 x 480 screen, and the overlays the controls switch on (force and velocity
+//! arrows, the pulled corner's trail, which this module owns and a reset clears). Needs a
+//! window; reads the physics' render snapshots, never the other way round.
 
 use std::collections::VecDeque;
 
 use bevy::math::DVec2;
+use bevy::prelude::*;
+use bevy_prototype_lyon::prelude::*;
 
 use crate::overlays::Overlays;
 use crate::physics::{MassProperties, SCENE_SIZE, SceneParams};

@@ -1,3 +1,7 @@
+//! The binary: with no command (and always on the web) it plays; natively `simulate` and
+//! `report` run the core headless (see `cli`). The game's plugins are wired in the library
+//! (`GamePlugin`); this file only adds Bevy's own and the window.
+
 use std::process::ExitCode;
 
 use bevy::prelude::*;

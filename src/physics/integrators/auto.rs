@@ -1,7 +1,8 @@
 //! The `auto` integrator: every fixed step split into as many Taylor-series steps as the
-//! series' own error estimate needs to stay under a tolerance (see [`super::taylor`]), capped
-//! by a per-step budget; where the cap binds, one backward Euler step instead, which is stable
-//! at any stiffness. So `auto` is accurate where it can afford to be, and never unstable.
+//! series' own error estimate needs to stay under a tolerance (see [`super::taylor`]), within
+//! a per-step budget; a step that would need more falls back to one backward Euler step
+//! ([`super::implicit`]), which is stable at any stiffness. So `auto` is accurate where it can
+//! afford to be, and never unstable.
 
 use bevy::prelude::Resource;
 
