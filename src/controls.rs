@@ -19,7 +19,8 @@ impl Plugin for ControlsPlugin {
             RunFixedMainLoop,
             (
                 cycle_integrator.run_if(input_just_pressed(CYCLE_INTEGRATOR)),
-                pause_and_step,
+                toggle_pause.run_if(input_just_pressed(PAUSE)),
+                single_step.run_if(input_just_pressed(SINGLE_STEP)),
                 reset_scene.run_if(input_just_pressed(RESET)),
                 tune_parameters,
                 toggle_overlays,
@@ -147,21 +148,18 @@ pub fn cycle_integrator(mut integrator: ResMut<Integrator>) {
     info!("integrator: {}", *integrator);
 }
 
-/// Pausing stops the virtual clock, so no fixed step runs; a single step feeds the fixed clock
-/// exactly one step of time.
-fn pause_and_step(
-    keys: Res<ButtonInput<KeyCode>>,
-    mut virtual_time: ResMut<Time<Virtual>>,
-    mut fixed_time: ResMut<Time<Fixed>>,
-) {
-    if keys.just_pressed(PAUSE) {
-        if virtual_time.is_paused() {
-            virtual_time.unpause();
-        } else {
-            virtual_time.pause();
-        }
+/// Pausing stops the virtual clock, so no fixed step runs.
+fn toggle_pause(mut virtual_time: ResMut<Time<Virtual>>) {
+    if virtual_time.is_paused() {
+        virtual_time.unpause();
+    } else {
+        virtual_time.pause();
     }
-    if keys.just_pressed(SINGLE_STEP) && virtual_time.is_paused() {
+}
+
+/// While paused, feeds the fixed clock exactly one step of time (running, it does nothing).
+fn single_step(virtual_time: Res<Time<Virtual>>, mut fixed_time: ResMut<Time<Fixed>>) {
+    if virtual_time.is_paused() {
         let step = fixed_time.timestep();
         fixed_time.accumulate_overstep(step);
     }
