@@ -323,23 +323,28 @@ impl Run {
         }
     }
 
-    /// One step; `Err` once the state is no longer finite or its energy left every bound.
+    /// One step. A step that leaves the state not sane or its energy beyond every physical
+    /// bound is refused, as the game refuses it: `Err` names it (the first such step), and the
+    /// run stays as it was before it (the last sane state, its books and counters).
     pub fn advance(&mut self) -> Result<(), Diverged> {
-        self.last_step = self.stepper.step(self.dt);
-        self.ledger.dissipated += self.last_step.dissipated;
-        self.fallbacks += u64::from(self.last_step.fell_back);
-        self.step += 1;
+        let before = self.stepper.state;
+        let info = self.stepper.step(self.dt);
         let energy = self.stepper.energy();
         if !self.stepper.state.is_sane()
             || !energy.is_finite()
             || energy > DIVERGENCE_FACTOR * self.energy_budget + 1.0
         {
+            self.stepper.state = before;
             return Err(Diverged {
                 integrator: self.stepper.integrator,
-                step: self.step,
-                time: self.time(),
+                step: self.step + 1,
+                time: (self.step + 1) as f64 * self.dt,
             });
         }
+        self.last_step = info;
+        self.ledger.dissipated += info.dissipated;
+        self.fallbacks += u64::from(info.fell_back);
+        self.step += 1;
         self.apply_pulls();
         Ok(())
     }
