@@ -211,7 +211,7 @@ fn mass_properties_refuse_a_degenerate_box() {
 }
 
 #[test]
-fn energies_by_kind_add_up_to_the_models_energy() {
+fn energies_by_kind_are_the_textbook_formulas_computed_by_hand() {
     let params = SceneParams::tutorial();
     let mass = params.mass_properties().unwrap();
     let band = BandEnds {
@@ -220,17 +220,21 @@ fn energies_by_kind_add_up_to_the_models_energy() {
     };
     let mut state = BodyState::at_rest(DVec2::new(5.0, 7.0));
     state.linear.velocity = DVec2::new(3.0, -4.0);
-    state.angular.orientation = 0.3;
+    // A quarter turn: the corner (30, 30) is at (-30, 30) from the centre, so at (-25, 37),
+    // 125 px left of the anchor and 77 px above it.
+    state.angular.orientation = std::f64::consts::FRAC_PI_2;
     state.angular.angular_velocity = 0.5;
     let energies = Energies::of(&state, &mass, Some(&band), params.stiffness);
-    assert_eq!(energies.linear, 0.5 * 5.0 * 25.0);
-    assert_eq!(energies.rotational, 0.5 * 3000.0 * 0.25);
-    assert_eq!(
-        energies.band,
-        band.potential_energy(&state, params.stiffness)
-    );
+    // m = 5, |v|² = 25; I = 5 (60² + 60²) / 12 = 3000, ω² = 0.25; k = 20, |d|² = 125² + 77².
+    let (linear, rotational, stretched) = (62.5, 375.0, 0.5 * 20.0 * 21554.0);
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b;
+    assert!(close(energies.linear, linear), "{energies:?}");
+    assert!(close(energies.rotational, rotational), "{energies:?}");
+    assert!(close(energies.band, stretched), "{energies:?}");
+    let total = linear + rotational + stretched;
+    assert!(close(energies.total(), total));
     let model = params.force_model(mass, Some(band));
-    assert!((energies.total() - model.energy(&state)).abs() < 1e-12);
+    assert!(close(model.energy(&state), total));
     assert_eq!(
         Energies::of(&state, &mass, None, params.stiffness).band,
         0.0

@@ -98,14 +98,25 @@ fn the_hud_follows_the_game() {
             .starts_with(&format!("integrator {}", Integrator::Auto.next()))
     );
 
-    // Pulling puts energy into the band; the panel shows the books' figures.
+    // Pulling puts energy into the band; the panel shows ½m|v|² + ½Iω² + ½k|d|² of the
+    // state now, computed here by hand from the box and the band (m 5, I 3000, k 20).
     game.press_at(DVec2::new(200.0, 100.0));
     game.update(20);
-    let books = *game.world().resource::<EnergyBooks>();
-    assert!(books.energies.band > 0.0 && books.energies.kinetic() > 0.0);
-    let total = game.hud(HudLine::Total);
-    let shown: f64 = total.split_whitespace().last().unwrap().parse().unwrap();
-    assert!((shown - books.energies.total()).abs() < 0.01, "{total}");
+    let (linear, angular) = game.state();
+    let band = game.the_band().ends;
+    let (sin, cos) = angular.orientation.sin_cos();
+    let p = band.local_point;
+    let corner = linear.position + DVec2::new(cos * p.x - sin * p.y, sin * p.x + cos * p.y);
+    let kinetic = 0.5 * 5.0 * linear.velocity.length_squared()
+        + 0.5 * 3000.0 * angular.angular_velocity.powi(2);
+    let stretched = 0.5 * 20.0 * corner.distance_squared(band.anchor);
+    assert!(kinetic > 1.0 && stretched > 1.0, "{kinetic} {stretched}");
+    let value = |line: HudLine, game: &mut Game| -> f64 {
+        let text = game.hud(line);
+        text.split_whitespace().last().unwrap().parse().unwrap()
+    };
+    assert!((value(HudLine::BandPotential, &mut game) - stretched).abs() < 0.01);
+    assert!((value(HudLine::Total, &mut game) - (kinetic + stretched)).abs() < 0.01);
 
     game.tap_key(PAUSE);
     game.update(2);
