@@ -524,10 +524,12 @@ fn a_tighter_budget_makes_auto_fall_back_sooner() {
     assert_eq!(run.fallbacks, 10);
 }
 
-/// The soak (long mode, not in CI): 1e7 steps of the default integrator on the undamped seed
-/// scene with the band held. Run: `cargo test --release --test integrators -- --ignored soak --nocapture`.
+/// The soak: 1e7 steps (28 simulated hours) of the default integrator on the undamped
+/// tutorial scene with the band held, part of `cargo test` (a few seconds). Its figures:
+/// `cargo test --test integrators soak -- --nocapture`. The bounds leave a wide margin over
+/// the figures measured (README, "Robustness"), far below what a slow drift would reach;
+/// `auto` must never fall back here.
 #[test]
-#[ignore]
 fn soak_ten_million_undamped_steps() {
     let steps = 10_000_000;
     let scenario = Scenario::named("undamped").unwrap();
@@ -552,7 +554,9 @@ fn soak_ten_million_undamped_steps() {
         started.elapsed().as_secs_f64(),
         run.fallbacks
     );
-    assert!(energy < 1e-3 && momentum < 1.0);
+    assert_eq!(run.fallbacks, 0);
+    assert!(energy < 1e-9, "energy error {energy:e}");
+    assert!(momentum < 1e-5, "angular momentum change {momentum:e}");
 }
 
 /// The largest ledger residual over a run of the seed scene (pulled 2 s, released, 4 s),
