@@ -218,3 +218,30 @@ fn readme_and_the_help_name_every_scene_the_core_has() {
         );
     }
 }
+
+/// Input the core refuses before any step: named, status 2, no row written. A state beyond
+/// the bounds a step is held to, or one whose energy overflows, is bad input, not a
+/// divergence at step 1; a sub-normal step is named as the step, not as an infinite rate.
+#[test]
+fn an_initial_state_out_of_bounds_and_a_sub_normal_dt_are_refused_as_arguments() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["--init", "2e12,0,0,0,0,0"], "initial state"),
+        (&["--init", "0,0,0,0,0,-1e13"], "initial state"),
+        (
+            &["--init", "1e11,0,0,1e11,0,0", "--k", "1e300"],
+            "initial energy",
+        ),
+        (&["--dt", "1e-310"], "dt must be"),
+    ];
+    for (args, message) in cases {
+        let output = simulate(args);
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        assert!(output.stdout.is_empty(), "{args:?} wrote output");
+        let err = stderr(&output);
+        assert!(err.contains(message), "{args:?}: {err}");
+        assert!(
+            !err.contains("diverged") && !err.contains("step rate"),
+            "{args:?}: {err}"
+        );
+    }
+}

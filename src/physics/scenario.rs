@@ -5,7 +5,7 @@ use std::fmt;
 
 use bevy::math::DVec2;
 
-use super::body::BodyState;
+use super::body::{BodyState, STATE_LIMIT};
 use super::energy::EnergyLedger;
 use super::integrators::{Integrator, StepInfo};
 use super::param_error::ParamError;
@@ -268,7 +268,26 @@ impl Run {
         dt: f64,
     ) -> Result<Self, ParamError> {
         ParamError::check_positive("dt", dt)?;
+        // A sub-normal step has no finite rate: name the step, not the rate it implies.
+        if !(1.0 / dt).is_finite() {
+            return Err(ParamError {
+                field: "dt",
+                value: dt,
+                requirement: "a step whose rate 1/dt is finite (not sub-normal)",
+            });
+        }
         let mut stepper = Stepper::new(params)?;
+        if let Some(&bad) = initial
+            .to_array()
+            .iter()
+            .find(|v| !(v.is_finite() && v.abs() <= STATE_LIMIT))
+        {
+            return Err(ParamError {
+                field: "each component of the initial state",
+                value: bad,
+                requirement: "finite and within 1e12 of zero",
+            });
+        }
         stepper.state = initial;
         stepper.integrator = integrator;
         let energy_budget = stepper.energy();
@@ -283,6 +302,13 @@ impl Run {
             ledger: EnergyLedger::starting_at(energy_budget),
         };
         run.apply_pulls();
+        if !run.energy_budget.is_finite() {
+            return Err(ParamError {
+                field: "the initial energy",
+                value: run.energy_budget,
+                requirement: "finite (a state, band and k this large overflow it)",
+            });
+        }
         Ok(run)
     }
 

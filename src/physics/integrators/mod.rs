@@ -4,8 +4,9 @@
 //! accumulator, or [`ForceModel::forces`]) and evaluates the [`ForceModel`] again where it
 //! needs forces at other states. Damping never limits the step or lowers the order: the
 //! explicit methods fold it into the force (it is far from stiff at any step the game uses),
-//! `verlet` treats it with the trapezoidal rule, `implicit` solves for it exactly, and `seed`
-//! does what the tutorial does.
+//! `verlet` treats it with the trapezoidal rule, `implicit` takes it implicitly (a first-order
+//! decay, v₁ = v₀ − h·r·v₁), `auto` integrates it in its series, and `seed` does what the
+//! tutorial does.
 
 use std::fmt;
 use std::str::FromStr;
