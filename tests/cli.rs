@@ -245,3 +245,75 @@ fn an_initial_state_out_of_bounds_and_a_sub_normal_dt_are_refused_as_arguments()
         );
     }
 }
+
+/// The last row of `simulate` with `args`, as numbers.
+fn last_row(args: &[&str]) -> Vec<f64> {
+    let output = simulate(args);
+    assert!(output.status.success(), "{args:?}: {}", stderr(&output));
+    let text = stdout(&output);
+    let last = text.lines().last().unwrap();
+    last.split(',').map(|v| v.parse().unwrap()).collect()
+}
+
+/// Each override changes the run as it says: the CSV equals a run built in the core with that
+/// value and differs from the run without it.
+#[test]
+fn the_scene_overrides_change_what_they_name() {
+    use rubber_band_box::physics::{Integrator, Run, Scenario};
+    let base = ["--integrator", "rk4", "--steps", "50"];
+    let plain = last_row(&base);
+    for (flag, value) in [
+        ("--k", 40.0),
+        ("--mass", 2.0),
+        ("--width", 30.0),
+        ("--height", 90.0),
+        ("--linear-damping", 0.5),
+        ("--angular-damping", 7.0),
+    ] {
+        let mut args = base.to_vec();
+        let text = value.to_string();
+        args.extend([flag, text.as_str()]);
+        let row = last_row(&args);
+        assert_ne!(row[2..8], plain[2..8], "{flag} changed nothing");
+        let scenario = Scenario::named("tutorial").unwrap();
+        let mut params = scenario.params;
+        match flag {
+            "--k" => params.stiffness = value,
+            "--mass" => params.mass = value,
+            "--width" => params.size.x = value,
+            "--height" => params.size.y = value,
+            "--linear-damping" => params.linear_damping = value,
+            _ => params.angular_damping = value,
+        }
+        let mut run = Run::new(
+            params,
+            scenario.initial,
+            scenario.pulls_in_steps(0.01),
+            Integrator::Rk4,
+            0.01,
+        )
+        .unwrap();
+        run.advance_by(50).unwrap();
+        assert_eq!(row[2..8], run.stepper.state.to_array(), "{flag}");
+    }
+}
+
+/// `auto`'s settings reach `auto`: a looser tolerance takes fewer Taylor steps; a low order
+/// needs more steps than the budget allows on the stiff scene, and so does a budget of one.
+#[test]
+fn the_auto_overrides_change_autos_steps() {
+    let stiff = ["--scene", "stiff", "--steps", "5"];
+    let column = |args: &[&str], index: usize| last_row(args)[index];
+    let (substeps, fallbacks) = (10, 11);
+    let with = |extra: &[&'static str]| {
+        let mut args = stiff.to_vec();
+        args.extend_from_slice(extra);
+        args
+    };
+    let default_steps = column(&stiff, substeps);
+    assert!(default_steps > 1.0);
+    assert!(column(&with(&["--auto-tolerance", "1e-2"]), substeps) < default_steps);
+    assert_eq!(column(&stiff, fallbacks), 0.0);
+    assert!(column(&with(&["--auto-order", "6"]), fallbacks) > 0.0);
+    assert_eq!(column(&with(&["--auto-max-substeps", "1"]), fallbacks), 5.0);
+}

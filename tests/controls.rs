@@ -189,3 +189,33 @@ fn readme_the_help_line_and_the_title_name_every_control_as_the_list_does() {
     let title = game.world().get::<Window>(window).unwrap().title.clone();
     assert!(title.ends_with(&hint), "{title}");
 }
+
+#[test]
+fn k_and_the_time_scale_stop_at_their_lower_ends_and_climb_back() {
+    let mut game = Game::stepping();
+    for _ in 0..8 {
+        game.tap_key(SOFTER);
+        game.update(1);
+    }
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 1e-2);
+    game.tap_key(STIFFER);
+    game.update(1);
+    let k = game.world().resource::<SceneParams>().stiffness;
+    assert!((k - 0.1).abs() < 1e-15, "{k}");
+
+    let speed = |game: &mut Game| {
+        game.world()
+            .resource::<Time<Virtual>>()
+            .relative_speed_f64()
+    };
+    for _ in 0..6 {
+        game.tap_key(SLOWER);
+        game.update(1);
+    }
+    assert_eq!(speed(&mut game), 1.0 / 16.0);
+    for _ in 0..10 {
+        game.tap_key(FASTER);
+        game.update(1);
+    }
+    assert_eq!(speed(&mut game), 16.0);
+}
