@@ -14,16 +14,21 @@ use std::time::Instant;
 use clap::Args;
 
 use crate::physics::scenario::TUTORIAL_PULL_TARGET;
-use crate::physics::{Integrator, Run, Scenario, SceneParams, angular_momentum_about};
-use crate::references::{
-    Engine, StiffCase, UNRESOLVABLE_SECONDS, run_engine, work_reference, work_scenes,
-};
+use crate::physics::{Integrator, Run, Scenario, angular_momentum_about};
+use crate::references::{Engine, StiffCase, UNRESOLVABLE_SECONDS, run_engine};
 use crate::timing::median_ns;
 
+mod hard_cases;
 mod plots;
+mod stability;
+mod table;
+mod work_precision;
 
+pub use hard_cases::{HardCase, hard_cases};
 pub use plots::{ExtraLines, Line};
 use plots::{plot_stiffness, plot_work_precision};
+pub use stability::{STIFFEST_TRIED, StabilityRow};
+pub use work_precision::WorkPoint;
 
 #[derive(Args, Debug)]
 pub struct ReportArgs {
@@ -42,194 +47,6 @@ pub struct ReportArgs {
 /// What `report --peers` says in a build without the peers compiled in.
 pub const NO_PEERS: &str = "this build has no peers: run it as \
 `cargo run --release --features peers -- report --peers`";
-
-/// The steps swept, from 1/30 s to 1/10000 s.
-fn steps_swept(quick: bool) -> Vec<f64> {
-    let rates: &[f64] = if quick {
-        &[30.0, 100.0, 1000.0]
-    } else {
-        &[30.0, 64.0, 100.0, 300.0, 1000.0, 3000.0, 10000.0]
-    };
-    rates.iter().map(|rate| 1.0 / rate).collect()
-}
-
-#[derive(Clone, Debug)]
-pub struct WorkPoint {
-    pub scene: &'static str,
-    pub integrator: Integrator,
-    pub dt: f64,
-    pub steps: u64,
-    /// None where the run diverged.
-    pub error: Option<f64>,
-    pub diverged_at: Option<u64>,
-    pub energy_drift: Option<f64>,
-    pub ns_per_simulated_second: f64,
-}
-
-fn work_precision(quick: bool) -> Vec<WorkPoint> {
-    let mut points = Vec::new();
-    for scene in work_scenes() {
-        let name = scene.scenario.name;
-        let mass = scene.scenario.params.mass_properties().expect("valid");
-        for dt in steps_swept(quick) {
-            let steps = (scene.horizon / dt).round() as u64;
-            let t = steps as f64 * dt;
-            let reference = work_reference(&scene, t);
-            for integrator in Integrator::ALL {
-                let fresh = || Run::of(&scene.scenario, integrator, dt).expect("valid");
-                let mut run = fresh();
-                let mut energy_drift: f64 = 0.0;
-                let e0 = run.stepper.energy();
-                let mut outcome = Ok(());
-                for _ in 0..steps {
-                    outcome = run.advance();
-                    if outcome.is_err() {
-                        break;
-                    }
-                    energy_drift = energy_drift.max((run.stepper.energy() - e0).abs() / e0);
-                }
-                let diverged_at = outcome.err().map(|d| d.step);
-                let reps = if quick { 3 } else { 7 };
-                let ns = median_ns(reps, || {
-                    let mut run = fresh();
-                    let _ = std::hint::black_box(run.advance_by(steps));
-                });
-                points.push(WorkPoint {
-                    scene: name,
-                    integrator,
-                    dt,
-                    steps,
-                    error: diverged_at
-                        .is_none()
-                        .then(|| run.stepper.state.pose_error(&reference, &mass)),
-                    diverged_at,
-                    energy_drift: (scene.energy_invariant && diverged_at.is_none())
-                        .then_some(energy_drift),
-                    ns_per_simulated_second: ns / t,
-                });
-            }
-        }
-    }
-    points
-}
-
-/// Whether the seed scene with the band held at stiffness `k` stays bounded for 20 s.
-fn stable_at(integrator: Integrator, k: f64, rate: f64) -> bool {
-    let mut scenario = Scenario::named("tutorial").expect("built-in");
-    scenario.params.stiffness = k;
-    scenario.pulls = vec![(0.0, f64::INFINITY, TUTORIAL_PULL_TARGET)];
-    let dt = 1.0 / rate;
-    let mut run = Run::of(&scenario, integrator, dt).expect("valid");
-    run.advance_by((20.0 * rate) as u64).is_ok()
-}
-
-pub const STIFFEST_TRIED: f64 = 1e12;
-
-#[derive(Clone, Debug)]
-pub struct StabilityRow {
-    pub integrator: Integrator,
-    pub rate: f64,
-    /// None: stable at every k tried, up to [`STIFFEST_TRIED`].
-    pub largest_stable_k: Option<f64>,
-}
-
-impl StabilityRow {
-    /// ω·dt of the stiffest mode, ω = 2·sqrt(k/m), at the largest stable k.
-    pub fn omega_dt(&self) -> Option<f64> {
-        let mass = SceneParams::tutorial().mass;
-        self.largest_stable_k
-            .map(|k| 2.0 * (k / mass).sqrt() / self.rate)
-    }
-}
-
-/// Bisection on log10 k between 1e-2 and 1e12.
-fn stability_table() -> Vec<StabilityRow> {
-    let mut rows = Vec::new();
-    for rate in [64.0, 100.0] {
-        for integrator in Integrator::ALL {
-            let largest_stable_k = if stable_at(integrator, STIFFEST_TRIED, rate) {
-                None
-            } else {
-                let (mut low, mut high) = (-2.0_f64, STIFFEST_TRIED.log10());
-                for _ in 0..40 {
-                    let middle = 0.5 * (low + high);
-                    if stable_at(integrator, 10f64.powf(middle), rate) {
-                        low = middle;
-                    } else {
-                        high = middle;
-                    }
-                }
-                Some(10f64.powf(low))
-            };
-            rows.push(StabilityRow {
-                integrator,
-                rate,
-                largest_stable_k,
-            });
-        }
-    }
-    rows
-}
-
-/// The hard cases: for each, a scene, overrides and a length.
-pub struct HardCase {
-    pub name: String,
-    pub scenario: Scenario,
-    pub rate: f64,
-    pub steps: u64,
-}
-
-pub fn hard_cases(quick: bool) -> Vec<HardCase> {
-    let named = |name: &str| Scenario::named(name).expect("built-in");
-    let mut cases = Vec::new();
-    for rate in [100.0, 64.0] {
-        for k in [20.0, 1e3, 1e5, 1e7, 1e9] {
-            let mut scenario = named("stiff");
-            scenario.params.stiffness = k;
-            cases.push(HardCase {
-                name: format!("stiff band k = {k:e} at {rate} Hz"),
-                scenario,
-                rate,
-                steps: (10.0 * rate) as u64,
-            });
-        }
-    }
-    for (name, steps) in [
-        ("light", 1000),
-        ("spin", 1000),
-        ("spin-band", 1000),
-        ("far", 1000),
-        ("zero-length", 1000),
-        ("diagonal", 1000),
-        ("undamped", if quick { 100_000 } else { 1_000_000 }),
-    ] {
-        cases.push(HardCase {
-            name: format!("{name}: {}", named(name).summary),
-            scenario: named(name),
-            rate: 100.0,
-            steps,
-        });
-    }
-    cases
-}
-
-/// For each hard case and integrator: `None` if bounded throughout, else the diverging step.
-fn run_hard_cases(quick: bool) -> Vec<(HardCase, Vec<Option<u64>>)> {
-    hard_cases(quick)
-        .into_iter()
-        .map(|case| {
-            let outcomes = Integrator::ALL
-                .iter()
-                .map(|&integrator| {
-                    let mut run =
-                        Run::of(&case.scenario, integrator, 1.0 / case.rate).expect("valid");
-                    run.advance_by(case.steps).err().map(|d| d.step)
-                })
-                .collect();
-            (case, outcomes)
-        })
-        .collect()
-}
 
 /// The engine comparison: each candidate at several settings on the stiff pulls at 100 Hz,
 /// error at the horizon against the reference, cost per fixed step of the core alone.
@@ -453,10 +270,6 @@ fn stiffness_row(table: &mut String, k: f64, rate: f64, cells: &[String]) -> std
     writeln!(table, "| {k:e} | {rate} Hz | {} |", cells.join(" | "))
 }
 
-fn format_option(value: Option<f64>, missing: &str) -> String {
-    value.map_or(missing.to_owned(), |v| format!("{v:.3e}"))
-}
-
 pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     if args.peers && !cfg!(feature = "peers") {
         return Err(NO_PEERS.into());
@@ -465,129 +278,21 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     let started = Instant::now();
     let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
 
-    let points = work_precision(args.quick);
+    let points = work_precision::sweep(args.quick);
     let mut table = String::new();
-    writeln!(
-        table,
-        "## Work-precision (final pose error in px; cost in ns per simulated second)\n"
-    )?;
-    table_head(&mut table, ["scene", "dt (s)"], &names)?;
-    let mut csv = String::from(
-        "scene,integrator,dt,steps,error_px,energy_drift,ns_per_simulated_second,diverged_at_step\n",
-    );
-    for chunk in points.chunk_by(|a, b| a.scene == b.scene && a.dt == b.dt) {
-        let cells: Vec<String> = chunk
-            .iter()
-            .map(|p| match (p.error, p.diverged_at) {
-                (Some(error), _) => {
-                    let drift = p
-                        .energy_drift
-                        .map_or(String::new(), |d| format!(", dE {d:.1e}"));
-                    format!("{error:.1e}{drift} / {:.0}", p.ns_per_simulated_second)
-                }
-                (None, Some(step)) => format!("diverged @{step}"),
-                (None, None) => "?".to_owned(),
-            })
-            .collect();
-        writeln!(
-            table,
-            "| {} | 1/{:.0} | {} |",
-            chunk[0].scene,
-            1.0 / chunk[0].dt,
-            cells.join(" | ")
-        )?;
-        for p in chunk {
-            writeln!(
-                csv,
-                "{},{},{},{},{},{},{},{}",
-                p.scene,
-                p.integrator,
-                p.dt,
-                p.steps,
-                optional(p.error),
-                optional(p.energy_drift),
-                p.ns_per_simulated_second,
-                optional(p.diverged_at),
-            )?;
+    for section in [
+        work_precision::table(&points),
+        stability::table(),
+        hard_cases::table(args.quick),
+    ] {
+        if !table.is_empty() {
+            table.push('\n');
+        }
+        table += &section.markdown();
+        if let Some(file) = section.file() {
+            fs::write(args.out.join(file), section.csv())?;
         }
     }
-    fs::write(args.out.join("work_precision.csv"), csv)?;
-
-    let stability = stability_table();
-    writeln!(
-        table,
-        "\n## Stability: largest stable k (seed scene, band held, 20 s)\n"
-    )?;
-    writeln!(
-        table,
-        "| integrator | k at 64 Hz | omega dt | k at 100 Hz | omega dt |"
-    )?;
-    writeln!(table, "|---|---|---|---|---|")?;
-    let mut csv = String::from("integrator,rate_hz,largest_stable_k,omega_dt\n");
-    for integrator in Integrator::ALL {
-        let rows: Vec<&StabilityRow> = stability
-            .iter()
-            .filter(|r| r.integrator == integrator)
-            .collect();
-        let cell = |r: &StabilityRow| {
-            format!(
-                "{} | {}",
-                format_option(r.largest_stable_k, &format!("> {STIFFEST_TRIED:e}")),
-                format_option(r.omega_dt(), "any")
-            )
-        };
-        writeln!(
-            table,
-            "| {integrator} | {} | {} |",
-            cell(rows[0]),
-            cell(rows[1])
-        )?;
-        for r in rows {
-            writeln!(
-                csv,
-                "{},{},{},{}",
-                integrator,
-                r.rate,
-                r.largest_stable_k
-                    .map_or("inf".to_owned(), |k| k.to_string()),
-                r.omega_dt().map_or("inf".to_owned(), |w| w.to_string()),
-            )?;
-        }
-    }
-    fs::write(args.out.join("stability.csv"), csv)?;
-
-    let hard = run_hard_cases(args.quick);
-    writeln!(
-        table,
-        "\n## Hard cases: bounded (ok) or diverged at step N\n"
-    )?;
-    table_head(&mut table, ["case", "steps"], &names)?;
-    let mut csv = String::from("case,rate_hz,steps,integrator,diverged_at_step\n");
-    for (case, outcomes) in &hard {
-        let cells: Vec<String> = outcomes
-            .iter()
-            .map(|o| o.map_or("ok".to_owned(), |s| format!("diverged @{s}")))
-            .collect();
-        writeln!(
-            table,
-            "| {} | {} | {} |",
-            case.name,
-            case.steps,
-            cells.join(" | ")
-        )?;
-        for (integrator, outcome) in Integrator::ALL.iter().zip(outcomes) {
-            writeln!(
-                csv,
-                "\"{}\",{},{},{},{}",
-                case.name,
-                case.rate,
-                case.steps,
-                integrator,
-                optional(*outcome)
-            )?;
-        }
-    }
-    fs::write(args.out.join("hard_cases.csv"), csv)?;
 
     let cases = stiff_cases(args.quick);
     let sweep = stiffness_sweep(&cases, args.quick);
