@@ -10,7 +10,8 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{StiffPoint, WorkPoint};
+use super::stiffness::StiffPoint;
+use super::work_precision::WorkPoint;
 use crate::physics::Integrator;
 use crate::references::work_scenes;
 

@@ -144,7 +144,8 @@ impl Table {
         self.rows.push(cells);
     }
 
-    /// A line of prose under the table, in the Markdown only.
+    /// A line of prose under the table, in the Markdown only (the side-by-side's).
+    #[cfg_attr(not(feature = "peers"), allow(dead_code))]
     pub fn note(&mut self, line: impl Display) {
         self.note += &format!("{line}\n");
     }
