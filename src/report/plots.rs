@@ -15,7 +15,7 @@ use super::work_precision::WorkPoint;
 use crate::physics::Integrator;
 use crate::references::work_scenes;
 
-/// One line of a plot: an integrator's (dots), or a whole engine's in an `App` (triangles).
+/// One line of a plot: an integrator's (dots), or a contender's whole `App` tick (triangles).
 pub struct Line {
     pub label: String,
     pub colour: RGBAColor,
@@ -38,7 +38,8 @@ impl Line {
     }
 }
 
-/// Lines from outside the core's integrators (the peers), to draw beside them: by scene in
+/// Lines from outside the core's integrators (the contenders in their `App`s), to draw beside
+/// them: by scene in
 /// the work-precision plot, and in the stiffness plot's cost and error panels.
 #[derive(Default)]
 pub struct ExtraLines {
@@ -112,7 +113,7 @@ fn extent(values: impl Iterator<Item = f64>) -> (f64, f64) {
 }
 
 /// Error (log x) against cost (log y), a panel per scene, a line per integrator (and per
-/// peer: `extra`, by scene); diverged runs are red crosses at the right edge.
+/// contender: `extra`, by scene); diverged runs are red crosses at the right edge.
 pub(super) fn plot_work_precision(
     points: &[WorkPoint],
     mut extra: Vec<(&'static str, Line)>,
@@ -134,9 +135,9 @@ pub(super) fn plot_work_precision(
                 Line::of(integrator, line)
             })
             .collect();
-        let (peers, others) = extra.into_iter().partition(|(s, _)| s == scene);
+        let (contenders, others) = extra.into_iter().partition(|(s, _)| s == scene);
         extra = others;
-        lines.extend(peers.into_iter().map(|(_, line)| line));
+        lines.extend(contenders.into_iter().map(|(_, line)| line));
         let (x_min, x_max) = extent(lines.iter().flat_map(|l| l.points.iter().map(|p| p.0)));
         let x_max = x_max.max(1.0) * 30.0;
         let (y_min, y_max) = extent(
@@ -165,7 +166,7 @@ pub(super) fn plot_work_precision(
 }
 
 /// Cost per step and error against k at 100 Hz, a line per integrator; `extra` holds the
-/// peers' lines for the two panels (cost, error).
+/// contenders' lines for the two panels (cost, error).
 pub(super) fn plot_stiffness(
     points: &[StiffPoint],
     extra: [Vec<Line>; 2],
@@ -184,7 +185,7 @@ pub(super) fn plot_stiffness(
             p.error.map(|e| e.max(1e-14))
         }),
     ];
-    for ((area, (title, y_desc, value)), peers) in
+    for ((area, (title, y_desc, value)), contenders) in
         root.split_evenly((1, 2)).iter().zip(views).zip(extra)
     {
         let mut lines: Vec<Line> = Integrator::ALL
@@ -198,7 +199,7 @@ pub(super) fn plot_stiffness(
                 Line::of(integrator, line)
             })
             .collect();
-        lines.extend(peers);
+        lines.extend(contenders);
         let (y_min, y_max) = extent(lines.iter().flat_map(|l| l.points.iter().map(|p| p.1)));
         draw_panel(
             area,
