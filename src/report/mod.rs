@@ -2,7 +2,7 @@
 //! section at a time (the work-precision sweep, the stability table, the hard cases, the
 //! stiffness sweep with its invariants and the engines for `auto`, the energy ledger, and with
 //! `--peers` the side-by-side with avian2d and bevy_rapier2d), then the plots. Each section
-//! builds its [`table::Table`]s; `run` writes them: `report.md` and a CSV file per table.
+//! builds its tables (`table::Table`); `run` writes them: `report.md` and a CSV file per table.
 //!
 //! Errors are final-pose errors: the largest distance between where a corner of the box is
 //! and where the reference says it should be (px). Costs are nanoseconds of this machine (the

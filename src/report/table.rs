@@ -155,6 +155,7 @@ impl Table {
         self.file
     }
 
+    /// The CSV: the header, then a line per row.
     pub fn csv(&self) -> String {
         let columns: Vec<usize> = (0..self.columns.len())
             .filter(|&c| self.columns[c].csv.is_some())
@@ -249,4 +250,44 @@ fn cells_line<'a>(cells: impl Iterator<Item = &'a str>) -> String {
         text += " |";
     }
     text + "\n"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two rows per line in the Markdown, one each in the CSV; an empty cell stays `| |`.
+    #[test]
+    fn a_wide_markdown_table_over_a_long_csv() {
+        let mut table = Table::new(
+            "Heading",
+            Some("t.csv"),
+            vec![
+                Column::new("k", "k"),
+                Column::csv("integrator"),
+                Column::new("{} error", "error_px").each(),
+                Column::markdown("note"),
+            ],
+        )
+        .across(1);
+        for (k, integrator, error) in [(1, "a", Some(0.5)), (1, "b", None), (2, "a", None)] {
+            table.row(vec![
+                Cell::same(k),
+                Cell::same(integrator),
+                Cell::new(
+                    error.map_or("-".to_owned(), |e| format!("{e}")),
+                    or_empty(error),
+                ),
+                Cell::markdown(""),
+            ]);
+        }
+        assert_eq!(
+            table.markdown(),
+            "## Heading\n\n| k | a error | b error | note |\n|---|---|---|---|\n\
+             | 1 | 0.5 | - | |\n| 2 | - | | |\n"
+        );
+        assert_eq!(table.csv(), "k,integrator,error_px\n1,a,0.5\n1,b,\n2,a,\n");
+        assert_eq!(quoted("a \"b\", c"), "\"a \"\"b\"\", c\"");
+        assert_eq!(diverged(7), "diverged @7");
+    }
 }
