@@ -78,8 +78,8 @@ fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> Accurac
 const TIMED_TICKS: u64 = 100;
 
 /// The time per tick over `timed` ticks of fresh runs after each run's first tick, where
-/// every engine builds its own structures (about 1 ms for avian2d, 0.5 ms for rapier, 0.1 ms
-/// for ours): a game pays that once, not every tick. The `App`'s construction is untimed, and
+/// every contender builds its own structures (how long: README, "Side by side with avian2d
+/// and bevy_rapier2d"): a game pays that once, not every tick. The `App`'s construction is untimed, and
 /// one untimed run warms caches and allocators first.
 fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, timed: u64, reps: usize) -> f64 {
     let timed = timed.max(1);
@@ -103,7 +103,7 @@ fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, timed: u64, reps: u
 }
 
 /// `scenario` with every pull one fixed step later: the box rests through the first tick (the
-/// engines' set-up, untimed), so that the ticks timed are exactly those of the original run.
+/// contenders' set-up, untimed), so that the ticks timed are exactly those of the original run.
 fn one_tick_later(scenario: &Scenario, rate: f64) -> Scenario {
     let mut later = scenario.clone();
     for pull in &mut later.pulls {

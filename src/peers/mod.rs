@@ -1,5 +1,5 @@
-//! The peers (issue #5): the seed scene in the Bevy physics crates avian2d and bevy_rapier2d,
-//! each in a headless `App` beside our own plugin, driven by the same scripted pulls so that
+//! The peers (issue #5): the report's scenes in the Bevy physics crates avian2d and
+//! bevy_rapier2d, each in a headless `App` beside our own plugin, driven by the same scripted pulls so that
 //! the report can measure error, energy drift and the cost of a tick side by side.
 //!
 //! Compiled only with the `peers` feature: the game, the tests and CI never build these crates.
@@ -18,8 +18,8 @@ use crate::physics::scenario::{BandChange, PullSchedule};
 use crate::physics::{BandEnds, BodyState, MassProperties, Scenario, SceneParams};
 use crate::simulation::run_single_threaded;
 
-/// A physics engine holding the scene in a headless `App` that takes exactly one fixed step
-/// per `update()`.
+/// A contender (our plugin or a peer) holding the scene in a headless `App` that takes exactly
+/// one fixed step per `update()`.
 pub trait Contender {
     /// Short name for tables and plots.
     const NAME: &'static str;
@@ -30,7 +30,7 @@ pub trait Contender {
     /// Attaches the band (or moves it), or removes it with `None`.
     fn set_band(&mut self, band: Option<BandEnds>);
 
-    /// The box's state as the engine holds it now, in f64.
+    /// The box's state as the contender holds it now, in f64.
     fn state(&mut self) -> BodyState;
 
     fn app(&mut self) -> &mut App;
@@ -48,8 +48,8 @@ pub fn headless_app(rate_hz: f64) -> App {
 
 /// Finishes the app, runs its first update (which only starts the clock and runs `Startup`)
 /// and puts every schedule on the single-threaded executor, so that all contenders pay the
-/// same, smallest, scheduling cost (on two cores the multi-threaded one costs ~50x more for a
-/// scene this small).
+/// same, smallest, scheduling cost (on two cores the multi-threaded one costs far more for a
+/// scene this small: README, "Benchmarks").
 pub fn start(app: &mut App) {
     app.finish();
     app.cleanup();
@@ -97,7 +97,7 @@ impl<C: Contender> PeerRun<C> {
     }
 
     /// One fixed step (one `App` update), then the pulls for the next. The state is read
-    /// after every step, so that engines that keep the rotation as (cos, sin) count whole
+    /// after every step, so that peers that keep the rotation as (cos, sin) count whole
     /// turns (see [`unwrap_angle`]); every contender pays the same small read.
     pub fn advance(&mut self) {
         self.contender.app().update();
@@ -117,7 +117,7 @@ impl<C: Contender> PeerRun<C> {
     }
 }
 
-/// The angle equal to `wrapped` modulo 2π that is nearest `previous`: engines that keep a
+/// The angle equal to `wrapped` modulo 2π that is nearest `previous`: peers that keep a
 /// rotation as (cos, sin) give it back in (−π, π]; our orientation counts whole turns.
 pub fn unwrap_angle(previous: f64, wrapped: f64) -> f64 {
     let turn = std::f64::consts::TAU;

@@ -1,0 +1,50 @@
+//! The energy ledger: how well each integrator's books balance, the largest residual of the
+//! energy ledger over a run relative to the energy that passed through it, on the tutorial
+//! scene and the damped stiff band. `run` shows its table (Markdown only).
+
+use crate::physics::{Integrator, Run, Scenario};
+
+use super::table::{Cell, Column, Table, diverged};
+
+/// The largest |ledger residual| over a run, relative to the energy that passed through, or
+/// the step where the run diverged.
+fn ledger_residual(scenario: &Scenario, integrator: Integrator, steps: u64) -> Result<f64, u64> {
+    let mut run = Run::of(scenario, integrator, 0.01).expect("valid");
+    let mut worst: f64 = 0.0;
+    for _ in 0..steps {
+        run.advance().map_err(|d| d.step)?;
+        worst = worst.max(run.ledger.residual(run.stepper.energy()).abs());
+    }
+    Ok(worst / run.ledger.throughput())
+}
+
+/// A line per integrator, in the Markdown only.
+pub(super) fn table(quick: bool) -> Table {
+    let mut table = Table::new(
+        "Energy ledger at 100 Hz: largest |residual| relative to the energy that passed \
+         through (tutorial: 4 s; stiff, k = 1e5 with damping: 10 s)",
+        None,
+        vec![
+            Column::markdown("integrator"),
+            Column::markdown("tutorial"),
+            Column::markdown("stiff"),
+        ],
+    );
+    let tutorial = Scenario::named("tutorial").expect("built-in");
+    let stiff = Scenario::named("stiff").expect("built-in");
+    let steps = if quick { 100 } else { 1000 };
+    let cell = |outcome: Result<f64, u64>| {
+        Cell::markdown(match outcome {
+            Ok(residual) => format!("{residual:.1e}"),
+            Err(step) => diverged(step),
+        })
+    };
+    for integrator in Integrator::ALL {
+        table.row(vec![
+            Cell::same(integrator),
+            cell(ledger_residual(&tutorial, integrator, 400)),
+            cell(ledger_residual(&stiff, integrator, steps)),
+        ]);
+    }
+    table
+}

@@ -1,0 +1,100 @@
+//! The stability table: for each integrator, the largest band stiffness at which the tutorial
+//! scene with the band held stays bounded, at 64 and 100 Hz. `run` makes its table
+//! (`stability.csv`).
+
+use crate::physics::scenario::TUTORIAL_PULL_TARGET;
+use crate::physics::{Integrator, Run, Scenario, SceneParams};
+
+use super::table::{Cell, Column, Table};
+
+/// Whether the tutorial scene with the band held at stiffness `k` stays bounded for 20 s.
+fn stable_at(integrator: Integrator, k: f64, rate: f64) -> bool {
+    let mut scenario = Scenario::named("tutorial").expect("built-in");
+    scenario.params.stiffness = k;
+    scenario.pulls = vec![(0.0, f64::INFINITY, TUTORIAL_PULL_TARGET)];
+    let dt = 1.0 / rate;
+    let mut run = Run::of(&scenario, integrator, dt).expect("valid");
+    run.advance_by((20.0 * rate) as u64).is_ok()
+}
+
+/// The stiffest band tried.
+pub const STIFFEST_TRIED: f64 = 1e12;
+
+#[derive(Clone, Debug)]
+pub struct StabilityRow {
+    pub integrator: Integrator,
+    pub rate: f64,
+    /// None: stable at every k tried, up to [`STIFFEST_TRIED`].
+    pub largest_stable_k: Option<f64>,
+}
+
+impl StabilityRow {
+    /// ω·dt of the stiffest mode, ω = 2·sqrt(k/m), at the largest stable k.
+    pub fn omega_dt(&self) -> Option<f64> {
+        let mass = SceneParams::tutorial().mass;
+        self.largest_stable_k
+            .map(|k| 2.0 * (k / mass).sqrt() / self.rate)
+    }
+}
+
+/// Bisection on log10 k between 1e-2 and 1e12.
+fn stability_table() -> Vec<StabilityRow> {
+    let mut rows = Vec::new();
+    for rate in [64.0, 100.0] {
+        for integrator in Integrator::ALL {
+            let largest_stable_k = if stable_at(integrator, STIFFEST_TRIED, rate) {
+                None
+            } else {
+                let (mut low, mut high) = (-2.0_f64, STIFFEST_TRIED.log10());
+                for _ in 0..40 {
+                    let middle = 0.5 * (low + high);
+                    if stable_at(integrator, 10f64.powf(middle), rate) {
+                        low = middle;
+                    } else {
+                        high = middle;
+                    }
+                }
+                Some(10f64.powf(low))
+            };
+            rows.push(StabilityRow {
+                integrator,
+                rate,
+                largest_stable_k,
+            });
+        }
+    }
+    rows
+}
+
+/// A line per integrator, k and ω·dt side by side for each rate; the CSV a row per rate.
+pub(super) fn table() -> Table {
+    let mut table = Table::new(
+        "Stability: largest stable k (tutorial scene, band held, 20 s)",
+        Some("stability.csv"),
+        vec![
+            Column::new("integrator", "integrator"),
+            Column::csv("rate_hz"),
+            Column::new("k at {}", "largest_stable_k").each(),
+            Column::new("omega dt", "omega_dt").each(),
+        ],
+    )
+    .across(1);
+    let rows = stability_table();
+    let value = |value: Option<f64>, missing: &str| {
+        Cell::new(
+            value.map_or(missing.to_owned(), |v| format!("{v:.3e}")),
+            value.map_or("inf".to_owned(), |v| v.to_string()),
+        )
+    };
+    for integrator in Integrator::ALL {
+        for r in rows.iter().filter(|r| r.integrator == integrator) {
+            table.row(vec![
+                Cell::same(integrator),
+                Cell::new(format!("{} Hz", r.rate), r.rate.to_string()),
+                value(r.largest_stable_k, &format!("> {STIFFEST_TRIED:e}")),
+                value(r.omega_dt(), "any"),
+            ]);
+        }
+    }
+    table
+}
