@@ -63,6 +63,10 @@ fn imports(module: &str, code: &str, known: &BTreeMap<String, String>) -> BTreeS
         module.split("::").map(str::to_owned).collect()
     };
     let mut found = BTreeSet::new();
+    // Visibilities (`pub(super)`, `pub(crate)`) name no module to import.
+    let code = code
+        .replace("pub(super)", "pub")
+        .replace("pub(crate)", "pub");
     let words: Vec<&str> = code
         .split(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':' || c == '{'))
         .filter(|w| !w.is_empty())
@@ -70,7 +74,10 @@ fn imports(module: &str, code: &str, known: &BTreeMap<String, String>) -> BTreeS
     for word in words {
         let word = word.trim_end_matches([':', '{']);
         let segments: Vec<&str> = word.split("::").filter(|s| !s.is_empty()).collect();
-        let Some((&first, rest)) = segments.split_first() else {
+        // A bare `super` or `crate` (a glob, `use super::*`, in a file's own test module)
+        // names no item: skip it rather than guess which module it means.
+        let Some((&first, rest)) = segments.split_first().filter(|(_, rest)| !rest.is_empty())
+        else {
             continue;
         };
         let mut path: Vec<String> = match first {
@@ -78,7 +85,7 @@ fn imports(module: &str, code: &str, known: &BTreeMap<String, String>) -> BTreeS
             "super" => here[..here.len().saturating_sub(1)].to_vec(),
             "self" => here.clone(),
             // A child module named from its parent (`use child::Item`, `child::f()`).
-            child if !rest.is_empty() => {
+            child => {
                 let mut path = here.clone();
                 path.push(child.to_owned());
                 if !known.contains_key(&path.join("::")) {
@@ -86,7 +93,6 @@ fn imports(module: &str, code: &str, known: &BTreeMap<String, String>) -> BTreeS
                 }
                 path
             }
-            _ => continue,
         };
         let mut rest = rest;
         while let Some((&"super", tail)) = rest.split_first() {
@@ -180,10 +186,12 @@ fn the_reader_finds_a_circle_when_there_is_one() {
     known.insert("a".to_owned(), "use crate::b::Thing;".to_owned());
     known.insert("b".to_owned(), "fn f() { super::a::g() }".to_owned());
     known.insert("c".to_owned(), "use crate::a;".to_owned());
+    known.insert("a::d".to_owned(), "pub(super) fn h() {}".to_owned());
     let graph: BTreeMap<_, _> = known
         .iter()
         .map(|(m, code)| (m.clone(), imports(m, code, &known)))
         .collect();
     assert_eq!(circle_from("a", &graph), Some(vec!["a".into(), "b".into()]));
     assert_eq!(circle_from("c", &graph), None);
+    assert!(graph["a::d"].is_empty(), "a visibility is not an import");
 }

@@ -29,10 +29,10 @@ fn holds_the_scene<C: Contender>(tolerance: f64) {
     run.advance_by(50);
     assert_eq!(run.state(), BodyState::default(), "{}", C::NAME);
 
-    let seed = Scenario::named("tutorial").unwrap();
-    let mut run = PeerRun::<C>::of(&seed, 100.0);
+    let tutorial = Scenario::named("tutorial").unwrap();
+    let mut run = PeerRun::<C>::of(&tutorial, 100.0);
     run.advance_by(400);
-    let reference = reference_state(&seed, 4.0, 1e-4);
+    let reference = reference_state(&tutorial, 4.0, 1e-4);
     let error = run.state().pose_error(&reference, &run.mass);
     assert!(error < tolerance, "{}: {error} px after 4 s", C::NAME);
 }
@@ -51,8 +51,8 @@ fn rapier_holds_the_scene() {
 fn a_released_band_stops_pulling() {
     // Pulled for 2 s then released: afterwards only damping acts, so the speed only falls.
     fn speeds<C: Contender>() -> Vec<f64> {
-        let seed = Scenario::named("tutorial").unwrap();
-        let mut run = PeerRun::<C>::of(&seed, 100.0);
+        let tutorial = Scenario::named("tutorial").unwrap();
+        let mut run = PeerRun::<C>::of(&tutorial, 100.0);
         run.advance_by(201);
         (0..100)
             .map(|_| {
@@ -78,12 +78,12 @@ fn angles_unwrap_to_the_nearest_turn() {
 }
 
 /// The band pulls from the very first step: after one step from rest the box moves, in every
-/// engine, by about the same amount.
+/// contender, by about the same amount.
 #[test]
 fn the_band_acts_from_the_first_step() {
     fn first_step<C: Contender>() -> BodyState {
-        let seed = Scenario::named("tutorial").unwrap();
-        let mut run = PeerRun::<C>::of(&seed, 100.0);
+        let tutorial = Scenario::named("tutorial").unwrap();
+        let mut run = PeerRun::<C>::of(&tutorial, 100.0);
         run.advance();
         run.state()
     }

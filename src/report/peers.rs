@@ -72,7 +72,7 @@ fn work_scenes_side_by_side(quick: bool) -> (Table, Vec<(&'static str, Line)>) {
         vec![
             Column::new("scene", "scene"),
             Column::new("rate", "rate_hz"),
-            Column::new("engine", "engine"),
+            Column::new("contender", "contender"),
             Column::csv("steps"),
             Column::new("error", "error_px"),
             Column::new("energy drift", "energy_drift"),
@@ -144,7 +144,7 @@ fn stiffness_side_by_side(cases: &[StiffCase], quick: bool) -> (Table, [Vec<Line
         vec![
             Column::new("k", "k"),
             Column::new("rate", "rate_hz"),
-            Column::csv("engine"),
+            Column::csv("contender"),
             Column::csv("ns_per_tick"),
             Column::csv("error_px"),
             Column::new("horizon (s)", "horizon_s"),
