@@ -75,3 +75,108 @@ fn asking_for_the_peers_without_them_says_how_to_get_them() {
     let message = String::from_utf8_lossy(&output.stderr);
     assert!(message.contains("--features peers"), "{message}");
 }
+
+/// The quick report's files in a fresh folder: (work precision, stability, report.md).
+fn quick_report(tag: &str) -> (Vec<Vec<String>>, Vec<Vec<String>>, String) {
+    let out = std::env::temp_dir().join(format!(
+        "rubber-band-box-report-{tag}-{}",
+        std::process::id()
+    ));
+    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
+        .args(["report", "--quick", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(output.status.success());
+    let rows = |name: &str| -> Vec<Vec<String>> {
+        fs::read_to_string(out.join(name))
+            .unwrap()
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').map(str::to_owned).collect())
+            .collect()
+    };
+    let files = (
+        rows("work_precision.csv"),
+        rows("stability.csv"),
+        fs::read_to_string(out.join("report.md")).unwrap(),
+    );
+    fs::remove_dir_all(&out).ok();
+    files
+}
+
+/// What README says the report shows, as orderings and bounds the report could break: on the
+/// tutorial scene `auto` beats `rk4` beats `verlet` beats the first-order methods at every
+/// step, `rk4` and `verlet` converge at their orders, the stability table orders the methods
+/// as their stability regions do, and `auto`'s energy books balance to 1e-6.
+#[test]
+fn the_quick_report_bears_out_the_claims_readme_makes() {
+    let (work, stability, markdown) = quick_report("claims");
+    let error = |integrator: &str, dt: &str| -> f64 {
+        let row = work
+            .iter()
+            .find(|r| r[0] == "tutorial" && r[1] == integrator && r[2] == dt)
+            .unwrap_or_else(|| panic!("tutorial {integrator} {dt}"));
+        row[4].parse().unwrap_or(f64::INFINITY)
+    };
+    let steps: Vec<String> = work
+        .iter()
+        .filter(|r| r[0] == "tutorial" && r[1] == "rk4")
+        .map(|r| r[2].clone())
+        .collect();
+    assert_eq!(steps.len(), 3);
+    for dt in &steps {
+        let ranked = ["auto", "rk4", "verlet", "symplectic", "euler"].map(|i| error(i, dt));
+        assert!(ranked.windows(2).all(|w| w[0] < w[1]), "dt {dt}: {ranked:?}");
+        assert!(ranked[0] < 1e-9, "auto at dt {dt}: {}", ranked[0]);
+    }
+    // From 0.01 s to 0.001 s: ten times smaller steps, 10^order times smaller error.
+    for (integrator, order) in [("rk4", 4.0), ("verlet", 2.0), ("euler", 1.0)] {
+        let observed = (error(integrator, "0.01") / error(integrator, "0.001")).log10();
+        assert!((observed - order).abs() < 0.3, "{integrator}: {observed}");
+    }
+
+    let largest_k = |integrator: &str, rate: &str| -> f64 {
+        let row = stability
+            .iter()
+            .find(|r| r[0] == integrator && r[1] == rate)
+            .unwrap();
+        row[2].parse().unwrap()
+    };
+    let omega_dt = |integrator: &str, rate: &str| -> f64 {
+        let row = stability
+            .iter()
+            .find(|r| r[0] == integrator && r[1] == rate)
+            .unwrap();
+        row[3].parse().unwrap()
+    };
+    for rate in ["64", "100"] {
+        let k = |i: &str| largest_k(i, rate);
+        assert!(k("euler") < k("symplectic").min(k("seed")), "{rate} Hz");
+        assert!(k("symplectic").max(k("seed")) < k("verlet"), "{rate} Hz");
+        assert!(k("verlet") < k("rk4") && k("rk4").is_finite(), "{rate} Hz");
+        assert!(k("implicit").is_infinite() && k("auto").is_infinite(), "{rate} Hz");
+        // The stability limits in ω·dt of the stiffest mode, 2√(k/m) at a corner: 2 for
+        // symplectic Euler, up to twice RK4's 2.83 once the box hangs on the band's line.
+        assert!((omega_dt("symplectic", rate) - 2.0).abs() < 0.2, "{rate} Hz");
+        let rk4 = omega_dt("rk4", rate);
+        assert!((2.78..=2.0 * 2.83).contains(&rk4), "{rate} Hz: {rk4}");
+    }
+
+    let ledger = markdown
+        .split("## Energy ledger")
+        .nth(1)
+        .expect("the report has its ledger table");
+    let auto_row = ledger
+        .lines()
+        .find(|l| l.starts_with("| auto |"))
+        .expect("auto's row");
+    let cells: Vec<f64> = auto_row
+        .split('|')
+        .map(str::trim)
+        .filter(|c| !c.is_empty() && *c != "auto")
+        .map(|c| c.parse().unwrap())
+        .collect();
+    assert_eq!(cells.len(), 2, "{auto_row}");
+    assert!(cells.iter().all(|&r| r < 1e-6), "{auto_row}");
+}
