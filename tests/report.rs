@@ -127,7 +127,10 @@ fn the_quick_report_bears_out_the_claims_readme_makes() {
     assert_eq!(steps.len(), 3);
     for dt in &steps {
         let ranked = ["auto", "rk4", "verlet", "symplectic", "euler"].map(|i| error(i, dt));
-        assert!(ranked.windows(2).all(|w| w[0] < w[1]), "dt {dt}: {ranked:?}");
+        assert!(
+            ranked.windows(2).all(|w| w[0] < w[1]),
+            "dt {dt}: {ranked:?}"
+        );
         assert!(ranked[0] < 1e-9, "auto at dt {dt}: {}", ranked[0]);
     }
     // From 0.01 s to 0.001 s: ten times smaller steps, 10^order times smaller error.
@@ -155,10 +158,16 @@ fn the_quick_report_bears_out_the_claims_readme_makes() {
         assert!(k("euler") < k("symplectic").min(k("seed")), "{rate} Hz");
         assert!(k("symplectic").max(k("seed")) < k("verlet"), "{rate} Hz");
         assert!(k("verlet") < k("rk4") && k("rk4").is_finite(), "{rate} Hz");
-        assert!(k("implicit").is_infinite() && k("auto").is_infinite(), "{rate} Hz");
+        assert!(
+            k("implicit").is_infinite() && k("auto").is_infinite(),
+            "{rate} Hz"
+        );
         // The stability limits in ω·dt of the stiffest mode, 2√(k/m) at a corner: 2 for
         // symplectic Euler, up to twice RK4's 2.83 once the box hangs on the band's line.
-        assert!((omega_dt("symplectic", rate) - 2.0).abs() < 0.2, "{rate} Hz");
+        assert!(
+            (omega_dt("symplectic", rate) - 2.0).abs() < 0.2,
+            "{rate} Hz"
+        );
         let rk4 = omega_dt("rk4", rate);
         assert!((2.78..=2.0 * 2.83).contains(&rk4), "{rate} Hz: {rk4}");
     }

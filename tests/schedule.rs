@@ -560,3 +560,38 @@ fn the_state_survives_a_resize_and_the_pointer_follows_the_new_view() {
     let anchor = resized.the_band().ends.anchor;
     assert!(anchor.distance(target) < 1e-3, "{anchor} for {target}");
 }
+
+/// The drawn state lies between the last two steps, as far along as the clock has run past
+/// the last one: with frames shorter than a step and a steady pull, the drawn box moves
+/// forward every frame. (Previous and current swapped, it would jump back within each step:
+/// jitter no other test would see.)
+#[test]
+fn the_drawn_state_moves_forward_every_frame_between_steps() {
+    use rubber_band_box::simulation::RenderSnapshots;
+    use rubber_band_box::view::interpolated_state;
+    let mut game = Game::new(Duration::from_millis(7));
+    // Along the diagonal from rest: x grows for the first half period, about 1.5 s.
+    game.press_at(DVec2::new(150.0, 150.0));
+    let mut drawn = Vec::new();
+    for _ in 0..80 {
+        game.update(1);
+        let world = game.world();
+        let snapshots = *world
+            .query::<&RenderSnapshots>()
+            .single(world)
+            .expect("one box");
+        let fixed = world.resource::<Time<Fixed>>();
+        let x = interpolated_state(&snapshots, fixed).linear.position.x;
+        let (low, high) = (
+            snapshots.previous.linear.position.x,
+            snapshots.current.linear.position.x,
+        );
+        assert!(low <= x && x <= high, "{low} <= {x} <= {high}");
+        drawn.push(x);
+    }
+    let moving = drawn.iter().position(|&x| x > 0.0).expect("the box moves");
+    assert!(moving < 5, "{drawn:?}");
+    for pair in drawn[moving..].windows(2) {
+        assert!(pair[1] > pair[0], "the drawn box went back: {drawn:?}");
+    }
+}
