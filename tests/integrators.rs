@@ -221,6 +221,109 @@ const TUTORIAL_FRAMES: [(u64, [f64; 6]); 6] = [
     ),
 ];
 
+/// The same transliteration with a frame of 1/64 s (its per-frame constants scaled from the
+/// per-second ones: k by the frame squared, the drag by the frame, 0.98 to the power of the
+/// frame in hundredths): `python3 tests/fixtures/tutorial_reference.py` prints both tables.
+const TUTORIAL_FRAMES_64_HZ: [(u64, [f64; 6]); 6] = [
+    (
+        1,
+        [
+            320.166015625,
+            239.912109375,
+            0.00390625,
+            0.166015625,
+            -0.087890625,
+            0.00390625,
+        ],
+    ),
+    (
+        2,
+        [
+            320.4951765391158,
+            239.73767258256004,
+            0.011532537307435082,
+            0.32916091411578896,
+            -0.1744367924399628,
+            0.0076262873074350816,
+        ],
+    ),
+    (
+        20,
+        [
+            350.09617754481184,
+            223.18877430922205,
+            0.3819390710625411,
+            2.611851369107679,
+            -1.5205479837854052,
+            0.013581943811300639,
+        ],
+    ),
+    (
+        40,
+        [
+            415.2415146378746,
+            183.3344080533488,
+            0.2604327630007317,
+            3.596388040216323,
+            -2.2437179204533337,
+            -0.014330469787122766,
+        ],
+    ),
+    (
+        41,
+        [
+            418.78170911496255,
+            181.12574822540253,
+            0.24654759396607098,
+            3.540194477087943,
+            -2.2086598279462506,
+            -0.01388516903466073,
+        ],
+    ),
+    (
+        60,
+        [
+            476.45847687803524,
+            145.14231262926825,
+            0.05125573084904511,
+            2.624690226880439,
+            -1.637494183563167,
+            -0.007622111424152535,
+        ],
+    ),
+];
+
+/// `seed` at a step other than the tutorial's 0.01 s is still the tutorial's update, run with
+/// that frame: the per-second constants convert exactly, at any step.
+#[test]
+fn seed_at_64_hz_reproduces_the_tutorials_update_run_at_that_frame() {
+    let dt = 1.0 / 64.0;
+    let pulls = vec![Pull {
+        start: 0,
+        end: 40,
+        target: DVec2::new(200.0, 120.0),
+    }];
+    let mut run = Run::new(
+        SceneParams::tutorial(),
+        BodyState::default(),
+        pulls,
+        Integrator::Seed,
+        dt,
+    )
+    .unwrap();
+    for (frame, [x, y, theta, vx, vy, omega]) in TUTORIAL_FRAMES_64_HZ {
+        run.advance_by(frame - run.step).unwrap();
+        // y down to y up, per frame to per second.
+        let expected = [x - 320.0, 240.0 - y, -theta, vx / dt, -vy / dt, -omega / dt];
+        for (got, want) in run.stepper.state.to_array().iter().zip(expected) {
+            assert!(
+                (got - want).abs() <= 1e-12 * want.abs().max(1.0),
+                "frame {frame}: {got} != {want}"
+            );
+        }
+    }
+}
+
 #[test]
 fn seed_reproduces_the_tutorials_trajectory_to_round_off() {
     // Screen (520, 120) is world (200, 120); pressed for 30 frames.
