@@ -1,5 +1,5 @@
 //! The peers' harness (`cargo test --features peers --test peers`): each engine holds the
-//! scene as we set it up, and our own contender is the core, step for step.
+//! scene as we set it up, and our own contender is the core, step for step. CI runs these.
 #![cfg(feature = "peers")]
 
 use rubber_band_box::peers::avian::Avian;
@@ -98,4 +98,48 @@ fn the_band_acts_from_the_first_step() {
             "{name}: {state:?} against {ours:?}"
         );
     }
+}
+
+/// What the harness must switch off for the peers to hold our scene, checked by what it does:
+/// sleeping (a damped box slowing below the crates' sleep thresholds keeps decaying at its
+/// rate instead of stopping dead), rapier's speed cap (400 units per second by default: the
+/// far anchor's pull is far faster), and avian's f32 transform sync (an f64 position that f32
+/// cannot hold stays exact).
+fn never_sleeps_and_is_not_speed_capped<C: Contender>() {
+    // Released at 2 s, then damped at b/m = 1 /s: by 10 s a few hundredths of a px/s.
+    let tutorial = Scenario::named("tutorial").unwrap();
+    let mut run = PeerRun::<C>::of(&tutorial, 100.0);
+    run.advance_by(900);
+    let at_9_s = run.state().linear.velocity.length();
+    run.advance_by(100);
+    let at_10_s = run.state().linear.velocity.length();
+    assert!(at_10_s > 0.0 && at_10_s < 1.0, "{}: {at_9_s} -> {at_10_s}", C::NAME);
+    let rate = (at_9_s / at_10_s).ln();
+    assert!((rate - 1.0).abs() < 0.05, "{}: decay rate {rate} /s", C::NAME);
+
+    let far = Scenario::named("far").unwrap();
+    let mut run = PeerRun::<C>::of(&far, 100.0);
+    run.advance_by(10);
+    let speed = run.state().linear.velocity.length();
+    assert!(speed > 1e4, "{}: {speed} px/s after 0.1 s", C::NAME);
+}
+
+#[test]
+fn avian2d_never_sleeps_and_is_not_speed_capped() {
+    never_sleeps_and_is_not_speed_capped::<Avian>();
+}
+
+#[test]
+fn bevy_rapier2d_never_sleeps_and_is_not_speed_capped() {
+    never_sleeps_and_is_not_speed_capped::<Rapier>();
+}
+
+#[test]
+fn avian2d_keeps_f64_positions_with_no_transform_round_trip() {
+    let mut scenario = Scenario::named("rest").unwrap();
+    scenario.initial.linear.position.x = 1000.1;
+    assert_ne!(f64::from(1000.1_f32), 1000.1);
+    let mut run = PeerRun::<Avian>::of(&scenario, 100.0);
+    run.advance_by(10);
+    assert_eq!(run.state().linear.position.x, 1000.1);
 }
