@@ -317,3 +317,36 @@ fn the_auto_overrides_change_autos_steps() {
     assert!(column(&with(&["--auto-order", "6"]), fallbacks) > 0.0);
     assert_eq!(column(&with(&["--auto-max-substeps", "1"]), fallbacks), 5.0);
 }
+
+/// README's table of `simulate`'s options and `simulate --help` name the same options.
+#[test]
+fn readme_documents_exactly_the_options_simulate_has() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .expect("README.md");
+    let section = readme
+        .split("\n## Simulate\n")
+        .nth(1)
+        .and_then(|rest| rest.split("\n## ").next())
+        .expect("README has a Simulate section");
+    let flags = |text: &str| -> std::collections::BTreeSet<String> {
+        text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+            .filter(|word| word.starts_with("--") && word.len() > 2)
+            .map(str::to_owned)
+            .collect()
+    };
+    let documented = flags(
+        &section
+            .lines()
+            .filter(|line| line.starts_with("| `--"))
+            .map(|line| line.split('|').nth(1).unwrap_or(""))
+            .collect::<Vec<_>>()
+            .join(" "),
+    );
+    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
+        .args(["simulate", "--help"])
+        .output()
+        .expect("the binary runs");
+    let mut offered = flags(&String::from_utf8_lossy(&output.stdout));
+    offered.remove("--help");
+    assert_eq!(documented, offered);
+}

@@ -113,9 +113,17 @@ fn never_sleeps_and_is_not_speed_capped<C: Contender>() {
     let at_9_s = run.state().linear.velocity.length();
     run.advance_by(100);
     let at_10_s = run.state().linear.velocity.length();
-    assert!(at_10_s > 0.0 && at_10_s < 1.0, "{}: {at_9_s} -> {at_10_s}", C::NAME);
+    assert!(
+        at_10_s > 0.0 && at_10_s < 1.0,
+        "{}: {at_9_s} -> {at_10_s}",
+        C::NAME
+    );
     let rate = (at_9_s / at_10_s).ln();
-    assert!((rate - 1.0).abs() < 0.05, "{}: decay rate {rate} /s", C::NAME);
+    assert!(
+        (rate - 1.0).abs() < 0.05,
+        "{}: decay rate {rate} /s",
+        C::NAME
+    );
 
     let far = Scenario::named("far").unwrap();
     let mut run = PeerRun::<C>::of(&far, 100.0);
