@@ -11,7 +11,7 @@
 # reuse them. The working tree is never touched. Results: mutants.out/ in the repository
 # (caught.txt, missed.txt, ...).
 #
-# Usage: .ci/mutants.sh [extra cargo-mutants options, e.g. --file src/physics/forces.rs]
+# Usage: .ci/mutants.sh [cargo-mutants options; default: --file 'src/physics/**/*.rs']
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_TARGET_DIR="${RBB_MUTANTS_TARGET_DIR:-$HOME/.cache/rubber-band-box/mutants-target}"
@@ -22,8 +22,8 @@ trap 'git worktree remove --force "$work"' EXIT
     cd "$work"
     # The core's own tests, without the soak (it would multiply the time by ten; the
     # invariant tests cover what it checks, over fewer steps).
-    cargo mutants --in-place --no-shuffle --timeout 120 \
-        --file 'src/physics/**/*.rs' "$@" \
+    if [ $# -eq 0 ]; then set -- --file 'src/physics/**/*.rs'; fi
+    cargo mutants --in-place --no-shuffle --timeout 120 "$@" \
         -- --test core --test integrators -- --skip soak || true
 )
 rm -rf mutants.out
