@@ -247,3 +247,28 @@ fn energies_by_kind_are_the_textbook_formulas_computed_by_hand() {
         0.0
     );
 }
+
+/// What the game and the runs accept from a step: every component finite and within 1e12.
+/// Each component, each way out (NaN, infinite, just beyond the limit), is refused alone.
+#[test]
+fn a_state_is_sane_only_with_every_component_finite_and_within_the_limit() {
+    let inside = [1.0, -2.0, 3.0, -4.0, 5.0, -6.0];
+    assert!(BodyState::from_array(inside).is_sane());
+    assert!(BodyState::from_array(inside).is_finite());
+    assert!(BodyState::from_array([1e12, -1e12, 1e12, -1e12, 1e12, -1e12]).is_sane());
+    for component in 0..6 {
+        for (bad, finite) in [
+            (f64::NAN, false),
+            (f64::INFINITY, false),
+            (f64::NEG_INFINITY, false),
+            (1.000_001e12, true),
+            (-1.000_001e12, true),
+        ] {
+            let mut values = inside;
+            values[component] = bad;
+            let state = BodyState::from_array(values);
+            assert!(!state.is_sane(), "component {component} = {bad}");
+            assert_eq!(state.is_finite(), finite, "component {component} = {bad}");
+        }
+    }
+}
