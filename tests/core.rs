@@ -272,3 +272,24 @@ fn a_state_is_sane_only_with_every_component_finite_and_within_the_limit() {
         }
     }
 }
+
+#[test]
+fn the_corners_are_the_boxs_four_in_the_tutorials_order() {
+    let mass = MassProperties::rectangle(2.0, DVec2::new(60.0, 40.0)).unwrap();
+    assert_eq!(
+        mass.corners(),
+        [
+            DVec2::new(-30.0, 20.0),
+            DVec2::new(30.0, 20.0),
+            DVec2::new(30.0, -20.0),
+            DVec2::new(-30.0, -20.0),
+        ]
+    );
+    // Each is the nearest to a target just beyond it.
+    for corner in mass.corners() {
+        assert_eq!(
+            mass.nearest_corner(&BodyState::default(), corner * 3.0),
+            corner
+        );
+    }
+}
