@@ -3,7 +3,7 @@
 use bevy::math::DVec2;
 use rubber_band_box::physics::{
     BandEnds, BodyState, Energies, Integrator, MassProperties, ParamError, SceneParams, Stepper,
-    Wrench, damping_wrench, rotate, symplectic_euler,
+    Wrench, damping_wrench, kinetic_energy, rotate, symplectic_euler,
 };
 
 #[test]
@@ -292,4 +292,36 @@ fn the_corners_are_the_boxs_four_in_the_tutorials_order() {
             corner
         );
     }
+}
+
+#[test]
+fn energies_add_by_kind_and_kinetic_energy_is_the_two_kinetic_parts() {
+    let a = Energies {
+        linear: 1.0,
+        rotational: 2.0,
+        band: 3.0,
+    };
+    let b = Energies {
+        linear: 10.0,
+        rotational: 20.0,
+        band: 30.0,
+    };
+    let sum = Energies {
+        linear: 11.0,
+        rotational: 22.0,
+        band: 33.0,
+    };
+    assert_eq!(a + b, sum);
+    assert_eq!([a, b].into_iter().sum::<Energies>(), sum);
+    assert_eq!(
+        std::iter::empty::<Energies>().sum::<Energies>(),
+        Energies::default()
+    );
+
+    // m = 5, |v|² = 25; I = 3000, ω² = 0.25.
+    let mass = SceneParams::tutorial().mass_properties().unwrap();
+    let mut state = BodyState::at_rest(DVec2::new(7.0, 8.0));
+    state.linear.velocity = DVec2::new(3.0, -4.0);
+    state.angular.angular_velocity = -0.5;
+    assert_eq!(kinetic_energy(&state, &mass), 62.5 + 375.0);
 }
