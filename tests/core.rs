@@ -2,8 +2,8 @@
 
 use bevy::math::DVec2;
 use rubber_band_box::physics::{
-    BandEnds, BodyState, Energies, Integrator, MassProperties, ParamError, SceneParams, Stepper,
-    Wrench, damping_wrench, kinetic_energy, rotate, symplectic_euler,
+    BandEnds, BodyState, Energies, EnergyLedger, Integrator, MassProperties, ParamError,
+    SceneParams, Stepper, Wrench, damping_wrench, kinetic_energy, rotate, symplectic_euler,
 };
 
 #[test]
@@ -324,4 +324,45 @@ fn energies_add_by_kind_and_kinetic_energy_is_the_two_kinetic_parts() {
     state.linear.velocity = DVec2::new(3.0, -4.0);
     state.angular.angular_velocity = -0.5;
     assert_eq!(kinetic_energy(&state, &mass), 62.5 + 375.0);
+}
+
+#[test]
+fn the_ledger_books_by_hand() {
+    let mut ledger = EnergyLedger::starting_at(10.0);
+    ledger.hand(5.0);
+    ledger.hand(-2.0);
+    ledger.dissipated = 4.0;
+    assert_eq!(ledger.work_in, 3.0);
+    assert_eq!(ledger.work_moved, 7.0);
+    assert_eq!(ledger.expected(), 10.0 + 3.0 - 4.0);
+    assert_eq!(ledger.residual(9.5), 0.5);
+    assert_eq!(ledger.throughput(), 10.0 + 7.0 + 4.0);
+}
+
+#[test]
+fn wrenches_accumulate_and_a_bands_length_is_its_stretch() {
+    let mut wrench = Wrench {
+        force: DVec2::new(1.0, 2.0),
+        torque: 3.0,
+    };
+    wrench += Wrench {
+        force: DVec2::new(10.0, 20.0),
+        torque: 30.0,
+    };
+    assert_eq!(
+        wrench,
+        Wrench {
+            force: DVec2::new(11.0, 22.0),
+            torque: 33.0
+        }
+    );
+    // The corner (30, 30) of a box at (10, -10), turned by nothing, is at (40, 20): 3-4-5.
+    let band = BandEnds {
+        local_point: DVec2::new(30.0, 30.0),
+        anchor: DVec2::new(43.0, 24.0),
+    };
+    assert_eq!(
+        band.length(&BodyState::at_rest(DVec2::new(10.0, -10.0))),
+        5.0
+    );
 }
