@@ -3,7 +3,8 @@
 use bevy::math::DVec2;
 use rubber_band_box::physics::{
     BandEnds, BodyState, Energies, EnergyLedger, Integrator, MassProperties, ParamError,
-    SceneParams, Stepper, Wrench, damping_wrench, kinetic_energy, rotate, symplectic_euler,
+    SceneParams, Stepper, Wrench, angular_momentum_about, damping_wrench, kinetic_energy, rotate,
+    symplectic_euler,
 };
 
 #[test]
@@ -365,4 +366,30 @@ fn wrenches_accumulate_and_a_bands_length_is_its_stretch() {
         band.length(&BodyState::at_rest(DVec2::new(10.0, -10.0))),
         5.0
     );
+}
+
+#[test]
+fn angular_momentum_and_the_bands_rate_by_hand() {
+    let params = SceneParams::tutorial();
+    let mass = params.mass_properties().unwrap();
+    let mut state = BodyState::at_rest(DVec2::new(10.0, 20.0));
+    state.linear.velocity = DVec2::new(3.0, -4.0);
+    state.angular.angular_velocity = 0.5;
+    // About (0, 0): m (x × v) + I ω = 5 (10·−4 − 20·3) + 3000 · 0.5.
+    assert_eq!(
+        angular_momentum_about(&state, &mass, DVec2::ZERO),
+        5.0 * (-40.0 - 60.0) + 1500.0
+    );
+    // About (10, 20), the centre itself: only the spin.
+    assert_eq!(
+        angular_momentum_about(&state, &mass, DVec2::new(10.0, 20.0)),
+        1500.0
+    );
+    // A square pulled at a corner: sqrt(k (1/m + r²/I)) = sqrt(20 (0.2 + 1800/3000)) = 4.
+    let band = BandEnds {
+        local_point: DVec2::new(30.0, 30.0),
+        anchor: DVec2::ZERO,
+    };
+    assert!((params.force_model(mass, Some(band)).band_rate() - 4.0).abs() < 1e-15);
+    assert_eq!(params.force_model(mass, None).band_rate(), 0.0);
 }
