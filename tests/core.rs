@@ -393,3 +393,44 @@ fn angular_momentum_and_the_bands_rate_by_hand() {
     assert!((params.force_model(mass, Some(band)).band_rate() - 4.0).abs() < 1e-15);
     assert_eq!(params.force_model(mass, None).band_rate(), 0.0);
 }
+
+/// Each named scene is what its name and summary say (the CLI, the report and the tests pick
+/// them by name).
+#[test]
+fn each_named_scene_is_what_it_says() {
+    use rubber_band_box::physics::Scenario;
+    use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
+    let tutorial = SceneParams::tutorial();
+    let held = f64::INFINITY;
+    for name in Scenario::NAMES {
+        let s = Scenario::named(name).unwrap();
+        assert_eq!(s.name, name);
+        let spin = s.initial.angular.angular_velocity;
+        let targets: Vec<DVec2> = s.pulls.iter().map(|p| p.2).collect();
+        match name {
+            "tutorial" => {
+                assert_eq!(s.pulls, [(0.0, 2.0, TUTORIAL_PULL_TARGET)]);
+                assert_eq!(s.params, tutorial);
+            }
+            "diagonal" => assert_eq!(s.pulls, [(0.0, held, DVec2::new(150.0, 150.0))]),
+            "stiff" => assert_eq!(s.params.stiffness, 1e5),
+            "light" => assert_eq!(s.params.mass, 1e-3),
+            "spin" => assert!(spin == 100.0 && s.pulls.is_empty()),
+            "spin-band" => assert!(spin == 100.0 && targets == [TUTORIAL_PULL_TARGET]),
+            "far" => assert_eq!(targets, [DVec2::new(1e6, 0.0)]),
+            "undamped" => {
+                assert_eq!(
+                    (s.params.linear_damping, s.params.angular_damping),
+                    (0.0, 0.0)
+                )
+            }
+            "zero-length" => assert_eq!(targets, [DVec2::new(30.0, 30.0)]),
+            "rest" => {
+                assert!(s.pulls.is_empty() && s.params == tutorial);
+                assert_eq!(s.initial, BodyState::default());
+            }
+            other => panic!("a scene this test does not know: {other}"),
+        }
+    }
+    assert!(Scenario::named("moon").is_err());
+}
