@@ -20,11 +20,12 @@ git worktree add --detach --quiet "$work" HEAD
 trap 'git worktree remove --force "$work"' EXIT
 (
     cd "$work"
-    # The core's own tests, without the soak (it would multiply the time by ten; the
-    # invariant tests cover what it checks, over fewer steps).
+    # The core's own tests and the CLI's (the binary is linked for any integration test
+    # anyway), without the soak (it would multiply the time by ten; the invariant tests
+    # cover what it checks, over fewer steps) and the property tests (8 s a run).
     if [ $# -eq 0 ]; then set -- --file 'src/physics/**/*.rs'; fi
     cargo mutants --in-place --no-shuffle --timeout 120 "$@" \
-        -- --test core --test integrators -- --skip soak || true
+        -- --test core --test integrators --test cli -- --skip soak || true
 )
 rm -rf mutants.out
 cp -r "$work/mutants.out" mutants.out

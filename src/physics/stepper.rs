@@ -5,7 +5,7 @@
 use bevy::math::DVec2;
 
 use super::body::{BodyState, MassProperties};
-use super::forces::{BandEnds, ForceModel, Forces};
+use super::forces::{BandEnds, ForceModel};
 use super::integrators::Integrator;
 use super::integrators::{AutoSettings, StepInfo};
 use super::param_error::ParamError;
@@ -47,11 +47,6 @@ impl Stepper {
     /// Every force law acting on the box now.
     pub fn model(&self) -> ForceModel {
         self.params.force_model(self.mass, self.band)
-    }
-
-    /// Steps 1 and 3 of the total reaction: the sum of all forces and of their torques.
-    pub fn forces(&self) -> Forces {
-        self.model().forces(&self.state)
     }
 
     /// One step of `dt` seconds with the chosen integrator.
