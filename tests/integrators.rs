@@ -3,7 +3,8 @@
 use bevy::math::DVec2;
 use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
 use rubber_band_box::physics::{
-    AutoSettings, BodyState, Integrator, Pull, Run, Scenario, SceneParams, angular_momentum_about,
+    AutoSettings, BodyState, Integrator, Pull, Run, Scenario, SceneParams, Stepper,
+    angular_momentum_about,
 };
 use rubber_band_box::references::diagonal_exact;
 use rubber_band_box::report::hard_cases;
@@ -412,6 +413,74 @@ fn every_integrator_stays_bounded_or_reports_its_divergence() {
     }
 }
 
+/// A run refuses the first step that takes the state out of bounds, even with little energy:
+/// the box near the limit, moving outward at 1000 px/s, leaves it at step 3 of 0.01 s.
+#[test]
+fn a_run_refuses_the_first_step_that_leaves_the_state_limit() {
+    let undamped = SceneParams {
+        linear_damping: 0.0,
+        angular_damping: 0.0,
+        ..SceneParams::tutorial()
+    };
+    let near_limit = BodyState::from_array([1e12 - 25.0, 0.0, 0.0, 1000.0, 0.0, 0.0]);
+    let mut run = Run::new(undamped, near_limit, vec![], Integrator::Rk4, 0.01).unwrap();
+    run.advance_by(2).unwrap();
+    let last_sane = run.stepper.state;
+    assert_eq!(last_sane.linear.position.x, 1e12 - 5.0);
+    let diverged = run.advance().unwrap_err();
+    assert_eq!((diverged.step, diverged.time), (3, 3.0 * 0.01));
+    assert_eq!((run.step, run.stepper.state), (2, last_sane));
+}
+
+/// A run refuses the first step whose energy exceeds 1000 times all it was given plus 1 J,
+/// while the state is still within bounds: found here by stepping a copy by hand. The band
+/// is stretched 1e-6 px (5e-8 J), so the 1 J term decides the step (1000 times the energy
+/// alone would fire steps earlier).
+#[test]
+fn a_run_refuses_the_first_step_whose_energy_leaves_every_physical_bound() {
+    let stiff = Scenario::named("stiff").unwrap().params;
+    let corner = DVec2::new(30.0, 30.0);
+    let pull = Pull {
+        start: 0,
+        end: u64::MAX,
+        target: corner + DVec2::new(1e-6, 0.0),
+    };
+    let mut run = Run::new(
+        stiff,
+        BodyState::default(),
+        vec![pull],
+        Integrator::Euler,
+        0.01,
+    )
+    .unwrap();
+    let mut by_hand = run.stepper.clone();
+    let given = by_hand.energy();
+    assert!(given > 0.0 && given < 1e-7, "{given}");
+    let first_above = |bound: f64| {
+        let mut stepper = by_hand.clone();
+        (1..=1000u64).find(|_| {
+            stepper.step(0.01);
+            stepper.energy() > bound
+        })
+    };
+    let expected = first_above(1e3 * given + 1.0).expect("euler diverges on this band");
+    assert!(first_above(1e3 * given).unwrap() < expected);
+    for _ in 1..expected {
+        by_hand.step(0.01);
+    }
+    let last_sane = by_hand.state;
+    by_hand.step(0.01);
+    assert!(
+        by_hand.state.is_sane(),
+        "the energy must fire before the state limit"
+    );
+
+    let diverged = run.advance_by(1000).unwrap_err();
+    assert_eq!(diverged.step, expected);
+    assert_eq!(diverged.time, expected as f64 * 0.01);
+    assert_eq!((run.step, run.stepper.state), (expected - 1, last_sane));
+}
+
 #[test]
 fn a_zero_length_band_exerts_nothing() {
     for integrator in Integrator::ALL {
@@ -793,4 +862,280 @@ fn every_integrator_converges_at_its_order_on_the_cases_with_spin() {
             }
         }
     }
+}
+
+#[test]
+fn the_switch_cycles_the_table_in_order_and_autos_order_is_its_series() {
+    let all = Integrator::ALL;
+    for (i, integrator) in all.into_iter().enumerate() {
+        assert_eq!(integrator.next(), all[(i + 1) % all.len()]);
+    }
+    assert_eq!(
+        Integrator::Auto.order() as usize,
+        AutoSettings::default().order
+    );
+}
+
+/// Each fixed-step method counts the force evaluations of its step (the work the report
+/// compares), and `step` is `step_with` under `auto`'s default settings.
+#[test]
+fn each_step_counts_its_force_evaluations_and_step_uses_autos_defaults() {
+    let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
+    stepper.grab(TUTORIAL_PULL_TARGET);
+    let model = stepper.model();
+    let start = model.forces(&stepper.state);
+    let counted = [
+        (Integrator::Euler, 1),
+        (Integrator::Symplectic, 1),
+        (Integrator::Verlet, 2),
+        (Integrator::Rk4, 4),
+        (Integrator::Seed, 1),
+    ];
+    for (integrator, evaluations) in counted {
+        let mut state = stepper.state;
+        let info = integrator.step(&mut state, &model, start, 0.01);
+        assert_eq!(
+            (info.substeps, info.evaluations),
+            (1, evaluations),
+            "{integrator}"
+        );
+    }
+    for integrator in Integrator::ALL {
+        let (mut stepped, mut stepped_with) = (stepper.state, stepper.state);
+        let info = integrator.step(&mut stepped, &model, start, 0.01);
+        let info_with = integrator.step_with(
+            &mut stepped_with,
+            &model,
+            start,
+            0.01,
+            &AutoSettings::default(),
+        );
+        assert_eq!((info, stepped), (info_with, stepped_with), "{integrator}");
+        assert_ne!(stepped, stepper.state, "{integrator} moved the box");
+    }
+}
+
+/// A rooted tree (Butcher's): its children, in canonical order.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+struct Tree(Vec<Tree>);
+
+impl Tree {
+    fn order(&self) -> usize {
+        1 + self.0.iter().map(Tree::order).sum::<usize>()
+    }
+
+    /// γ(t): the order times the children's densities.
+    fn density(&self) -> f64 {
+        self.order() as f64 * self.0.iter().map(Tree::density).product::<f64>()
+    }
+
+    /// The elementary weight's stage vector: for stage i, the product over the children of
+    /// Σ_j a_ij (their vector)_j.
+    fn stage_vector(&self, a: &[Vec<f64>]) -> Vec<f64> {
+        let mut vector = vec![1.0; a.len()];
+        for child in &self.0 {
+            let inner = child.stage_vector(a);
+            for (i, value) in vector.iter_mut().enumerate() {
+                *value *= (0..a.len()).map(|j| a[i][j] * inner[j]).sum::<f64>();
+            }
+        }
+        vector
+    }
+}
+
+/// Every rooted tree up to `max_order`: the trees of order n are the multisets of smaller
+/// trees whose orders sum to n − 1.
+fn rooted_trees(max_order: usize) -> Vec<Tree> {
+    fn multisets(
+        smaller: &[Tree],
+        from: usize,
+        left: usize,
+        chosen: &mut Vec<Tree>,
+        out: &mut Vec<Tree>,
+    ) {
+        if left == 0 {
+            out.push(Tree(chosen.clone()));
+            return;
+        }
+        for (index, tree) in smaller.iter().enumerate().skip(from) {
+            if tree.order() <= left {
+                chosen.push(tree.clone());
+                multisets(smaller, index, left - tree.order(), chosen, out);
+                chosen.pop();
+            }
+        }
+    }
+    let mut trees = vec![Tree(vec![])];
+    for order in 2..=max_order {
+        let smaller = trees.clone();
+        let mut new = Vec::new();
+        multisets(&smaller, 0, order - 1, &mut Vec::new(), &mut new);
+        trees.extend(new);
+    }
+    trees
+}
+
+/// DOP853's tableau against Runge-Kutta theory: the eighth-order weights meet all 200 order
+/// conditions up to order 8, the fifth-order error estimator is blind to every tree up to
+/// order 5 (it is the difference of two methods of at least that order), and the third-order
+/// one is the weights less Hairer's three published coefficients. A changed coefficient breaks
+/// one of them.
+#[test]
+fn dop853s_tableau_meets_the_order_conditions() {
+    use rubber_band_box::physics::integrators::dop853::{A, B, E3, E5, STAGES};
+    let trees = rooted_trees(8);
+    // The number of rooted trees of each order (OEIS A000081): 1, 1, 2, 4, 9, 20, 48, 115.
+    let counts: Vec<usize> = (1..=8)
+        .map(|n| trees.iter().filter(|t| t.order() == n).count())
+        .collect();
+    assert_eq!(counts, [1, 1, 2, 4, 9, 20, 48, 115]);
+
+    let a: Vec<Vec<f64>> = A.iter().map(|row| row.to_vec()).collect();
+    for tree in &trees {
+        let phi: f64 = B
+            .iter()
+            .zip(tree.stage_vector(&a))
+            .map(|(b, g)| b * g)
+            .sum();
+        let expected = 1.0 / tree.density();
+        assert!(
+            (phi - expected).abs() <= 1e-12 * expected.max(1e-3),
+            "order {}: {phi} against 1/γ = {expected}",
+            tree.order()
+        );
+    }
+
+    // The estimators see the 12 stages and the derivative at the step's end, whose row is B.
+    let mut extended = a.clone();
+    for row in &mut extended {
+        row.push(0.0);
+    }
+    extended.push(B.iter().copied().chain([0.0]).collect());
+    for tree in trees.iter().filter(|t| t.order() <= 5) {
+        let seen: f64 = E5
+            .iter()
+            .zip(tree.stage_vector(&extended))
+            .map(|(e, g)| e * g)
+            .sum();
+        assert!(
+            seen.abs() < 1e-12,
+            "E5 sees a tree of order {}: {seen}",
+            tree.order()
+        );
+    }
+    // Hairer's bhh1, bhh2, bhh3 (DOP853's Fortran source), at stages 1, 9 and 12.
+    let bhh = [
+        (0, 0.244_094_488_188_976_38),
+        (8, 0.733_846_688_281_611_86),
+        (11, 0.022_058_823_529_411_765),
+    ];
+    for j in 0..=STAGES {
+        let weight = B.get(j).copied().unwrap_or(0.0);
+        let less = bhh.iter().find(|(at, _)| *at == j).map_or(0.0, |(_, b)| *b);
+        assert!(
+            (E3[j] - (weight - less)).abs() < 1e-15,
+            "E3[{j}] = {}, not {}",
+            E3[j],
+            weight - less
+        );
+    }
+}
+
+/// DOP853 on the stiff pulls, against the SciPy fixtures: within 1e-8 px at a tight
+/// tolerance; looser, it takes fewer evaluations and lands farther off, but within its
+/// tolerance's reach.
+#[test]
+fn dop853_meets_the_stiff_references_and_trades_accuracy_for_work_by_its_tolerance() {
+    use rubber_band_box::references::{Engine, run_engine};
+    for (k, rate, ticks, reference, _) in stiff_references().into_iter().filter(|&(k, ..)| k <= 1e5)
+    {
+        let mut scenario = Scenario::named("stiff").unwrap();
+        scenario.params.stiffness = k;
+        let mass = scenario.params.mass_properties().unwrap();
+        let run =
+            |tolerance| run_engine(&scenario, rate, ticks, Engine::Dop853(tolerance)).unwrap();
+        let (tight, tight_work) = run(1e-12);
+        let (loose, loose_work) = run(1e-5);
+        let (tight_error, loose_error) = (
+            tight.pose_error(&reference, &mass),
+            loose.pose_error(&reference, &mass),
+        );
+        assert!(tight_error < 1e-8, "k {k:e} at {rate} Hz: {tight_error}");
+        assert!(
+            loose_error > tight_error && loose_error < 1e-2,
+            "k {k:e} at {rate} Hz: {loose_error}"
+        );
+        assert!(
+            loose_work < tight_work,
+            "k {k:e}: {loose_work} / {tight_work}"
+        );
+    }
+}
+
+/// One DOP853 step of damped free motion (no band) against the closed form: the state, and
+/// the energy damping took out, which its extra component integrates.
+#[test]
+fn dop853_follows_damped_free_motion_and_integrates_what_damping_takes() {
+    use rubber_band_box::physics::integrators::dop853;
+    let params = SceneParams::tutorial();
+    let mass = params.mass_properties().unwrap();
+    let model = params.force_model(mass, None);
+    let mut initial = BodyState::default();
+    initial.linear.velocity = DVec2::new(30.0, -40.0);
+    initial.angular.angular_velocity = 2.0;
+    let dt = 0.05;
+    let done = dop853::integrate(
+        &initial,
+        &model,
+        model.forces(&initial),
+        dt,
+        1e-12,
+        u32::MAX,
+    )
+    .unwrap();
+    let (rate, spin_rate) = (params.linear_damping / params.mass, params.angular_damping);
+    let (decay, spin_decay) = ((-rate * dt).exp(), (-spin_rate * dt).exp());
+    let mut exact = initial;
+    exact.linear.velocity = initial.linear.velocity * decay;
+    exact.linear.position = initial.linear.velocity * (1.0 - decay) / rate;
+    exact.angular.angular_velocity = 2.0 * spin_decay;
+    exact.angular.orientation = 2.0 * (1.0 - spin_decay) / spin_rate;
+    assert!(
+        done.state.pose_error(&exact, &mass) < 1e-10,
+        "{:?} against {exact:?}",
+        done.state
+    );
+    let velocity_error = (done.state.linear.velocity - exact.linear.velocity).length()
+        + (done.state.angular.angular_velocity - exact.angular.angular_velocity).abs();
+    assert!(velocity_error < 1e-10, "{velocity_error}");
+    let energy = |s: &BodyState| {
+        0.5 * params.mass * s.linear.velocity.length_squared()
+            + 0.5 * mass.inertia() * s.angular.angular_velocity.powi(2)
+    };
+    let taken = energy(&initial) - energy(&exact);
+    assert!(
+        (done.dissipated - taken).abs() < 1e-10 * taken,
+        "{} against {taken}",
+        done.dissipated
+    );
+    assert!(done.attempts >= 1);
+}
+
+/// A step DOP853 cannot afford within its budget is given up (None), before or during it.
+#[test]
+fn dop853_gives_up_a_step_beyond_its_budget() {
+    use rubber_band_box::physics::integrators::dop853;
+    let mut stepper = Stepper::new(Scenario::named("stiff").unwrap().params).unwrap();
+    stepper.params.stiffness = 1e6;
+    stepper.grab(TUTORIAL_PULL_TARGET);
+    let model = stepper.model();
+    let start = model.forces(&stepper.state);
+    let state = stepper.state;
+    let done = dop853::integrate(&state, &model, start, 0.01, 1e-9, u32::MAX).unwrap();
+    assert!(done.attempts > 2, "{}", done.attempts);
+    assert!(dop853::integrate(&state, &model, start, 0.01, 1e-9, 1).is_none());
+    // One attempt short of what it needs: given up.
+    assert!(dop853::integrate(&state, &model, start, 0.01, 1e-9, done.attempts - 1).is_none());
+    let exact_budget = dop853::integrate(&state, &model, start, 0.01, 1e-9, done.attempts);
+    assert_eq!(exact_budget.map(|d| d.state), Some(done.state));
 }

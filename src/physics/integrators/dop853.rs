@@ -19,7 +19,7 @@ use super::engine_state::{
 use crate::physics::body::BodyState;
 use crate::physics::forces::{ForceModel, Forces};
 
-const STAGES: usize = 12;
+pub const STAGES: usize = 12;
 
 const N: usize = COMPONENTS;
 type Vector = Components;
@@ -27,8 +27,9 @@ type Vector = Components;
 // The tableau, as SciPy's `dop853_coefficients.py` gives it (printed to f64 by a script);
 // the nodes c are not needed: the scene's forces do not depend on time within a step.
 /// Row i: the coefficients of stages 0..i in stage i (explicit: zero on and above the diagonal).
+/// The tableau is public so that a test can check its order conditions.
 #[rustfmt::skip]
-const A: [[f64; STAGES]; STAGES] = [
+pub const A: [[f64; STAGES]; STAGES] = [
     [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
     [0.05260015195876773, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
     [0.0197250569845379, 0.0591751709536137, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
@@ -43,7 +44,7 @@ const A: [[f64; STAGES]; STAGES] = [
     [2.273310147516538, 0.0, 0.0, -10.53449546673725, -2.0008720582248625, -17.9589318631188, 27.94888452941996, -2.8589982771350235, -8.87285693353063, 12.360567175794303, 0.6433927460157636, 0.0],
 ];
 /// The eighth-order weights (row 12 of the extended tableau).
-const B: [f64; STAGES] = [
+pub const B: [f64; STAGES] = [
     0.054293734116568765,
     0.0,
     0.0,
@@ -58,7 +59,7 @@ const B: [f64; STAGES] = [
     0.04471061572777259,
 ];
 /// The fifth- and third-order error estimators, over the 12 stages and the derivative at the end.
-const E5: [f64; STAGES + 1] = [
+pub const E5: [f64; STAGES + 1] = [
     0.01312004499419488,
     0.0,
     0.0,
@@ -73,7 +74,7 @@ const E5: [f64; STAGES + 1] = [
     -0.022355307863886294,
     0.0,
 ];
-const E3: [f64; STAGES + 1] = [
+pub const E3: [f64; STAGES + 1] = [
     -0.18980075407240762,
     0.0,
     0.0,
