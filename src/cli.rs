@@ -3,12 +3,18 @@
 //! Every value is checked before anything runs: a bad argument gets a message naming it and
 //! exit status 2, never a panic.
 
-use std::io::{self, BufWriter, Write};
+use std::fs::File;
+use std::io::{self, BufReader, BufWriter, Write};
+use std::path::PathBuf;
 
 use bevy::math::DVec2;
 use clap::{Args, Parser, Subcommand};
 
-use crate::physics::{BodyState, Diverged, Integrator, Pull, Run, Scenario, SceneParams};
+use crate::physics::{
+    AutoSettings, BodyState, Diverged, Integrator, Pull, Run, Scenario, SceneParams,
+};
+use crate::replay::run::ReplayRun;
+use crate::replay::{Replay, TrajectoryHash};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -39,6 +45,10 @@ pub struct PlayArgs {
     /// Fixed physics steps per second.
     #[arg(long, value_parser = positive)]
     pub step_rate: Option<f64>,
+    /// Record the game and save it to FILE when the game ends (the window closed, Ctrl-C or
+    /// SIGTERM), as a replay for `simulate --replay`.
+    #[arg(long, value_name = "FILE")]
+    pub record: Option<PathBuf>,
 }
 
 #[derive(Args, Debug)]
@@ -89,6 +99,17 @@ pub struct SimulateArgs {
     /// X,Y,THETA,VX,VY,OMEGA: the initial state.
     #[arg(long, value_parser = parse_init, allow_hyphen_values = true)]
     pub init: Option<BodyState>,
+    /// Step a replay file (a game the game recorded) instead of a scene: its band, settings
+    /// and resets at every step. With the recorded integrators the states are the game's, to
+    /// the bit (checked against the recording's hash); an integrator given runs it with that.
+    #[arg(long, value_name = "FILE", conflicts_with_all = [
+        "scene", "dt", "steps", "pulls", "k", "mass", "width", "height", "linear_damping",
+        "angular_damping", "init",
+    ])]
+    pub replay: Option<PathBuf>,
+    /// Print only the hash of every step's state (16 hex digits), not the trajectory.
+    #[arg(long)]
+    pub hash: bool,
 }
 
 impl SimulateArgs {
@@ -117,6 +138,27 @@ impl SimulateArgs {
         params
     }
 
+    /// `auto`'s settings with the overrides applied.
+    pub fn auto(&self, mut auto: AutoSettings) -> AutoSettings {
+        if let Some(tolerance) = self.auto_tolerance {
+            auto.tolerance = tolerance;
+        }
+        if let Some(order) = self.auto_order {
+            auto.order = order as usize;
+        }
+        if let Some(max) = self.auto_max_substeps {
+            auto.max_substeps = max;
+        }
+        auto
+    }
+
+    /// Whether an `auto` setting is overridden.
+    fn overrides_auto(&self) -> bool {
+        self.auto_tolerance.is_some()
+            || self.auto_order.is_some()
+            || self.auto_max_substeps.is_some()
+    }
+
     pub fn run(&self) -> Result<Run, String> {
         let pulls = if self.pulls.is_empty() {
             self.scene.pulls_in_steps(self.dt)
@@ -131,15 +173,7 @@ impl SimulateArgs {
             self.dt,
         )
         .map_err(|error| error.to_string())?;
-        if let Some(tolerance) = self.auto_tolerance {
-            run.stepper.auto.tolerance = tolerance;
-        }
-        if let Some(order) = self.auto_order {
-            run.stepper.auto.order = order as usize;
-        }
-        if let Some(max) = self.auto_max_substeps {
-            run.stepper.auto.max_substeps = max;
-        }
+        run.stepper.auto = self.auto(run.stepper.auto);
         Ok(run)
     }
 }
@@ -147,19 +181,66 @@ impl SimulateArgs {
 pub const CSV_HEADER: &str =
     "step,t,x,y,theta,vx,vy,omega,energy,band,substeps,fallbacks,ledger_residual";
 
+/// One CSV row: a state and what the step that led to it did.
+struct Row {
+    step: u64,
+    time: f64,
+    state: BodyState,
+    energy: f64,
+    band: bool,
+    substeps: u32,
+    fallbacks: u64,
+    residual: f64,
+}
+
+impl Row {
+    fn of_run(run: &Run) -> Self {
+        Self {
+            step: run.step,
+            time: run.time(),
+            state: run.stepper.state,
+            energy: run.stepper.energy(),
+            band: run.stepper.band.is_some(),
+            substeps: run.last_step.substeps,
+            fallbacks: run.fallbacks,
+            residual: run.ledger.residual(run.stepper.energy()),
+        }
+    }
+
+    fn of_replay(run: &ReplayRun) -> Self {
+        Self {
+            step: run.step,
+            time: run.time,
+            state: run.stepper.state,
+            energy: run.stepper.energy(),
+            band: run.stepper.band.is_some(),
+            substeps: run.last_step.substeps,
+            fallbacks: run.fallbacks,
+            residual: run.residual(),
+        }
+    }
+}
+
+impl std::fmt::Display for Row {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let [x, y, theta, vx, vy, omega] = self.state.to_array();
+        write!(
+            f,
+            "{},{},{x},{y},{theta},{vx},{vy},{omega},{},{},{},{},{}",
+            self.step,
+            self.time,
+            self.energy,
+            u8::from(self.band),
+            self.substeps,
+            self.fallbacks,
+            self.residual,
+        )
+    }
+}
+
 /// One CSV row: the state after `run.step` steps.
 pub fn csv_row(run: &Run) -> String {
-    let [x, y, theta, vx, vy, omega] = run.stepper.state.to_array();
-    format!(
-        "{},{},{x},{y},{theta},{vx},{vy},{omega},{},{},{},{},{}",
-        run.step,
-        run.time(),
-        run.stepper.energy(),
-        u8::from(run.stepper.band.is_some()),
-        run.last_step.substeps,
-        run.fallbacks,
-        run.ledger.residual(run.stepper.energy()),
-    )
+    Row::of_run(run).to_string()
 }
 
 /// Why `simulate` stopped early.
@@ -168,23 +249,78 @@ pub enum SimulateError {
     Arguments(String),
     Diverged(Diverged),
     Output(io::Error),
+    /// A replay run with its recorded integrators did not give the recorded states.
+    Mismatch(String),
 }
 
-/// Writes the trajectory to `out`: the header, row 0 (the initial state), then a row per step.
+/// Writes the trajectory to `out`: the header, row 0 (the initial state), then a row per step;
+/// or, with `--hash`, the hash of every step's state.
 pub fn simulate(args: &SimulateArgs, out: impl Write) -> Result<(), SimulateError> {
+    if let Some(path) = &args.replay {
+        return simulate_replay(args, path, out);
+    }
     let mut run = args.run().map_err(SimulateError::Arguments)?;
     let mut out = BufWriter::new(out);
+    let mut hash = TrajectoryHash::default();
     let write = |out: &mut BufWriter<_>, line: &str| writeln!(out, "{line}");
-    write(&mut out, CSV_HEADER).map_err(SimulateError::Output)?;
-    write(&mut out, &csv_row(&run)).map_err(SimulateError::Output)?;
+    if !args.hash {
+        write(&mut out, CSV_HEADER).map_err(SimulateError::Output)?;
+        write(&mut out, &csv_row(&run)).map_err(SimulateError::Output)?;
+    }
     for _ in 0..args.steps {
         if let Err(diverged) = run.advance() {
             out.flush().map_err(SimulateError::Output)?;
             return Err(SimulateError::Diverged(diverged));
         }
-        write(&mut out, &csv_row(&run)).map_err(SimulateError::Output)?;
+        if args.hash {
+            hash.add(&run.stepper.state);
+        } else {
+            write(&mut out, &csv_row(&run)).map_err(SimulateError::Output)?;
+        }
+    }
+    if args.hash {
+        write(&mut out, &hash.to_string()).map_err(SimulateError::Output)?;
     }
     out.flush().map_err(SimulateError::Output)
+}
+
+/// `simulate --replay FILE`: the recorded game stepped again.
+fn simulate_replay(
+    args: &SimulateArgs,
+    path: &std::path::Path,
+    out: impl Write,
+) -> Result<(), SimulateError> {
+    let in_file =
+        |message: String| SimulateError::Arguments(format!("{}: {message}", path.display()));
+    let file = File::open(path).map_err(|error| in_file(format!("cannot open: {error}")))?;
+    let replay = Replay::read(BufReader::new(file)).map_err(|error| in_file(error.to_string()))?;
+    let mut run =
+        ReplayRun::new(&replay, args.integrator).map_err(|error| in_file(error.to_string()))?;
+    run.stepper.auto = args.auto(run.stepper.auto);
+    let mut out = BufWriter::new(out);
+    let write = |out: &mut BufWriter<_>, line: &str| writeln!(out, "{line}");
+    if args.hash {
+        let hash = run.finish();
+        write(&mut out, &hash.to_string()).map_err(SimulateError::Output)?;
+    } else {
+        write(&mut out, CSV_HEADER).map_err(SimulateError::Output)?;
+        write(&mut out, &Row::of_replay(&run).to_string()).map_err(SimulateError::Output)?;
+        while run.advance().is_some() {
+            write(&mut out, &Row::of_replay(&run).to_string()).map_err(SimulateError::Output)?;
+        }
+    }
+    out.flush().map_err(SimulateError::Output)?;
+    let as_recorded = args.integrator.is_none() && !args.overrides_auto();
+    if as_recorded && run.hash != replay.hash {
+        return Err(SimulateError::Mismatch(format!(
+            "{}: the states differ from the recorded game's (hash {}, recorded {}): this build \
+             or machine computes the steps differently",
+            path.display(),
+            run.hash,
+            replay.hash
+        )));
+    }
+    Ok(())
 }
 
 fn parse_number(text: &str) -> Result<f64, String> {

@@ -8,6 +8,7 @@ use bevy::prelude::*;
 
 use crate::overlays::Overlays;
 use crate::physics::{Integrator, SceneParams};
+use crate::recording::SaveReplay;
 use crate::schedule::GameSystems;
 use crate::simulation::ResetScene;
 
@@ -22,6 +23,7 @@ impl Plugin for ControlsPlugin {
                 toggle_pause.run_if(input_just_pressed(PAUSE)),
                 single_step.run_if(input_just_pressed(SINGLE_STEP)),
                 reset_scene.run_if(input_just_pressed(RESET)),
+                save_replay.run_if(input_just_pressed(SAVE)),
                 tune_parameters,
                 toggle_overlays,
             )
@@ -46,6 +48,7 @@ pub const MORE_STEPS: KeyCode = KeyCode::PageUp;
 pub const VECTORS: KeyCode = KeyCode::KeyV;
 pub const TRAIL: KeyCode = KeyCode::KeyT;
 pub const HUD: KeyCode = KeyCode::KeyH;
+pub const SAVE: KeyCode = KeyCode::KeyS;
 
 pub const STIFFNESS_RANGE: (f64, f64) = (1e-2, 1e12);
 pub const TIME_SCALE_RANGE: (f64, f64) = (1.0 / 16.0, 16.0);
@@ -64,7 +67,7 @@ pub struct Control {
 }
 
 /// Every key the game reads, in the order the help line lists them.
-pub const CONTROLS: [Control; 10] = [
+pub const CONTROLS: [Control; 11] = [
     Control {
         keys: &[PAUSE],
         label: "Space",
@@ -125,6 +128,12 @@ pub const CONTROLS: [Control; 10] = [
         name: "HUD",
         effect: "hide / show the HUD and the energy graph",
     },
+    Control {
+        keys: &[SAVE],
+        label: "S",
+        name: "save",
+        effect: "save the game so far as a replay (to `--record`'s file, else `replay-<time>.jsonl`; the HUD shows the name)",
+    },
 ];
 
 /// The HUD's help line: "drag: pull  Space: pause  N: step ...".
@@ -168,6 +177,11 @@ fn single_step(virtual_time: Res<Time<Virtual>>, mut fixed_time: ResMut<Time<Fix
 /// Each plugin puts back what it owns (see [`ResetScene`]).
 fn reset_scene(mut commands: Commands) {
     commands.trigger(ResetScene);
+}
+
+/// The recorder saves and says where ([`crate::recording`]).
+fn save_replay(mut commands: Commands) {
+    commands.trigger(SaveReplay);
 }
 
 /// k, the time scale and the step rate move by factors, so that a player reaches the hard

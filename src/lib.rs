@@ -4,7 +4,9 @@
 //! - [`physics`]: the numerical core, plain Rust over f64 state (no `App`);
 //! - [`schedule`] and [`overlays`]: leaves the plugins share (the frame's order, what shows);
 //! - [`simulation`]: the Bevy plugin that steps the core in `FixedUpdate` (headless);
-//! - [`pointer`] and [`controls`]: mouse, touch and keys (headless);
+//! - [`replay`]: a game's input as data, read, written and stepped again with the core;
+//! - [`pointer`] and [`controls`]: mouse, touch and keys (headless); [`recording`]: what
+//!   reached the physics, kept as a replay (headless);
 //! - [`hud`]: the heads-up display, its energy graph and the window title (headless, but the
 //!   graph, which needs gizmos);
 //! - [`view`] and [`draw`]: camera, interpolation and drawing (need a window);
@@ -23,8 +25,10 @@ pub mod overlays;
 pub mod peers;
 pub mod physics;
 pub mod pointer;
+pub mod recording;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod references;
+pub mod replay;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod report;
 pub mod schedule;
@@ -46,6 +50,7 @@ impl Plugin for GameLogicPlugin {
             simulation::SimulationPlugin,
             pointer::PointerPlugin,
             controls::ControlsPlugin,
+            recording::RecordingPlugin,
             hud::HudPlugin,
         ));
     }

@@ -15,6 +15,8 @@ use rubber_band_box::physics::{Integrator, SceneParams};
 struct PlayArgs {
     integrator: Option<Integrator>,
     step_rate: Option<f64>,
+    #[cfg(not(target_arch = "wasm32"))]
+    record: Option<std::path::PathBuf>,
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -29,6 +31,7 @@ fn main() -> ExitCode {
         Some(Command::Play(args)) => play(PlayArgs {
             integrator: args.integrator,
             step_rate: args.step_rate,
+            record: args.record,
         }),
         Some(Command::Simulate(args)) => match simulate(&args, io::stdout().lock()) {
             Ok(()) => ExitCode::SUCCESS,
@@ -39,6 +42,10 @@ fn main() -> ExitCode {
             Err(SimulateError::Diverged(diverged)) => {
                 eprintln!("error: {diverged}");
                 ExitCode::from(3)
+            }
+            Err(SimulateError::Mismatch(message)) => {
+                eprintln!("error: {message}");
+                ExitCode::from(4)
             }
             // A closed pipe (`| head`) is not an error worth a message.
             Err(SimulateError::Output(error)) if error.kind() == io::ErrorKind::BrokenPipe => {
@@ -74,8 +81,14 @@ fn play(args: PlayArgs) -> ExitCode {
         eprintln!("error: {error}");
         return ExitCode::from(2);
     }
-    App::new()
-        .insert_resource(ClearColor(Color::BLACK))
+    let mut app = App::new();
+    #[cfg(not(target_arch = "wasm32"))]
+    if let Some(target) = args.record {
+        app.insert_resource(rubber_band_box::recording::Recorder::to_file(target));
+        #[cfg(unix)]
+        rubber_band_box::recording::sigterm::exit_on_sigterm(&mut app);
+    }
+    app.insert_resource(ClearColor(Color::BLACK))
         .insert_resource(params)
         .insert_resource(args.integrator.unwrap_or_default())
         .add_plugins(DefaultPlugins.set(WindowPlugin {

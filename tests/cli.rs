@@ -1,6 +1,11 @@
 //! The `simulate` command, run as a user runs it.
 
+mod common;
+
 use std::process::{Command, Output};
+
+use rubber_band_box::physics::Integrator;
+use rubber_band_box::replay::run::ReplayRun;
 
 fn simulate(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
@@ -349,4 +354,90 @@ fn readme_documents_exactly_the_options_simulate_has() {
     let mut offered = flags(&String::from_utf8_lossy(&output.stdout));
     offered.remove("--help");
     assert_eq!(documented, offered);
+}
+
+/// A replay file in a scratch folder of this test process.
+fn replay_file(name: &str, text: &str) -> std::path::PathBuf {
+    let folder = std::env::temp_dir().join(format!("rbb-cli-tests-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let path = folder.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// `simulate --replay` writes a row per recorded step, and `--hash` the recording's own hash
+/// (its states are the recorded ones); another integrator gives another hash.
+#[test]
+fn simulate_replays_a_recording_and_hashes_its_states() {
+    let replay = common::small_replay();
+    let text = String::from_utf8(replay.to_bytes()).unwrap();
+    let path = replay_file("small.jsonl", &text);
+    let file = path.to_str().unwrap();
+
+    let output = simulate(&["--replay", file]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let rows: Vec<String> = stdout(&output).lines().map(str::to_owned).collect();
+    assert_eq!(rows.len(), 2 + 12);
+    assert!(rows[1].starts_with("0,0,"));
+    let last: Vec<&str> = rows[13].split(',').collect();
+    let mut run = ReplayRun::new(&replay, None).unwrap();
+    run.finish();
+    let [x, y, ..] = run.stepper.state.to_array();
+    assert_eq!(
+        (last[0], last[2], last[3]),
+        ("12", &*x.to_string(), &*y.to_string())
+    );
+
+    let output = simulate(&["--replay", file, "--hash"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(stdout(&output), format!("{}\n", replay.hash));
+
+    let output = simulate(&["--replay", file, "--hash", "--integrator", "rk4"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let rk4 = ReplayRun::new(&replay, Some(Integrator::Rk4))
+        .unwrap()
+        .finish();
+    assert_eq!(stdout(&output), format!("{rk4}\n"));
+    assert_ne!(rk4, replay.hash);
+}
+
+/// A recording whose states this build does not reproduce fails with status 4; a bad file,
+/// a missing one, or a scene option beside `--replay` with status 2 and a message.
+#[test]
+fn simulate_refuses_bad_replays_and_reports_a_mismatch() {
+    let text = String::from_utf8(common::small_replay().to_bytes()).unwrap();
+    let hash = text.rsplit("\"hash\":\"").next().unwrap()[..16].to_owned();
+    let first = if hash.starts_with('0') { "1" } else { "0" };
+    let tampered = replay_file(
+        "tampered.jsonl",
+        &text.replace(&hash, &format!("{first}{}", &hash[1..])),
+    );
+    let output = simulate(&["--replay", tampered.to_str().unwrap(), "--hash"]);
+    assert_eq!(output.status.code(), Some(4), "{}", stderr(&output));
+    assert!(stderr(&output).contains("the states differ from the recorded game's"));
+
+    let truncated = replay_file("truncated.jsonl", &text[..text.len() / 2]);
+    let output = simulate(&["--replay", truncated.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        stderr(&output).contains("truncated.jsonl: line "),
+        "{}",
+        stderr(&output)
+    );
+
+    let output = simulate(&["--replay", "/no/such/replay.jsonl"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        stderr(&output).contains("cannot open"),
+        "{}",
+        stderr(&output)
+    );
+
+    let output = simulate(&["--replay", truncated.to_str().unwrap(), "--k", "5"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        stderr(&output).contains("cannot be used with"),
+        "{}",
+        stderr(&output)
+    );
 }

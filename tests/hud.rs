@@ -31,6 +31,8 @@ fn readings() -> HudReadings {
         },
         ledger: EnergyLedger::starting_at(0.0),
         residual: 0.0,
+        recorded_steps: 150,
+        save_status: None,
     }
 }
 
@@ -49,6 +51,7 @@ fn lines_say_what_the_readings_hold() {
     assert!(!HudLine::Clock.text(&r).contains("PAUSED"));
     assert!(HudLine::Total.text(&r).ends_with("6.00"));
     assert!(HudLine::Scene.text(&r).contains("k 20"));
+    assert_eq!(HudLine::Replay.text(&r), "recorded 150 steps");
     // No energy has passed through yet: no relative error to show.
     assert!(HudLine::Residual.text(&r).contains("(- of energy"));
 

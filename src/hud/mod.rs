@@ -20,6 +20,7 @@ use crate::overlays::Overlays;
 use crate::physics::{
     AngularState, Energies, EnergyLedger, Integrator, LinearState, MassProperties, SceneParams,
 };
+use crate::recording::{Recorder, SaveStatus};
 use crate::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
 pub use history::EnergyHistory;
 
@@ -59,12 +60,13 @@ pub enum HudLine {
     Total,
     Ledger,
     Residual,
+    Replay,
     Help,
 }
 
 impl HudLine {
     /// The panel's lines, top to bottom (the help line sits apart, at the bottom).
-    pub const PANEL: [HudLine; 10] = [
+    pub const PANEL: [HudLine; 11] = [
         HudLine::Integrator,
         HudLine::Clock,
         HudLine::Scene,
@@ -75,6 +77,7 @@ impl HudLine {
         HudLine::Total,
         HudLine::Ledger,
         HudLine::Residual,
+        HudLine::Replay,
     ];
 
     /// The line's colour: the energy lines in their graph colours (the graph's legend).
@@ -84,7 +87,7 @@ impl HudLine {
             HudLine::BandPotential => BAND_ENERGY_COLOUR,
             HudLine::Total => TOTAL_COLOUR,
             HudLine::Integrator if readings.divergence.is_some() => WARNING_COLOUR,
-            HudLine::EnergyHeading | HudLine::Help => DIM_COLOUR,
+            HudLine::EnergyHeading | HudLine::Help | HudLine::Replay => DIM_COLOUR,
             _ => TEXT_COLOUR,
         }
     }
@@ -151,6 +154,13 @@ impl HudLine {
                     r.residual
                 )
             }
+            HudLine::Replay => {
+                let mut line = format!("recorded {} steps", r.recorded_steps);
+                if let Some(status) = &r.save_status {
+                    line += &format!("  {status}");
+                }
+                line
+            }
             HudLine::Help => help_line(),
         }
     }
@@ -189,6 +199,9 @@ pub struct HudReadings {
     pub energies: Energies,
     pub ledger: EnergyLedger,
     pub residual: f64,
+    /// Steps in the recording so far, and what the latest save said.
+    pub recorded_steps: u64,
+    pub save_status: Option<String>,
 }
 
 #[derive(SystemParam)]
@@ -201,6 +214,8 @@ pub struct HudSources<'w, 's> {
     fixed_time: Res<'w, Time<Fixed>>,
     diagnostics: Res<'w, DiagnosticsStore>,
     history: Res<'w, EnergyHistory>,
+    recorder: Res<'w, Recorder>,
+    save_status: Res<'w, SaveStatus>,
     boxes: Query<
         'w,
         's,
@@ -247,6 +262,8 @@ impl HudSources<'_, '_> {
             energies: mechanical_energies(params, &self.boxes, &self.bands),
             ledger: self.books.ledger,
             residual: self.books.residual,
+            recorded_steps: self.recorder.steps(),
+            save_status: self.save_status.0.clone(),
         }
     }
 }

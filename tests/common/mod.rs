@@ -34,6 +34,9 @@ pub use rubber_band_box::simulation::{
 };
 pub use rubber_band_box::view::scene_projection;
 
+use rubber_band_box::physics::{AutoSettings, BandEnds, BodyState};
+use rubber_band_box::replay::{Replay, Settings};
+
 /// A 1280 x 720 window: the 640 x 480 scene fits its height, so one pixel is 2/3 of a world
 /// unit and the screen centre (640, 360) is the world origin.
 pub const WINDOW: UVec2 = UVec2::new(1280, 720);
@@ -269,4 +272,41 @@ pub fn audit_accumulators(bodies: Query<&ForceAccumulator>, mut audit: ResMut<Ac
         audit.largest = audit.largest.max(force.length()).max(torque.abs());
         audit.bands_left += usize::from(accumulator.band.is_some());
     }
+}
+
+/// A small valid replay: a pull, a release, a reset, a change of settings.
+pub fn small_replay() -> Replay {
+    let params = SceneParams::tutorial();
+    let settings = Settings::new(&params, 0.01, Integrator::Auto);
+    let mut replay = Replay::start(
+        "tutorial",
+        settings,
+        AutoSettings::default(),
+        BodyState::default(),
+    );
+    let mut stepper = replay.stepper().unwrap();
+    let band = BandEnds {
+        local_point: DVec2::new(30.0, 30.0),
+        anchor: DVec2::new(200.0, 120.0),
+    };
+    for step in 0..12 {
+        if step == 4 {
+            replay.push_reset();
+            stepper.state = BodyState::default();
+        }
+        if step == 8 {
+            let stiffer = Settings {
+                stiffness: 2000.0,
+                integrator: Integrator::Rk4,
+                ..settings
+            };
+            replay.push_settings(stiffer);
+            stepper.params.stiffness = 2000.0;
+            stepper.integrator = Integrator::Rk4;
+        }
+        stepper.band = (step % 3 != 2).then_some(band);
+        stepper.step(0.01);
+        replay.push_step(stepper.band, &stepper.state);
+    }
+    replay
 }

@@ -1,0 +1,424 @@
+//! Replays: the game records what reached its physics; the file round-trips; stepping it again
+//! gives the game's states to the bit; bad files are refused with the line and what is wrong,
+//! never a panic; saving never leaves a half-written file.
+
+mod common;
+
+use std::path::PathBuf;
+
+use proptest::prelude::*;
+
+use common::*;
+use rubber_band_box::controls::{
+    FASTER, FEWER_STEPS, MORE_STEPS, PAUSE, RESET, SAVE, SINGLE_STEP, SOFTER, STIFFER,
+};
+use rubber_band_box::physics::BodyState;
+use rubber_band_box::recording::{Recorder, SaveStatus};
+use rubber_band_box::replay::run::ReplayRun;
+use rubber_band_box::replay::save::write_atomically;
+use rubber_band_box::replay::{MAX_LINE_BYTES, Replay, TrajectoryHash};
+
+/// Every state the game's box had after each fixed step, as the physics left it.
+#[derive(Resource, Default)]
+struct Trajectory(Vec<BodyState>);
+
+fn keep_trajectory(
+    mut trajectory: ResMut<Trajectory>,
+    boxes: Query<(&LinearState, &AngularState), With<RigidBox>>,
+) {
+    for (linear, angular) in &boxes {
+        trajectory.0.push(BodyState {
+            linear: *linear,
+            angular: *angular,
+        });
+    }
+}
+
+/// A headless game at 60 frames per second that keeps its trajectory.
+fn recorded_game() -> Game {
+    Game::with(Duration::from_secs_f64(1.0 / 60.0), |app| {
+        app.init_resource::<Trajectory>().add_systems(
+            FixedUpdate,
+            keep_trajectory.after(PhysicsSystems::Integrate),
+        );
+    })
+}
+
+/// What a hand does in one frame.
+#[derive(Clone, Copy, Debug)]
+enum Hand {
+    Press(f64, f64),
+    Move(f64, f64),
+    Release,
+    Tap(f64, f64),
+    Key(usize),
+    Idle,
+}
+
+const KEYS: [KeyCode; 9] = [
+    CYCLE_INTEGRATOR,
+    SOFTER,
+    STIFFER,
+    FEWER_STEPS,
+    MORE_STEPS,
+    RESET,
+    PAUSE,
+    SINGLE_STEP,
+    FASTER,
+];
+
+fn hand() -> impl Strategy<Value = Hand> {
+    let at = || (-300.0..300.0, -220.0..220.0);
+    prop_oneof![
+        2 => at().prop_map(|(x, y)| Hand::Press(x, y)),
+        6 => at().prop_map(|(x, y)| Hand::Move(x, y)),
+        2 => Just(Hand::Release),
+        1 => at().prop_map(|(x, y)| Hand::Tap(x, y)),
+        2 => (0..KEYS.len()).prop_map(Hand::Key),
+        4 => Just(Hand::Idle),
+    ]
+}
+
+fn play(game: &mut Game, hands: &[Hand]) {
+    for &hand in hands {
+        match hand {
+            Hand::Press(x, y) => game.press_at(DVec2::new(x, y)),
+            Hand::Move(x, y) => game.cursor(Some(world_to_screen(DVec2::new(x, y)))),
+            Hand::Release => game.mouse(ButtonState::Released),
+            Hand::Tap(x, y) => {
+                game.press_at(DVec2::new(x, y));
+                game.mouse(ButtonState::Released);
+            }
+            Hand::Key(index) => game.tap_key(KEYS[index]),
+            Hand::Idle => {}
+        }
+        game.update(1);
+    }
+}
+
+/// The game's recording, through its file format.
+fn saved_replay(game: &mut Game) -> Replay {
+    let replay = game.world().resource::<Recorder>().replay.clone();
+    let bytes = replay.expect("a step has run").to_bytes();
+    Replay::from_bytes(&bytes).expect("the game's own recording reads back")
+}
+
+/// Steps `replay` with its recorded integrators, every state after each step.
+fn replayed(replay: &Replay) -> (Vec<BodyState>, TrajectoryHash) {
+    let mut run = ReplayRun::new(replay, None).unwrap();
+    let mut states = Vec::new();
+    while run.advance().is_some() {
+        states.push(run.stepper.state);
+    }
+    (states, run.hash)
+}
+
+fn bits(states: &[BodyState]) -> Vec<[u64; 6]> {
+    states
+        .iter()
+        .map(|state| state.to_array().map(f64::to_bits))
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 12,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    /// Random input into the game (drags, taps, every control that reaches the physics,
+    /// pause and single steps), recorded, written, read and stepped again: every step's state
+    /// is the game's, to the bit, and so is the hash.
+    #[test]
+    fn a_recorded_game_replays_to_the_bit(hands in prop::collection::vec(hand(), 50..250)) {
+        let mut game = recorded_game();
+        play(&mut game, &hands);
+        let played = game.world().resource::<Trajectory>().0.clone();
+        prop_assume!(!played.is_empty());
+        let replay = saved_replay(&mut game);
+        prop_assert_eq!(replay.steps, played.len() as u64);
+        let (states, hash) = replayed(&replay);
+        prop_assert_eq!(bits(&states), bits(&played));
+        prop_assert_eq!(hash, replay.hash);
+    }
+}
+
+/// A drag, a reset, the integrator and k changed mid-drag, a pause with single steps: every
+/// kind of record is in the file and the replay is exact. A different integrator gives a
+/// different trajectory, and says so through the hash.
+#[test]
+fn every_kind_of_record_replays_exactly_and_another_integrator_differs() {
+    let mut game = recorded_game();
+    game.press_at(DVec2::new(150.0, 100.0));
+    game.update(20);
+    game.tap_key(CYCLE_INTEGRATOR);
+    game.update(5);
+    game.tap_key(STIFFER);
+    game.tap_key(MORE_STEPS);
+    game.cursor(Some(world_to_screen(DVec2::new(-120.0, 40.0))));
+    game.update(20);
+    game.tap_key(RESET);
+    game.update(3);
+    game.press_at(DVec2::new(-50.0, -150.0));
+    game.update(10);
+    game.tap_key(PAUSE);
+    game.update(1);
+    game.tap_key(SINGLE_STEP);
+    game.update(2);
+    let played = game.world().resource::<Trajectory>().0.clone();
+    let replay = saved_replay(&mut game);
+    let text = String::from_utf8(replay.to_bytes()).unwrap();
+    for kind in ["settings", "reset", "step", "end"] {
+        assert!(
+            text.contains(&format!("\"kind\":\"{kind}\"")),
+            "no {kind} record"
+        );
+    }
+    let (states, hash) = replayed(&replay);
+    assert_eq!(bits(&states), bits(&played));
+    assert_eq!(hash, replay.hash);
+
+    let mut other = ReplayRun::new(&replay, Some(Integrator::Rk4)).unwrap();
+    assert_ne!(other.finish(), replay.hash);
+}
+
+/// The S key saves the game so far (to `--record`'s file here) and the HUD says where; the
+/// game's end saves it again, whole.
+#[test]
+fn the_save_key_and_the_games_end_write_a_replay_that_loads() {
+    let path = scratch("saved.jsonl");
+    let target = path.clone();
+    let mut game = Game::with(Duration::from_millis(10), move |app| {
+        app.insert_resource(Recorder::to_file(target));
+    });
+    game.press_at(DVec2::new(150.0, 100.0));
+    game.update(30);
+    game.tap_key(SAVE);
+    game.update(1);
+    let status = game.world().resource::<SaveStatus>().0.clone().unwrap();
+    assert_eq!(status, format!("saved 30 steps to {}", path.display()));
+    assert!(game.hud(HudLine::Replay).contains(&status));
+    assert_eq!(read(&path).steps, 30);
+
+    game.update(9);
+    game.world().write_message(AppExit::Success);
+    game.update(1);
+    // Saved at the end of the frame, after its step: 41 in all.
+    assert_eq!(read(&path).steps, 41);
+}
+
+/// A save into a folder that does not exist says so, and the game plays on.
+#[test]
+fn a_save_that_cannot_be_written_says_why_and_the_game_plays_on() {
+    let path = scratch("no-such-folder").join("replay.jsonl");
+    let target = path.clone();
+    let mut game = Game::with(Duration::from_millis(10), move |app| {
+        app.insert_resource(Recorder::to_file(target));
+    });
+    game.update(5);
+    game.tap_key(SAVE);
+    game.update(5);
+    let status = game.world().resource::<SaveStatus>().0.clone().unwrap();
+    assert!(
+        status.starts_with(&format!("cannot save {}: ", path.display())),
+        "{status}"
+    );
+    assert_eq!(game.steps(), 10);
+    assert!(!path.exists());
+}
+
+#[test]
+fn an_interrupted_save_leaves_the_old_file_whole_and_nothing_beside_it() {
+    let folder = scratch("atomic");
+    std::fs::create_dir_all(&folder).unwrap();
+    let path = folder.join("replay.jsonl");
+    std::fs::write(&path, "the old replay").unwrap();
+    let error = write_atomically(&path, |file| {
+        use std::io::Write;
+        file.write_all(b"half a new one")?;
+        Err(std::io::Error::other("the disk is full"))
+    })
+    .unwrap_err();
+    assert_eq!(
+        error.to_string(),
+        format!("cannot save {}: the disk is full", path.display())
+    );
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "the old replay");
+    assert_eq!(std::fs::read_dir(&folder).unwrap().count(), 1);
+
+    write_atomically(&path, |file| {
+        use std::io::Write;
+        file.write_all(b"the new replay")
+    })
+    .unwrap();
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "the new replay");
+    assert_eq!(std::fs::read_dir(&folder).unwrap().count(), 1);
+}
+
+/// A fresh scratch path for this test process.
+fn scratch(name: &str) -> PathBuf {
+    let path = std::env::temp_dir()
+        .join(format!("rbb-replay-tests-{}", std::process::id()))
+        .join(name);
+    let _ = std::fs::remove_dir_all(&path);
+    std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+    path
+}
+
+fn read(path: &std::path::Path) -> Replay {
+    Replay::from_bytes(&std::fs::read(path).unwrap()).unwrap()
+}
+
+fn error_of(text: &str) -> String {
+    Replay::from_bytes(text.as_bytes()).unwrap_err().to_string()
+}
+
+#[test]
+fn a_small_replay_round_trips_and_steps_as_its_stepper_did() {
+    let replay = small_replay();
+    let text = String::from_utf8(replay.to_bytes()).unwrap();
+    assert_eq!(text.lines().count(), 1 + 2 + 12 + 1);
+    let back = Replay::from_bytes(text.as_bytes()).unwrap();
+    assert_eq!(back, replay);
+    assert_eq!(ReplayRun::new(&back, None).unwrap().finish(), replay.hash);
+}
+
+/// Each kind of bad file is refused with the line and what is wrong in it.
+#[test]
+fn bad_replay_files_name_the_line_and_what_is_wrong() {
+    let good = String::from_utf8(small_replay().to_bytes()).unwrap();
+    let lines: Vec<&str> = good.lines().collect();
+    let with_line = |index: usize, line: &str| {
+        let mut edited = lines.clone();
+        edited[index] = line;
+        edited.join("\n") + "\n"
+    };
+    let cases: Vec<(String, &str)> = vec![
+        (String::new(), "empty: no replay header"),
+        (lines[..5].join("\n") + "\n", "line 5: truncated"),
+        (good[..good.len() - 20].to_owned(), "line 16: "),
+        (
+            good.replacen("\"version\":1", "\"version\":2", 1),
+            "line 1: replay format version 2; this build reads version 1",
+        ),
+        (
+            good.replacen("rubber-band-box replay", "a shopping list", 1),
+            "line 1: format 'a shopping list' is not 'rubber-band-box replay'",
+        ),
+        (
+            with_line(2, r#"{"kind":"step","step":"two"}"#),
+            "line 3: invalid type: string \"two\"",
+        ),
+        (
+            with_line(
+                2,
+                r#"{"kind":"step","step":1,"band":{"point":[30.0,30.0],"anchor":[NaN,1.0]}}"#,
+            ),
+            "line 3: ",
+        ),
+        (
+            with_line(
+                2,
+                r#"{"kind":"step","step":1,"band":{"point":[30.0,30.0],"anchor":[1e999,1.0]}}"#,
+            ),
+            "line 3: ",
+        ),
+        (
+            with_line(
+                2,
+                r#"{"kind":"step","step":2,"band":{"point":[30.0,30.0],"anchor":[1e300,1.0]}}"#,
+            ),
+            "line 3: band.anchor: each coordinate must be finite and within 1e12 of zero, got 1e300",
+        ),
+        (
+            with_line(2, r#"{"kind":"step","step":7}"#),
+            "line 3: a step for step 7 out of order: the next step is 2",
+        ),
+        (
+            with_line(2, r#"{"kind":"flip","step":2}"#),
+            "line 3: unknown variant `flip`",
+        ),
+        (
+            with_line(2, &"x".repeat(MAX_LINE_BYTES + 10)),
+            "line 3: longer than 4096 bytes",
+        ),
+        (
+            good.replacen("\"mass\":5.0", "\"mass\":-5.0", 1),
+            "line 1: settings: mass must be a finite number greater than zero, got -5",
+        ),
+        (
+            good.replacen("\"dt\":0.01", "\"dt\":0.0", 1),
+            "line 1: settings: dt must be",
+        ),
+        (
+            good.replacen("\"stiffness\":2000.0", "\"stiffness\":-1.0", 1),
+            "line 11: settings: stiffness k must be",
+        ),
+        (
+            good.clone() + "{}\n",
+            "line 17: a line after the end record",
+        ),
+        (
+            good.replacen(
+                "\"kind\":\"end\",\"steps\":12",
+                "\"kind\":\"end\",\"steps\":13",
+                1,
+            ),
+            "line 16: the end record counts 13 steps, the file holds 12",
+        ),
+    ];
+    for (text, expected) in cases {
+        let error = error_of(&text);
+        assert!(
+            error.starts_with(expected),
+            "expected '{expected}', got '{error}'"
+        );
+    }
+    let junk: Vec<u8> = (0..=255u8).rev().cycle().take(3000).collect();
+    assert!(
+        Replay::from_bytes(&junk)
+            .unwrap_err()
+            .to_string()
+            .starts_with("line 1: not UTF-8 text")
+    );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 2000,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    /// Mutated files (bytes cut, changed, inserted; lines dropped, repeated or swapped) never
+    /// panic the reader; what it accepts steps without panic or a non-finite state.
+    #[test]
+    fn mutated_replay_files_are_read_or_refused_without_panic(
+        edits in prop::collection::vec((0..6u8, any::<prop::sample::Index>(), any::<u8>()), 1..4)
+    ) {
+        let mut bytes = small_replay().to_bytes();
+        for (kind, at, byte) in edits {
+            let i = at.index(bytes.len().max(1));
+            match kind {
+                0 => bytes.truncate(i),
+                1 if !bytes.is_empty() => bytes[i] = byte,
+                2 => bytes.insert(i.min(bytes.len()), byte),
+                3 if !bytes.is_empty() => { bytes.remove(i); }
+                _ => {
+                    let mut lines: Vec<Vec<u8>> = bytes.split(|&b| b == b'\n').map(<[u8]>::to_vec).collect();
+                    let n = lines.len();
+                    let j = at.index(n);
+                    if kind == 4 { lines.insert(j, lines[(j + 1) % n].clone()); } else { lines.swap(j, (j + 1) % n); }
+                    bytes = lines.join(&b'\n');
+                }
+            }
+        }
+        if let Ok(replay) = Replay::from_bytes(&bytes) {
+            let mut run = ReplayRun::new(&replay, None).unwrap();
+            while run.advance().is_some() {
+                prop_assert!(run.stepper.state.is_sane());
+            }
+        }
+    }
+}
