@@ -84,6 +84,19 @@ fn play(args: PlayArgs) -> ExitCode {
     let mut app = App::new();
     #[cfg(not(target_arch = "wasm32"))]
     if let Some(target) = args.record {
+        // Said now, not when the game ends.
+        let folder = match target.parent() {
+            Some(folder) if !folder.as_os_str().is_empty() => folder,
+            _ => std::path::Path::new("."),
+        };
+        if !folder.is_dir() {
+            eprintln!(
+                "error: cannot record to {}: {} is not a folder",
+                target.display(),
+                folder.display()
+            );
+            return ExitCode::from(2);
+        }
         app.insert_resource(rubber_band_box::recording::Recorder::to_file(target));
         #[cfg(unix)]
         rubber_band_box::recording::sigterm::exit_on_sigterm(&mut app);

@@ -34,8 +34,9 @@ impl Plugin for RecordingPlugin {
                     note_step_result.after(PhysicsSystems::Integrate),
                 ),
             );
+        // After the window plugin's exit systems: closing the last window asks to exit there.
         #[cfg(not(target_arch = "wasm32"))]
-        app.add_systems(Last, save_on_exit);
+        app.add_systems(Last, save_on_exit.after(bevy::window::ExitSystems));
     }
 }
 
