@@ -49,6 +49,9 @@ pub struct PlayArgs {
     /// SIGTERM), as a replay for `simulate --replay`.
     #[arg(long, value_name = "FILE")]
     pub record: Option<PathBuf>,
+    /// Play a replay back (its scene, settings and hand); a press takes over.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["integrator", "step_rate"])]
+    pub replay: Option<PathBuf>,
 }
 
 #[derive(Args, Debug)]
@@ -321,6 +324,13 @@ fn simulate_replay(
         )));
     }
     Ok(())
+}
+
+/// Reads and checks a replay file: the message names the file, and the line if it is bad.
+pub fn read_replay(path: &std::path::Path) -> Result<Replay, String> {
+    let in_file = |message: String| format!("{}: {message}", path.display());
+    let file = File::open(path).map_err(|error| in_file(format!("cannot open: {error}")))?;
+    Replay::read(BufReader::new(file)).map_err(|error| in_file(error.to_string()))
 }
 
 fn parse_number(text: &str) -> Result<f64, String> {

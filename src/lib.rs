@@ -6,7 +6,8 @@
 //! - [`simulation`]: the Bevy plugin that steps the core in `FixedUpdate` (headless);
 //! - [`replay`]: a game's input as data, read, written and stepped again with the core;
 //! - [`pointer`] and [`controls`]: mouse, touch and keys (headless); [`recording`]: what
-//!   reached the physics, kept as a replay (headless);
+//!   reached the physics, kept as a replay, and [`playback`], a replay played back in the game
+//!   (headless);
 //! - [`hud`]: the heads-up display, its energy graph and the window title (headless, but the
 //!   graph, which needs gizmos);
 //! - [`view`] and [`draw`]: camera, interpolation and drawing (need a window);
@@ -24,6 +25,7 @@ pub mod overlays;
 #[cfg(all(feature = "peers", not(target_arch = "wasm32")))]
 pub mod peers;
 pub mod physics;
+pub mod playback;
 pub mod pointer;
 pub mod recording;
 #[cfg(not(target_arch = "wasm32"))]
@@ -51,6 +53,7 @@ impl Plugin for GameLogicPlugin {
             pointer::PointerPlugin,
             controls::ControlsPlugin,
             recording::RecordingPlugin,
+            playback::PlaybackPlugin,
             hud::HudPlugin,
         ));
     }

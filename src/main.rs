@@ -17,6 +17,8 @@ struct PlayArgs {
     step_rate: Option<f64>,
     #[cfg(not(target_arch = "wasm32"))]
     record: Option<std::path::PathBuf>,
+    #[cfg(not(target_arch = "wasm32"))]
+    replay: Option<std::path::PathBuf>,
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -32,6 +34,7 @@ fn main() -> ExitCode {
             integrator: args.integrator,
             step_rate: args.step_rate,
             record: args.record,
+            replay: args.replay,
         }),
         Some(Command::Simulate(args)) => match simulate(&args, io::stdout().lock()) {
             Ok(()) => ExitCode::SUCCESS,
@@ -81,7 +84,24 @@ fn play(args: PlayArgs) -> ExitCode {
         eprintln!("error: {error}");
         return ExitCode::from(2);
     }
+    let mut integrator = args.integrator.unwrap_or_default();
     let mut app = App::new();
+    #[cfg(not(target_arch = "wasm32"))]
+    if let Some(path) = args.replay {
+        let replay = match rubber_band_box::cli::read_replay(&path) {
+            Ok(replay) => replay,
+            Err(message) => {
+                eprintln!("error: {message}");
+                return ExitCode::from(2);
+            }
+        };
+        let playback = rubber_band_box::playback::Playback::of(replay);
+        if let Some((start, recorded, auto)) = playback.start() {
+            (params, integrator) = (start, recorded);
+            app.insert_resource(auto);
+        }
+        app.insert_resource(playback);
+    }
     #[cfg(not(target_arch = "wasm32"))]
     if let Some(target) = args.record {
         // Said now, not when the game ends.
@@ -103,7 +123,7 @@ fn play(args: PlayArgs) -> ExitCode {
     }
     app.insert_resource(ClearColor(Color::BLACK))
         .insert_resource(params)
-        .insert_resource(args.integrator.unwrap_or_default())
+        .insert_resource(integrator)
         .add_plugins(DefaultPlugins.set(WindowPlugin {
             primary_window: Some(Window {
                 title: "Rubber Band Box".into(),

@@ -33,6 +33,7 @@ fn readings() -> HudReadings {
         residual: 0.0,
         recorded_steps: 150,
         save_status: None,
+        playback: None,
     }
 }
 
@@ -52,6 +53,15 @@ fn lines_say_what_the_readings_hold() {
     assert!(HudLine::Total.text(&r).ends_with("6.00"));
     assert!(HudLine::Scene.text(&r).contains("k 20"));
     assert_eq!(HudLine::Replay.text(&r), "recorded 150 steps");
+    let playing = HudReadings {
+        playback: Some((40, 1125)),
+        save_status: Some("saved 150 steps to a.jsonl".to_owned()),
+        ..r.clone()
+    };
+    assert_eq!(
+        HudLine::Replay.text(&playing),
+        "replay: step 40 of 1125 (press to take over)  recorded 150 steps  saved 150 steps to a.jsonl"
+    );
     // No energy has passed through yet: no relative error to show.
     assert!(HudLine::Residual.text(&r).contains("(- of energy"));
 

@@ -13,6 +13,7 @@ use rubber_band_box::controls::{
     FASTER, FEWER_STEPS, MORE_STEPS, PAUSE, RESET, SAVE, SINGLE_STEP, SOFTER, STIFFER,
 };
 use rubber_band_box::physics::BodyState;
+use rubber_band_box::playback::Playback;
 use rubber_band_box::recording::{Recorder, SaveStatus};
 use rubber_band_box::replay::run::ReplayRun;
 use rubber_band_box::replay::save::write_atomically;
@@ -421,4 +422,93 @@ proptest! {
             }
         }
     }
+}
+
+/// The game playing `replay` back from its start, at `frame` per update, with its trajectory
+/// kept; it runs until the playback ends.
+fn played_back(replay: Replay, frame: Duration) -> Game {
+    let (params, integrator, auto) = Playback::of(replay.clone()).start().unwrap();
+    let mut game = Game::with(frame, move |app| {
+        app.init_resource::<Trajectory>()
+            .add_systems(
+                FixedUpdate,
+                keep_trajectory.after(PhysicsSystems::Integrate),
+            )
+            .insert_resource(params)
+            .insert_resource(integrator)
+            .insert_resource(auto)
+            .insert_resource(Playback::of(replay));
+    });
+    for _ in 0..100_000 {
+        if !game.world().resource::<Playback>().is_playing() {
+            break;
+        }
+        game.update(1);
+    }
+    game
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 6,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
+
+    /// A recorded game played back in the game, at another frame rate: the same states, to the
+    /// bit, and its own recording of the playback is the same replay.
+    #[test]
+    fn a_replay_plays_back_in_the_game_to_the_bit(hands in prop::collection::vec(hand(), 50..200)) {
+        let mut game = recorded_game();
+        play(&mut game, &hands);
+        let played = game.world().resource::<Trajectory>().0.clone();
+        prop_assume!(!played.is_empty());
+        let replay = saved_replay(&mut game);
+
+        let mut again = played_back(replay.clone(), Duration::from_secs_f64(1.0 / 25.0));
+        // The game goes on after the replay's end, to the end of its frame at least.
+        let states = again.world().resource::<Trajectory>().0.clone();
+        prop_assert!(states.len() >= played.len());
+        prop_assert_eq!(bits(&states[..played.len()]), bits(&played));
+        let recorded_again = saved_replay(&mut again);
+        prop_assert_eq!(&recorded_again.records[..replay.records.len()], &replay.records[..]);
+    }
+}
+
+/// A press during playback takes over: the playback ends, the band is the pointer's.
+#[test]
+fn a_press_takes_over_a_playback() {
+    let mut game = recorded_game();
+    game.press_at(DVec2::new(150.0, 100.0));
+    game.update(60);
+    game.mouse(ButtonState::Released);
+    game.update(30);
+    let replay = saved_replay(&mut game);
+
+    let (params, integrator, auto) = Playback::of(replay.clone()).start().unwrap();
+    let mut again = Game::with(Duration::from_secs_f64(1.0 / 60.0), move |app| {
+        app.insert_resource(params)
+            .insert_resource(integrator)
+            .insert_resource(auto)
+            .insert_resource(Playback::of(replay));
+    });
+    again.update(20);
+    let recorded = again.the_band().ends.anchor;
+    assert!(
+        recorded.distance(DVec2::new(150.0, 100.0)) < 1e-4,
+        "{recorded:?}"
+    );
+    assert!(again.world().resource::<Playback>().is_playing());
+    let there = DVec2::new(-120.0, -90.0);
+    again.press_at(there);
+    again.update(1);
+    assert!(!again.world().resource::<Playback>().is_playing());
+    let band = again.the_band();
+    assert!(
+        band.ends.anchor.distance(there) < 1e-4,
+        "{:?}",
+        band.ends.anchor
+    );
+    again.update(10);
+    assert!(again.the_band().ends.anchor.distance(there) < 1e-4);
 }

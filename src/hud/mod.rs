@@ -20,6 +20,7 @@ use crate::overlays::Overlays;
 use crate::physics::{
     AngularState, Energies, EnergyLedger, Integrator, LinearState, MassProperties, SceneParams,
 };
+use crate::playback::Playback;
 use crate::recording::{Recorder, SaveStatus};
 use crate::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
 pub use history::EnergyHistory;
@@ -156,6 +157,9 @@ impl HudLine {
             }
             HudLine::Replay => {
                 let mut line = format!("recorded {} steps", r.recorded_steps);
+                if let Some((played, steps)) = r.playback {
+                    line = format!("replay: step {played} of {steps} (press to take over)  {line}");
+                }
                 if let Some(status) = &r.save_status {
                     line += &format!("  {status}");
                 }
@@ -202,6 +206,8 @@ pub struct HudReadings {
     /// Steps in the recording so far, and what the latest save said.
     pub recorded_steps: u64,
     pub save_status: Option<String>,
+    /// While a replay plays back: (steps played, steps in it).
+    pub playback: Option<(u64, u64)>,
 }
 
 #[derive(SystemParam)]
@@ -216,6 +222,7 @@ pub struct HudSources<'w, 's> {
     history: Res<'w, EnergyHistory>,
     recorder: Res<'w, Recorder>,
     save_status: Res<'w, SaveStatus>,
+    playback: Res<'w, Playback>,
     boxes: Query<
         'w,
         's,
@@ -264,6 +271,7 @@ impl HudSources<'_, '_> {
             residual: self.books.residual,
             recorded_steps: self.recorder.steps(),
             save_status: self.save_status.0.clone(),
+            playback: self.playback.progress(),
         }
     }
 }
