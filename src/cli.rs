@@ -3,8 +3,7 @@
 //! Every value is checked before anything runs: a bad argument gets a message naming it and
 //! exit status 2, never a panic.
 
-use std::fs::File;
-use std::io::{self, BufReader, BufWriter, Write};
+use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
 use bevy::math::DVec2;
@@ -293,12 +292,9 @@ fn simulate_replay(
     path: &std::path::Path,
     out: impl Write,
 ) -> Result<(), SimulateError> {
-    let in_file =
-        |message: String| SimulateError::Arguments(format!("{}: {message}", path.display()));
-    let file = File::open(path).map_err(|error| in_file(format!("cannot open: {error}")))?;
-    let replay = Replay::read(BufReader::new(file)).map_err(|error| in_file(error.to_string()))?;
-    let mut run =
-        ReplayRun::new(&replay, args.integrator).map_err(|error| in_file(error.to_string()))?;
+    let replay = Replay::read_file(path).map_err(SimulateError::Arguments)?;
+    let mut run = ReplayRun::new(&replay, args.integrator)
+        .map_err(|error| SimulateError::Arguments(format!("{}: {error}", path.display())))?;
     run.stepper.auto = args.auto(run.stepper.auto);
     let mut out = BufWriter::new(out);
     let write = |out: &mut BufWriter<_>, line: &str| writeln!(out, "{line}");
@@ -324,13 +320,6 @@ fn simulate_replay(
         )));
     }
     Ok(())
-}
-
-/// Reads and checks a replay file: the message names the file, and the line if it is bad.
-pub fn read_replay(path: &std::path::Path) -> Result<Replay, String> {
-    let in_file = |message: String| format!("{}: {message}", path.display());
-    let file = File::open(path).map_err(|error| in_file(format!("cannot open: {error}")))?;
-    Replay::read(BufReader::new(file)).map_err(|error| in_file(error.to_string()))
 }
 
 fn parse_number(text: &str) -> Result<f64, String> {

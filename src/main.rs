@@ -63,7 +63,11 @@ fn main() -> ExitCode {
             Ok(()) => ExitCode::SUCCESS,
             Err(error) => {
                 eprintln!("error: {error}");
-                ExitCode::FAILURE
+                if error.is::<rubber_band_box::report::BadInput>() {
+                    ExitCode::from(2)
+                } else {
+                    ExitCode::FAILURE
+                }
             }
         },
     }
@@ -88,7 +92,7 @@ fn play(args: PlayArgs) -> ExitCode {
     let mut app = App::new();
     #[cfg(not(target_arch = "wasm32"))]
     if let Some(path) = args.replay {
-        let replay = match rubber_band_box::cli::read_replay(&path) {
+        let replay = match rubber_band_box::replay::Replay::read_file(&path) {
             Ok(replay) => replay,
             Err(message) => {
                 eprintln!("error: {message}");

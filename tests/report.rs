@@ -1,5 +1,7 @@
 //! The report's quick mode as CI's smoke test: it runs, and its files exist and parse.
 
+mod common;
+
 use std::fs;
 use std::process::Command;
 
@@ -188,4 +190,58 @@ fn the_quick_report_bears_out_the_claims_readme_makes() {
         .collect();
     assert_eq!(cells.len(), 2, "{auto_row}");
     assert!(cells.iter().all(|&r| r < 1e-6), "{auto_row}");
+}
+
+/// `report --replay` on a recorded drag: every integrator at the recorded rate and four times
+/// it; `auto` within 1e-9 px of the reference, RK4 converging at its order between the two
+/// rates, and a bad file refused with status 2 and the line.
+#[test]
+fn the_replay_report_sweeps_every_integrator_over_the_recorded_hand() {
+    let folder = std::env::temp_dir().join(format!("rbb-replay-report-{}", std::process::id()));
+    fs::create_dir_all(&folder).unwrap();
+    let file = folder.join("small.jsonl");
+    fs::write(&file, common::small_replay().to_bytes()).unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
+        .args(["report", "--quick", "--out"])
+        .arg(&folder)
+        .arg("--replay")
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let text = fs::read_to_string(folder.join("replay.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    assert_eq!(rows.len(), 7 * 2);
+    let error = |integrator: &str, substeps: &str| -> f64 {
+        let row = rows
+            .iter()
+            .find(|r| r[0] == integrator && r[1] == substeps)
+            .unwrap();
+        row[3].parse().unwrap()
+    };
+    assert!(error("auto", "1") < 1e-9, "{}", error("auto", "1"));
+    let rk4_order = (error("rk4", "1") / error("rk4", "4")).log(4.0);
+    assert!((rk4_order - 4.0).abs() < 0.5, "rk4's order {rk4_order}");
+
+    let bad = folder.join("bad.jsonl");
+    fs::write(&bad, "{}\n").unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
+        .args(["report", "--replay"])
+        .arg(&bad)
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    let message = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        message.contains("bad.jsonl: line 1: not a replay header"),
+        "{message}"
+    );
 }

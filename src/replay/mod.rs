@@ -336,6 +336,15 @@ impl Replay {
         Self::read(bytes)
     }
 
+    /// Reads and checks a replay file: the message names the file, and the line if it is bad.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn read_file(path: &std::path::Path) -> Result<Self, String> {
+        let in_file = |message: String| format!("{}: {message}", path.display());
+        let file =
+            std::fs::File::open(path).map_err(|error| in_file(format!("cannot open: {error}")))?;
+        Self::read(io::BufReader::new(file)).map_err(|error| in_file(error.to_string()))
+    }
+
     /// A stepper at the start of the replay: its settings, its initial state, no band.
     pub fn stepper(&self) -> Result<Stepper, ParamError> {
         let settings = self.header.settings;

@@ -29,6 +29,8 @@ pub struct ReplayRun<'a> {
     /// Mechanical energy right after the latest step (None at the start and after a reset).
     settled: Option<f64>,
     pub hash: TrajectoryHash,
+    /// Steps of the integrator per recorded step (1: as the game stepped).
+    substeps: u32,
 }
 
 impl<'a> ReplayRun<'a> {
@@ -51,7 +53,15 @@ impl<'a> ReplayRun<'a> {
             ledger: EnergyLedger::default(),
             settled: None,
             hash: TrajectoryHash::default(),
+            substeps: 1,
         })
+    }
+
+    /// Each recorded step taken as `substeps` equal steps with the same band: the same hand
+    /// at a step rate that many times the recorded one (the report's sweep).
+    pub fn subdivided(mut self, substeps: u32) -> Self {
+        self.substeps = substeps.max(1);
+        self
     }
 
     /// Plays the records up to and including the next step; `None` after the last.
@@ -91,7 +101,15 @@ impl<'a> ReplayRun<'a> {
             None => self.ledger = EnergyLedger::starting_at(now),
         }
         let before = self.stepper.state;
-        let info = self.stepper.step(self.dt);
+        let step = self.dt / f64::from(self.substeps);
+        let mut info = StepInfo::default();
+        for _ in 0..self.substeps {
+            let taken = self.stepper.step(step);
+            info.substeps += taken.substeps;
+            info.evaluations += taken.evaluations;
+            info.fell_back |= taken.fell_back;
+            info.dissipated += taken.dissipated;
+        }
         self.fallbacks += u64::from(info.fell_back);
         self.step += 1;
         self.time += self.dt;

@@ -20,6 +20,7 @@ mod ledger;
 #[cfg(feature = "peers")]
 mod peers;
 mod plots;
+mod replay;
 mod stability;
 mod stiffness;
 mod table;
@@ -45,7 +46,23 @@ pub struct ReportArgs {
     /// `--features peers`).
     #[arg(long)]
     pub peers: bool,
+    /// Only the sweep on a recorded game (`play --record`): every integrator at the recorded
+    /// step rate and finer, against the tightest reference.
+    #[arg(long, value_name = "FILE")]
+    pub replay: Option<PathBuf>,
 }
+
+/// An argument the report cannot run with (a bad replay file): exit status 2, as `simulate`.
+#[derive(Debug)]
+pub struct BadInput(pub String);
+
+impl std::fmt::Display for BadInput {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl Error for BadInput {}
 
 /// What `report --peers` says in a build without the peers compiled in.
 pub const NO_PEERS: &str = "this build has no peers: run it as \
@@ -58,6 +75,16 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     fs::create_dir_all(&args.out)?;
     let started = Instant::now();
     let quick = args.quick;
+    if let Some(path) = &args.replay {
+        let recorded = crate::replay::Replay::read_file(path).map_err(BadInput)?;
+        let points = replay::sweep(&recorded, quick);
+        let name = path.display().to_string();
+        return write(
+            &args.out,
+            &[replay::table(&recorded, &name, &points)],
+            started,
+        );
+    }
 
     let work = work_precision::sweep(quick);
     let mut tables = vec![
