@@ -26,7 +26,7 @@ trap 'git worktree remove --force "$work"' EXIT
     if [ $# -eq 0 ]; then set -- --file 'src/physics/**/*.rs'; fi
     # The targets go to the build as well as the test (-C): building every test target for
     # each mutant would double its time.
-    cargo mutants --in-place --no-shuffle --timeout 30 \
+    cargo mutants --in-place --no-shuffle --timeout 15 \
         -C --test=core -C --test=integrators -C --test=cli "$@" \
         -- -- --skip soak || true
 )
