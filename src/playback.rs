@@ -82,7 +82,6 @@ fn take_over_on_press(mut actions: MessageReader<PointerAction>, mut playback: R
 
 /// Before the step's forces: the recorded resets and settings up to the next step, and its
 /// band. At the replay's end the playback stops, leaving the box as it is.
-#[allow(clippy::too_many_arguments)]
 fn play_step(
     mut commands: Commands,
     mut playback: ResMut<Playback>,
