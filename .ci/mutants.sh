@@ -12,12 +12,15 @@
 # (caught.txt, missed.txt, ...).
 #
 # Usage: .ci/mutants.sh [cargo-mutants options; default: --file 'src/physics/**/*.rs']
+# (`--iterate` skips what the previous run, in mutants.out/, caught.)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_TARGET_DIR="${RBB_MUTANTS_TARGET_DIR:-$HOME/.cache/rubber-band-box/mutants-target}"
 work="$(mktemp -d)/tree"
 git worktree add --detach --quiet "$work" HEAD
 trap 'git worktree remove --force "$work"' EXIT
+# The previous results, so that `--iterate` tests only what they did not catch.
+if [ -d mutants.out ]; then cp -r mutants.out "$work/"; fi
 (
     cd "$work"
     # The core's own tests and the CLI's (the binary is linked for any integration test

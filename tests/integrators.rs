@@ -1146,3 +1146,157 @@ fn dop853_gives_up_a_step_beyond_its_budget() {
     let exact_budget = dop853::integrate(&state, &model, start, 0.01, 1e-9, done.attempts);
     assert_eq!(exact_budget.map(|d| d.state), Some(done.state));
 }
+
+/// One `implicit` step of the diagonal pull with damping, against backward Euler solved by
+/// hand: along the diagonal the band is a linear spring through the centre, so
+/// v₁ = (m v₀ − h k (x₀ + c − a)) / (m + h b + h² k) and x₁ = x₀ + h v₁, with no turn. Newton's
+/// method solves this quadratic problem in one iteration (and one more to see it is done).
+#[test]
+fn an_implicit_step_is_backward_euler_solved_by_hand() {
+    let params = SceneParams::tutorial();
+    let mass = params.mass_properties().unwrap();
+    let corner = DVec2::new(30.0, 30.0);
+    let anchor = DVec2::new(150.0, 150.0);
+    let band = rubber_band_box::physics::BandEnds {
+        local_point: corner,
+        anchor,
+    };
+    let model = params.force_model(mass, Some(band));
+    let mut state = BodyState::default();
+    state.linear.position = DVec2::new(10.0, 10.0);
+    state.linear.velocity = DVec2::new(20.0, 20.0);
+    let (m, k, b, h) = (params.mass, params.stiffness, params.linear_damping, 0.01);
+    let start = state;
+    let evaluations = Integrator::Implicit
+        .step(&mut state, &model, model.forces(&start), h)
+        .evaluations;
+    let stretch = start.linear.position + corner - anchor;
+    let v1 = (m * start.linear.velocity - h * k * stretch) / (m + h * b + h * h * k);
+    let x1 = start.linear.position + h * v1;
+    assert!(
+        (state.linear.velocity - v1).length() < 1e-12 * v1.length(),
+        "{:?} against {v1:?}",
+        state.linear.velocity
+    );
+    assert!((state.linear.position - x1).length() < 1e-12 * x1.length());
+    assert_eq!(
+        (state.angular.orientation, state.angular.angular_velocity),
+        (0.0, 0.0)
+    );
+    // The start, two Newton iterations, one trial of the line search in each.
+    assert!(evaluations <= 5, "{evaluations} evaluations");
+}
+
+/// A budget of exactly the steps a soft fixed step is expected to need is enough: the
+/// engines give up beforehand only when the expectation exceeds the budget.
+#[test]
+fn a_budget_equal_to_the_expected_steps_is_enough() {
+    use rubber_band_box::physics::integrators::dop853;
+    use rubber_band_box::physics::integrators::taylor::{self, TaylorSettings};
+    let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
+    stepper.grab(TUTORIAL_PULL_TARGET);
+    let model = stepper.model();
+    let state = stepper.state;
+    let expected = taylor::steps_expected(&state, &model, 0.01);
+    assert_eq!(expected, 1.0);
+    let settings = TaylorSettings {
+        order: 20,
+        tolerance: 1e-10,
+        max_steps: 1,
+    };
+    assert_eq!(
+        taylor::integrate(&state, &model, 0.01, &settings)
+            .unwrap()
+            .steps,
+        1
+    );
+    let done = dop853::integrate(&state, &model, model.forces(&state), 0.01, 1e-6, 1).unwrap();
+    assert_eq!(done.attempts, 1);
+}
+
+/// A tiny state passes any absolute tolerance, so only the engine's stability cap keeps a
+/// low-order series from taking a long step of a fast decay, which would grow it: spinning at
+/// 1e-9 rad/s with an angular damping of 1000 /s, the energy must fall at every order.
+#[test]
+fn autos_engine_never_lets_a_fast_decay_grow() {
+    let params = SceneParams {
+        angular_damping: 1e3,
+        ..SceneParams::tutorial()
+    };
+    for order in [2, 3, 4, 8] {
+        let mut stepper = Stepper::new(params).unwrap();
+        stepper.integrator = Integrator::Auto;
+        stepper.auto.order = order;
+        stepper.state.angular.angular_velocity = 1e-9;
+        let before = stepper.energy();
+        let info = stepper.step(0.01);
+        assert!(!info.fell_back);
+        assert!(
+            stepper.energy() < before,
+            "order {order}: {} > {before}",
+            stepper.energy()
+        );
+    }
+}
+
+/// The far anchor (1e6 px away) at `auto`'s default tolerance: the tolerance is relative to
+/// the state's size as well, so round-off a million px out is never chased, and no step falls
+/// back.
+#[test]
+fn auto_pulls_the_far_anchor_without_falling_back() {
+    let far = Scenario::named("far").unwrap();
+    let mut run = Run::of(&far, Integrator::Auto, 0.01).unwrap();
+    run.advance_by(200).unwrap();
+    assert_eq!(run.fallbacks, 0);
+}
+
+/// The engines' error follows their tolerance: on the stiff pull at k = 1e4 (10 fixed steps
+/// at 100 Hz, the fixture's two solutions agreeing to 1e-11 px), every hundredfold tightening
+/// buys at least tenfold less error, and the error stays within 50 tolerances (a
+/// tolerance bounds each substep's error, and there are tens of substeps). An error estimate
+/// or weight that is off shows here, where the accuracy tests alone, far below their targets,
+/// would not see it.
+#[test]
+fn the_engines_error_follows_their_tolerance() {
+    use rubber_band_box::physics::integrators::dop853;
+    let (k, rate, ticks, reference, _) = stiff_references()
+        .into_iter()
+        .find(|&(k, rate, ..)| k == 1e4 && rate == 100.0)
+        .unwrap();
+    let mut scenario = Scenario::named("stiff").unwrap();
+    scenario.params.stiffness = k;
+    let mass = scenario.params.mass_properties().unwrap();
+    let tolerances = [1e-3, 1e-5, 1e-7];
+    let dop853_error = |tolerance: f64| {
+        let mut stepper = Stepper::new(scenario.params).unwrap();
+        stepper.grab(TUTORIAL_PULL_TARGET);
+        let model = stepper.model();
+        let mut state = stepper.state;
+        for _ in 0..ticks {
+            let start = model.forces(&state);
+            state = dop853::integrate(&state, &model, start, 1.0 / rate, tolerance, 10_000)
+                .unwrap()
+                .state;
+        }
+        state.pose_error(&reference, &mass)
+    };
+    let auto_error = |tolerance: f64| {
+        let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
+        run.stepper.auto.tolerance = tolerance;
+        run.advance_by(ticks).unwrap();
+        assert_eq!(run.fallbacks, 0);
+        run.stepper.state.pose_error(&reference, &mass)
+    };
+    for (name, errors) in [
+        ("dop853", tolerances.map(dop853_error)),
+        ("auto", tolerances.map(auto_error)),
+    ] {
+        println!("{name}: {errors:?} at tolerances {tolerances:?}");
+        for (error, tolerance) in errors.iter().zip(tolerances) {
+            assert!(*error < 50.0 * tolerance, "{name}: {errors:?}");
+        }
+        for pair in errors.windows(2) {
+            assert!(pair[1] < pair[0] / 10.0, "{name}: {errors:?}");
+        }
+    }
+}

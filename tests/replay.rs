@@ -512,3 +512,10 @@ fn a_press_takes_over_a_playback() {
     again.update(10);
     assert!(again.the_band().ends.anchor.distance(there) < 1e-4);
 }
+
+/// A record in memory is small: a long game at a high step rate stays well under the memory
+/// a replay's longest allowed length implies (README, "Replays").
+#[test]
+fn a_record_takes_at_most_48_bytes() {
+    assert!(std::mem::size_of::<rubber_band_box::replay::Record>() <= 48);
+}

@@ -26,9 +26,9 @@ use crate::physics::{
 pub const FORMAT: &str = "rubber-band-box replay";
 /// The format version this build writes and reads.
 pub const VERSION: u32 = 1;
-/// The most steps a replay holds: 10 million is 28 hours at 100 Hz, 40 minutes at 4096 Hz,
-/// about 0.5 GB in memory. A recording stops there.
-pub const MAX_STEPS: u64 = 10_000_000;
+/// The most steps a replay holds: 3 million is 8 hours at 100 Hz, 12 minutes at 4096 Hz,
+/// under 150 MB in memory (a record is 48 bytes). A recording stops there.
+pub const MAX_STEPS: u64 = 3_000_000;
 /// The longest line a reader accepts (a header is about 400 bytes, a step at most about 120).
 pub const MAX_LINE_BYTES: usize = 4096;
 /// The range of `auto`'s series order a replay may ask for (as `simulate --auto-order`).
@@ -138,8 +138,9 @@ impl From<AutoRecord> for AutoSettings {
 pub enum Record {
     /// Before step `step`: the scene back at its start, no band (the reset control).
     Reset { step: u64 },
-    /// From step `step` on, these settings (a control changed one of them).
-    Settings { step: u64, settings: Settings },
+    /// From step `step` on, these settings (a control changed one of them). Boxed: rare, and
+    /// larger than a step, which would otherwise pay for it in memory.
+    Settings { step: u64, settings: Box<Settings> },
     /// Step `step` (counted from 1) ran with this band, or none.
     Step {
         step: u64,
@@ -244,7 +245,7 @@ impl Replay {
             .iter()
             .rev()
             .find_map(|record| match record {
-                Record::Settings { settings, .. } => Some(*settings),
+                Record::Settings { settings, .. } => Some(**settings),
                 _ => None,
             })
             .unwrap_or(self.header.settings)
@@ -262,7 +263,7 @@ impl Replay {
         if settings != self.current_settings() {
             self.records.push(Record::Settings {
                 step: self.steps + 1,
-                settings,
+                settings: Box::new(settings),
             });
         }
     }
@@ -423,7 +424,7 @@ impl Reader {
         };
         match record {
             Record::Reset { step } => in_order(step, "a reset")?,
-            Record::Settings { step, settings } => {
+            Record::Settings { step, ref settings } => {
                 in_order(step, "settings")?;
                 settings
                     .validate()

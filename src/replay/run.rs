@@ -69,7 +69,7 @@ impl<'a> ReplayRun<'a> {
         loop {
             let record = self.replay.records.get(self.next)?;
             self.next += 1;
-            match *record {
+            match record {
                 Record::Reset { .. } => {
                     self.stepper.state = BodyState::from_array(self.replay.header.initial);
                     self.stepper.band = None;
@@ -86,7 +86,9 @@ impl<'a> ReplayRun<'a> {
                     self.stepper.integrator = self.integrator.unwrap_or(settings.integrator);
                     self.dt = settings.dt;
                 }
-                Record::Step { band, .. } => return Some(self.step_with(band.map(BandEnds::from))),
+                Record::Step { band, .. } => {
+                    return Some(self.step_with(band.map(BandEnds::from)));
+                }
                 Record::End { .. } => return None,
             }
         }
