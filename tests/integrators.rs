@@ -1300,3 +1300,19 @@ fn the_engines_error_follows_their_tolerance() {
         }
     }
 }
+
+/// On the tutorial's soft band (the band's rate times the step about 0.02) the series' terms
+/// fall about fiftyfold an order, so `auto` reaches its tolerance in a handful of orders and
+/// stops there, in one Taylor step, instead of computing all twenty.
+#[test]
+fn autos_series_stops_early_on_a_soft_band() {
+    let tutorial = Scenario::named("tutorial").unwrap();
+    let mut run = Run::of(&tutorial, Integrator::Auto, 0.01).unwrap();
+    let mut orders = Vec::new();
+    for _ in 0..300 {
+        run.advance().unwrap();
+        orders.push(run.last_step.evaluations);
+        assert_eq!(run.last_step.substeps, 1);
+    }
+    assert!(orders.iter().all(|n| (4..=12).contains(n)), "{orders:?}");
+}
