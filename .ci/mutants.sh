@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The mutation score of the numerical core (README, "Tests that can fail"): cargo-mutants
 # changes src/physics/ one operator at a time and runs the core's tests against each change.
-# Not part of CI (it takes well over an hour on two cores). Needs `cargo install --locked
+# Not part of CI (all of src/physics takes about an hour and a half on two cores). Needs `cargo install --locked
 # cargo-mutants --version '^27'`.
 #
 # It mutates a throw-away git worktree of HEAD in place, with a target folder of its own:
@@ -13,6 +13,8 @@
 #
 # Usage: .ci/mutants.sh [cargo-mutants options; default: --file 'src/physics/**/*.rs']
 # (`--iterate` skips what the previous run, in mutants.out/, caught.)
+# Never edit this file while it runs: bash reads a script as it goes, and a run's results are
+# copied out of its worktree by the last lines (an hour's results were lost that way once).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_TARGET_DIR="${RBB_MUTANTS_TARGET_DIR:-$HOME/.cache/rubber-band-box/mutants-target}"
