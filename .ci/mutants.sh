@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The mutation score of the numerical core (README, "Tests that can fail"): cargo-mutants
-# changes src/physics/ one operator at a time and runs the core's tests against each change.
-# Not part of CI (all of src/physics takes about an hour and a half on two cores). Needs `cargo install --locked
-# cargo-mutants --version '^27'`.
+# The mutation score of the numerical core (README, "Robustness"): cargo-mutants changes
+# src/physics/ one operator at a time and runs the core's tests against each change. Not part
+# of CI (all of src/physics takes about an hour and a half on two cores). Needs
+# `cargo install --locked cargo-mutants --version '^27'`.
 #
 # It mutates a throw-away git worktree of HEAD in place, with a target folder of its own:
 # cargo names our crate's artifacts the same whatever folder it sits in, so a mutant built in
