@@ -213,21 +213,30 @@ pub struct Replay {
     pub steps: u64,
     /// The hash of the states after each step, as the recorder saw them.
     pub hash: TrajectoryHash,
+    /// The settings after every record so far: kept, not searched for, because the recorder
+    /// asks at every step.
+    in_force: Settings,
 }
 
 impl Replay {
     /// An empty recording of a game starting with these settings.
     pub fn start(scene: &str, settings: Settings, auto: AutoSettings, initial: BodyState) -> Self {
+        Self::with_header(Header {
+            format: FORMAT.to_owned(),
+            version: VERSION,
+            crate_version: env!("CARGO_PKG_VERSION").to_owned(),
+            scene: scene.to_owned(),
+            settings,
+            auto: auto.into(),
+            initial: initial.to_array(),
+        })
+    }
+
+    /// No records yet.
+    fn with_header(header: Header) -> Self {
         Self {
-            header: Header {
-                format: FORMAT.to_owned(),
-                version: VERSION,
-                crate_version: env!("CARGO_PKG_VERSION").to_owned(),
-                scene: scene.to_owned(),
-                settings,
-                auto: auto.into(),
-                initial: initial.to_array(),
-            },
+            in_force: header.settings,
+            header,
             records: Vec::new(),
             steps: 0,
             hash: TrajectoryHash::default(),
@@ -241,14 +250,7 @@ impl Replay {
 
     /// The settings in force after every record so far.
     pub fn current_settings(&self) -> Settings {
-        self.records
-            .iter()
-            .rev()
-            .find_map(|record| match record {
-                Record::Settings { settings, .. } => Some(**settings),
-                _ => None,
-            })
-            .unwrap_or(self.header.settings)
+        self.in_force
     }
 
     /// Before the next step: the scene was reset.
@@ -260,7 +262,8 @@ impl Replay {
 
     /// Before the next step: these settings, if they differ from those in force.
     pub fn push_settings(&mut self, settings: Settings) {
-        if settings != self.current_settings() {
+        if settings != self.in_force {
+            self.in_force = settings;
             self.records.push(Record::Settings {
                 step: self.steps + 1,
                 settings: Box::new(settings),
@@ -403,12 +406,7 @@ impl Reader {
             let header: Header = serde_json::from_str(text)
                 .map_err(|error| at(format!("not a replay header: {error}")))?;
             check_header(&header).map_err(at)?;
-            self.replay = Some(Replay {
-                header,
-                records: Vec::new(),
-                steps: 0,
-                hash: TrajectoryHash::default(),
-            });
+            self.replay = Some(Replay::with_header(header));
             return Ok(());
         };
         let record: Record = serde_json::from_str(text).map_err(|error| at(error.to_string()))?;
@@ -429,6 +427,7 @@ impl Reader {
                 settings
                     .validate()
                     .map_err(|error| at(format!("settings: {error}")))?;
+                replay.in_force = **settings;
             }
             Record::Step { step, band } => {
                 in_order(step, "a step")?;
