@@ -10,7 +10,7 @@ use crate::replay::Replay;
 use crate::replay::run::ReplayRun;
 use crate::timing::median_ns;
 
-use super::table::{Cell, Column, Table, diverged};
+use super::table::{Cell, Column, Table};
 use super::work_precision::WorkPoint;
 
 /// How many steps per recorded step each run takes.
@@ -27,13 +27,14 @@ fn reference_settings() -> AutoSettings {
     }
 }
 
-/// Every state after each recorded step, or the step where the run left every bound.
+/// Every state after each recorded step and the seconds simulated, or the step where the run
+/// left every bound.
 fn trajectory(
     replay: &Replay,
     integrator: Integrator,
     substeps: u32,
     auto: Option<AutoSettings>,
-) -> Result<Vec<BodyState>, u64> {
+) -> Result<(Vec<BodyState>, f64), u64> {
     let mut run = ReplayRun::new(replay, Some(integrator))
         .expect("a replay read from a file is valid")
         .subdivided(substeps);
@@ -47,12 +48,12 @@ fn trajectory(
         }
         states.push(run.stepper.state);
     }
-    Ok(states)
+    Ok((states, run.time))
 }
 
 /// One point per integrator and rate.
 pub(super) fn sweep(replay: &Replay, quick: bool) -> Vec<WorkPoint> {
-    let reference = trajectory(replay, Integrator::Auto, 1, Some(reference_settings()))
+    let (reference, seconds) = trajectory(replay, Integrator::Auto, 1, Some(reference_settings()))
         .expect("the tightest series never leaves the bounds");
     let mass = replay
         .header
@@ -60,16 +61,11 @@ pub(super) fn sweep(replay: &Replay, quick: bool) -> Vec<WorkPoint> {
         .params()
         .mass_properties()
         .expect("a replay read from a file is valid");
-    let seconds: f64 = {
-        let mut run = ReplayRun::new(replay, None).expect("valid");
-        while run.advance().is_some() {}
-        run.time
-    };
     let mut points = Vec::new();
     for &substeps in subdivisions(quick) {
         for integrator in Integrator::ALL {
             let outcome = trajectory(replay, integrator, substeps, None);
-            let error = outcome.as_ref().ok().map(|states| {
+            let error = outcome.as_ref().ok().map(|(states, _)| {
                 states
                     .iter()
                     .zip(&reference)
@@ -116,11 +112,6 @@ pub(super) fn table(replay: &Replay, name: &str, points: &[WorkPoint]) -> Table 
     )
     .across(0);
     for p in points {
-        let outcome = match (p.error, p.diverged_at) {
-            (Some(error), _) => format!("{error:.1e} / {:.0}", p.ns_per_simulated_second),
-            (None, Some(step)) => diverged(step),
-            (None, None) => "?".to_owned(),
-        };
         let substeps = (replay.header.settings.dt / p.dt).round();
         table.row(vec![
             Cell::same(p.integrator),
@@ -129,7 +120,7 @@ pub(super) fn table(replay: &Replay, name: &str, points: &[WorkPoint]) -> Table 
             Cell::csv_option(p.error),
             Cell::csv(p.ns_per_simulated_second),
             Cell::csv_option(p.diverged_at),
-            Cell::markdown(outcome),
+            Cell::markdown(p.outcome()),
         ]);
     }
     table

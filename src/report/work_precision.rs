@@ -32,6 +32,22 @@ pub struct WorkPoint {
     pub ns_per_simulated_second: f64,
 }
 
+impl WorkPoint {
+    /// The Markdown cell: "error, dE drift / cost", or where it diverged.
+    pub(super) fn outcome(&self) -> String {
+        match (self.error, self.diverged_at) {
+            (Some(error), _) => {
+                let drift = self
+                    .energy_drift
+                    .map_or(String::new(), |d| format!(", dE {d:.1e}"));
+                format!("{error:.1e}{drift} / {:.0}", self.ns_per_simulated_second)
+            }
+            (None, Some(step)) => diverged(step),
+            (None, None) => "?".to_owned(),
+        }
+    }
+}
+
 /// Every work scene, step and integrator, in that order.
 pub(super) fn sweep(quick: bool) -> Vec<WorkPoint> {
     let mut points = Vec::new();
@@ -99,16 +115,6 @@ pub(super) fn table(points: &[WorkPoint]) -> Table {
     )
     .across(1);
     for p in points {
-        let outcome = match (p.error, p.diverged_at) {
-            (Some(error), _) => {
-                let drift = p
-                    .energy_drift
-                    .map_or(String::new(), |d| format!(", dE {d:.1e}"));
-                format!("{error:.1e}{drift} / {:.0}", p.ns_per_simulated_second)
-            }
-            (None, Some(step)) => diverged(step),
-            (None, None) => "?".to_owned(),
-        };
         table.row(vec![
             Cell::same(p.scene),
             Cell::same(p.integrator),
@@ -118,7 +124,7 @@ pub(super) fn table(points: &[WorkPoint]) -> Table {
             Cell::csv_option(p.energy_drift),
             Cell::csv(p.ns_per_simulated_second),
             Cell::csv_option(p.diverged_at),
-            Cell::markdown(outcome),
+            Cell::markdown(p.outcome()),
         ]);
     }
     table
