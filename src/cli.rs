@@ -240,11 +240,6 @@ impl std::fmt::Display for Row {
     }
 }
 
-/// One CSV row: the state after `run.step` steps.
-pub fn csv_row(run: &Run) -> String {
-    Row::of_run(run).to_string()
-}
-
 /// Why `simulate` stopped early.
 #[derive(Debug)]
 pub enum SimulateError {
@@ -255,35 +250,62 @@ pub enum SimulateError {
     Mismatch(String),
 }
 
-/// Writes the trajectory to `out`: the header, row 0 (the initial state), then a row per step;
-/// or, with `--hash`, the hash of every step's state.
+/// Where `simulate` writes: the CSV (the header, row 0 for the initial state, a row per step),
+/// or with `--hash` only the hash of the states after each step.
+struct Output<W: Write> {
+    out: BufWriter<W>,
+    hash: Option<TrajectoryHash>,
+}
+
+impl<W: Write> Output<W> {
+    fn new(out: W, hash: bool, initial: &Row) -> io::Result<Self> {
+        let mut output = Self {
+            out: BufWriter::new(out),
+            hash: hash.then(TrajectoryHash::default),
+        };
+        if !hash {
+            writeln!(output.out, "{CSV_HEADER}\n{initial}")?;
+        }
+        Ok(output)
+    }
+
+    /// The state after a step; its row is made only for the CSV.
+    fn step(&mut self, state: &BodyState, row: impl FnOnce() -> Row) -> io::Result<()> {
+        match self.hash.as_mut() {
+            Some(hash) => {
+                hash.add(state);
+                Ok(())
+            }
+            None => writeln!(self.out, "{}", row()),
+        }
+    }
+
+    fn finish(mut self) -> io::Result<()> {
+        if let Some(hash) = self.hash {
+            writeln!(self.out, "{hash}")?;
+        }
+        self.out.flush()
+    }
+}
+
+/// Writes the trajectory to `out` (see [`Output`]).
 pub fn simulate(args: &SimulateArgs, out: impl Write) -> Result<(), SimulateError> {
     if let Some(path) = &args.replay {
         return simulate_replay(args, path, out);
     }
     let mut run = args.run().map_err(SimulateError::Arguments)?;
-    let mut out = BufWriter::new(out);
-    let mut hash = TrajectoryHash::default();
-    let write = |out: &mut BufWriter<_>, line: &str| writeln!(out, "{line}");
-    if !args.hash {
-        write(&mut out, CSV_HEADER).map_err(SimulateError::Output)?;
-        write(&mut out, &csv_row(&run)).map_err(SimulateError::Output)?;
-    }
+    let mut output =
+        Output::new(out, args.hash, &Row::of_run(&run)).map_err(SimulateError::Output)?;
     for _ in 0..args.steps {
         if let Err(diverged) = run.advance() {
-            out.flush().map_err(SimulateError::Output)?;
+            output.out.flush().map_err(SimulateError::Output)?;
             return Err(SimulateError::Diverged(diverged));
         }
-        if args.hash {
-            hash.add(&run.stepper.state);
-        } else {
-            write(&mut out, &csv_row(&run)).map_err(SimulateError::Output)?;
-        }
+        output
+            .step(&run.stepper.state, || Row::of_run(&run))
+            .map_err(SimulateError::Output)?;
     }
-    if args.hash {
-        write(&mut out, &hash.to_string()).map_err(SimulateError::Output)?;
-    }
-    out.flush().map_err(SimulateError::Output)
+    output.finish().map_err(SimulateError::Output)
 }
 
 /// `simulate --replay FILE`: the recorded game stepped again.
@@ -296,19 +318,14 @@ fn simulate_replay(
     let mut run = ReplayRun::new(&replay, args.integrator)
         .map_err(|error| SimulateError::Arguments(format!("{}: {error}", path.display())))?;
     run.stepper.auto = args.auto(run.stepper.auto);
-    let mut out = BufWriter::new(out);
-    let write = |out: &mut BufWriter<_>, line: &str| writeln!(out, "{line}");
-    if args.hash {
-        let hash = run.finish();
-        write(&mut out, &hash.to_string()).map_err(SimulateError::Output)?;
-    } else {
-        write(&mut out, CSV_HEADER).map_err(SimulateError::Output)?;
-        write(&mut out, &Row::of_replay(&run).to_string()).map_err(SimulateError::Output)?;
-        while run.advance().is_some() {
-            write(&mut out, &Row::of_replay(&run).to_string()).map_err(SimulateError::Output)?;
-        }
+    let mut output =
+        Output::new(out, args.hash, &Row::of_replay(&run)).map_err(SimulateError::Output)?;
+    while run.advance().is_some() {
+        output
+            .step(&run.stepper.state, || Row::of_replay(&run))
+            .map_err(SimulateError::Output)?;
     }
-    out.flush().map_err(SimulateError::Output)?;
+    output.finish().map_err(SimulateError::Output)?;
     let as_recorded = args.integrator.is_none() && !args.overrides_auto();
     if as_recorded && run.hash != replay.hash {
         return Err(SimulateError::Mismatch(format!(
