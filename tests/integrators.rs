@@ -417,11 +417,7 @@ fn every_integrator_stays_bounded_or_reports_its_divergence() {
 /// the box near the limit, moving outward at 1000 px/s, leaves it at step 3 of 0.01 s.
 #[test]
 fn a_run_refuses_the_first_step_that_leaves_the_state_limit() {
-    let undamped = SceneParams {
-        linear_damping: 0.0,
-        angular_damping: 0.0,
-        ..SceneParams::tutorial()
-    };
+    let undamped = Scenario::named("undamped").unwrap().params;
     let near_limit = BodyState::from_array([1e12 - 25.0, 0.0, 0.0, 1000.0, 0.0, 0.0]);
     let mut run = Run::new(undamped, near_limit, vec![], Integrator::Rk4, 0.01).unwrap();
     run.advance_by(2).unwrap();

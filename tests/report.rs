@@ -2,17 +2,23 @@
 
 mod common;
 
+use std::ffi::OsStr;
 use std::fs;
-use std::process::Command;
+use std::process::{Command, Output};
+
+/// `report` with `args`, run as a user runs it.
+fn report(args: impl IntoIterator<Item = impl AsRef<OsStr>>) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
+        .arg("report")
+        .args(args)
+        .output()
+        .unwrap()
+}
 
 #[test]
 fn the_quick_report_writes_tables_and_a_plot_that_parse() {
     let out = std::env::temp_dir().join(format!("rubber-band-box-report-{}", std::process::id()));
-    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .args(["report", "--quick", "--out"])
-        .arg(&out)
-        .output()
-        .unwrap();
+    let output = report([OsStr::new("--quick"), OsStr::new("--out"), out.as_os_str()]);
     assert!(
         output.status.success(),
         "{}",
@@ -68,11 +74,13 @@ fn the_quick_report_writes_tables_and_a_plot_that_parse() {
 #[cfg(not(feature = "peers"))]
 #[test]
 fn asking_for_the_peers_without_them_says_how_to_get_them() {
-    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .args(["report", "--quick", "--peers", "--out"])
-        .arg(std::env::temp_dir().join("rubber-band-box-no-peers"))
-        .output()
-        .unwrap();
+    let out = std::env::temp_dir().join("rubber-band-box-no-peers");
+    let output = report([
+        OsStr::new("--quick"),
+        OsStr::new("--peers"),
+        OsStr::new("--out"),
+        out.as_os_str(),
+    ]);
     assert!(!output.status.success());
     let message = String::from_utf8_lossy(&output.stderr);
     assert!(message.contains("--features peers"), "{message}");
@@ -84,11 +92,7 @@ fn quick_report(tag: &str) -> (Vec<Vec<String>>, Vec<Vec<String>>, String) {
         "rubber-band-box-report-{tag}-{}",
         std::process::id()
     ));
-    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .args(["report", "--quick", "--out"])
-        .arg(&out)
-        .output()
-        .unwrap();
+    let output = report([OsStr::new("--quick"), OsStr::new("--out"), out.as_os_str()]);
     assert!(output.status.success());
     let rows = |name: &str| -> Vec<Vec<String>> {
         fs::read_to_string(out.join(name))
@@ -201,13 +205,13 @@ fn the_replay_report_sweeps_every_integrator_over_the_recorded_hand() {
     fs::create_dir_all(&folder).unwrap();
     let file = folder.join("small.jsonl");
     fs::write(&file, common::small_replay().to_bytes()).unwrap();
-    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .args(["report", "--quick", "--out"])
-        .arg(&folder)
-        .arg("--replay")
-        .arg(&file)
-        .output()
-        .unwrap();
+    let output = report([
+        OsStr::new("--quick"),
+        OsStr::new("--out"),
+        folder.as_os_str(),
+        OsStr::new("--replay"),
+        file.as_os_str(),
+    ]);
     assert!(
         output.status.success(),
         "{}",
@@ -233,11 +237,7 @@ fn the_replay_report_sweeps_every_integrator_over_the_recorded_hand() {
 
     let bad = folder.join("bad.jsonl");
     fs::write(&bad, "{}\n").unwrap();
-    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .args(["report", "--replay"])
-        .arg(&bad)
-        .output()
-        .unwrap();
+    let output = report([OsStr::new("--replay"), bad.as_os_str()]);
     assert_eq!(output.status.code(), Some(2));
     let message = String::from_utf8_lossy(&output.stderr);
     assert!(
