@@ -6,6 +6,7 @@
 use bevy::math::DVec2;
 use bevy::prelude::Component;
 
+use super::maths;
 use super::param_error::ParamError;
 
 /// Linear state: where the centre of mass is and how fast it moves.
@@ -101,7 +102,7 @@ pub const STATE_LIMIT: f64 = 1e12;
 /// Rotates `v` counter-clockwise by `angle` radians, written out as the tutorial's
 /// `rotateCopy` does so that the two round the same way.
 pub fn rotate(v: DVec2, angle: f64) -> DVec2 {
-    let (sin, cos) = angle.sin_cos();
+    let (sin, cos) = maths::sin_cos(angle);
     DVec2::new(cos * v.x - sin * v.y, sin * v.x + cos * v.y)
 }
 

@@ -3,13 +3,14 @@
 //! The Bevy plugins, the CLI, the report, the tests and the benchmarks all call into this
 //! module, so that there is one implementation of each force law, each integration step and
 //! each named scene. Its modules import in one direction, from the leaves up:
-//! `param_error` → `body` → `forces` → `energy`, `scene` → `integrators` → `stepper` →
-//! `scenario`.
+//! `param_error`, `maths` → `body` → `forces` → `energy`, `scene` → `integrators` → `stepper`
+//! → `scenario`.
 
 pub mod body;
 pub mod energy;
 pub mod forces;
 pub mod integrators;
+pub mod maths;
 pub mod param_error;
 pub mod scenario;
 pub mod scene;

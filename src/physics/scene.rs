@@ -6,6 +6,7 @@ use bevy::prelude::Resource;
 
 use super::body::MassProperties;
 use super::forces::{BandEnds, ForceModel};
+use super::maths;
 use super::param_error::ParamError;
 
 /// The tutorial runs one update per frame at this rate; its per-frame constants convert to
@@ -45,7 +46,7 @@ impl SceneParams {
             size: DVec2::new(60.0, 60.0),
             stiffness: 0.002 * f * f,
             linear_damping: 0.05 * f,
-            angular_damping: -TUTORIAL_ANGULAR_FACTOR.ln() * f,
+            angular_damping: -maths::ln(TUTORIAL_ANGULAR_FACTOR) * f,
             step_rate_hz: 100.0,
         }
     }

@@ -18,6 +18,7 @@ use super::engine_state::{
 };
 use crate::physics::body::BodyState;
 use crate::physics::forces::{ForceModel, Forces};
+use crate::physics::maths;
 
 pub const STAGES: usize = 12;
 
@@ -272,7 +273,7 @@ pub fn integrate(
             let mut factor = if error == 0.0 {
                 MAX_FACTOR
             } else {
-                (SAFETY * error.powf(ERROR_EXPONENT)).min(MAX_FACTOR)
+                (SAFETY * maths::powf(error, ERROR_EXPONENT)).min(MAX_FACTOR)
             };
             if rejected {
                 factor = factor.min(1.0);
@@ -280,7 +281,7 @@ pub fn integrate(
             rejected = false;
             h *= factor;
         } else {
-            h *= (SAFETY * error.powf(ERROR_EXPONENT)).max(MIN_FACTOR);
+            h *= (SAFETY * maths::powf(error, ERROR_EXPONENT)).max(MIN_FACTOR);
             rejected = true;
         }
     }

@@ -6,6 +6,7 @@ use bevy::math::DVec2;
 
 use crate::physics::body::{AngularState, BodyState, LinearState};
 use crate::physics::forces::ForceModel;
+use crate::physics::maths;
 
 /// x, y, cos θ, sin θ, θ, vx, vy, ω, and the energy damping took out (from zero).
 pub const COMPONENTS: usize = 9;
@@ -20,7 +21,7 @@ pub const DISSIPATED: usize = 8;
 pub const RELATIVE_TOLERANCE: f64 = 1e-13;
 
 pub fn pack(state: &BodyState) -> Components {
-    let (sin, cos) = state.angular.orientation.sin_cos();
+    let (sin, cos) = maths::sin_cos(state.angular.orientation);
     [
         state.linear.position.x,
         state.linear.position.y,

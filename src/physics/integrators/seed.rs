@@ -2,6 +2,7 @@
 
 use crate::physics::body::BodyState;
 use crate::physics::forces::{ForceModel, Forces};
+use crate::physics::maths;
 
 /// The tutorial's update (its section 5 and appendix), in its order, at a step of `dt`
 /// instead of one frame: the angular damping scales ω by exp(−c·dt) (0.98 at 0.01 s); the
@@ -11,7 +12,7 @@ use crate::physics::forces::{ForceModel, Forces};
 /// `addForce` scales each force before summing.
 pub fn tutorial_update(state: &mut BodyState, model: &ForceModel, start: Forces, dt: f64) {
     let mass = &model.mass;
-    state.angular.angular_velocity *= (-model.angular_damping * dt).exp();
+    state.angular.angular_velocity *= maths::exp(-model.angular_damping * dt);
     let acceleration =
         start.applied.force * mass.inverse_mass() + start.damping.force * mass.inverse_mass();
     let angular_acceleration = start.applied.torque / mass.inertia();

@@ -20,6 +20,7 @@ use super::engine_state::{
 };
 use crate::physics::body::BodyState;
 use crate::physics::forces::ForceModel;
+use crate::physics::maths;
 
 /// The highest order the engine can be asked for.
 pub const MAX_ORDER: usize = 24;
@@ -128,7 +129,7 @@ pub fn integrate(
             let mut h = f64::INFINITY;
             for n in [top - 1, top] {
                 if terms[n] > 0.0 {
-                    h = h.min((tolerance / terms[n]).powf(1.0 / n as f64));
+                    h = h.min(maths::powf(tolerance / terms[n], 1.0 / n as f64));
                 }
             }
             h * SAFETY
