@@ -8,6 +8,8 @@ use bevy::prelude::*;
 
 use crate::overlays::Overlays;
 use crate::physics::{Integrator, SceneParams};
+#[cfg(not(target_arch = "wasm32"))]
+use crate::recording::ReplayStatus;
 use crate::recording::SaveReplay;
 use crate::schedule::GameSystems;
 use crate::simulation::ResetScene;
@@ -24,6 +26,7 @@ impl Plugin for ControlsPlugin {
                 single_step.run_if(input_just_pressed(SINGLE_STEP)),
                 reset_scene.run_if(input_just_pressed(RESET)),
                 save_replay.run_if(input_just_pressed(SAVE)),
+                open_replay.run_if(input_just_pressed(OPEN)),
                 tune_parameters,
                 toggle_overlays,
             )
@@ -49,6 +52,7 @@ pub const VECTORS: KeyCode = KeyCode::KeyV;
 pub const TRAIL: KeyCode = KeyCode::KeyT;
 pub const HUD: KeyCode = KeyCode::KeyH;
 pub const SAVE: KeyCode = KeyCode::KeyS;
+pub const OPEN: KeyCode = KeyCode::KeyO;
 
 pub const STIFFNESS_RANGE: (f64, f64) = (1e-2, 1e12);
 pub const TIME_SCALE_RANGE: (f64, f64) = (1.0 / 16.0, 16.0);
@@ -67,7 +71,7 @@ pub struct Control {
 }
 
 /// Every key the game reads, in the order the help line lists them.
-pub const CONTROLS: [Control; 11] = [
+pub const CONTROLS: [Control; 12] = [
     Control {
         keys: &[PAUSE],
         label: "Space",
@@ -132,17 +136,25 @@ pub const CONTROLS: [Control; 11] = [
         keys: &[SAVE],
         label: "S",
         name: "save",
-        effect: "save the game so far as a replay (to `--record`'s file, else `replay-<time>.jsonl`; the HUD shows the name)",
+        effect: "save the game so far as a replay (to `--record`'s file, else `replay-<time>.jsonl`; in the browser a download; the HUD shows the name)",
+    },
+    Control {
+        keys: &[OPEN],
+        label: "O",
+        name: "open",
+        effect: "play a replay file: in the browser a file chooser; on the desktop drop the file on the window (or `play --replay FILE`); dropping works in the browser too",
     },
 ];
 
 /// The HUD's help line: "drag: pull  Space: pause  N: step ...".
+/// Each item's spaces are non-breaking, so that a narrow window wraps the line between items,
+/// never inside one.
 pub fn help_line() -> String {
     let keys: Vec<String> = CONTROLS
         .iter()
-        .map(|control| format!("{}: {}", control.label, control.name))
+        .map(|control| format!("{}: {}", control.label, control.name).replace(' ', "\u{a0}"))
         .collect();
-    format!("drag: pull  {}", keys.join("  "))
+    format!("drag:\u{a0}pull  {}", keys.join("  "))
 }
 
 /// The window title's reminder of the keys: "Space N R I [ ] ...".
@@ -182,6 +194,18 @@ fn reset_scene(mut commands: Commands) {
 /// The recorder saves and says where ([`crate::recording`]).
 fn save_replay(mut commands: Commands) {
     commands.trigger(SaveReplay);
+}
+
+/// In the browser, the file chooser (the playback opens what is chosen); on the desktop,
+/// where dropping a file on the window opens it, the HUD says so.
+#[cfg(target_arch = "wasm32")]
+fn open_replay() {
+    crate::web::choose_replay_file();
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn open_replay(mut status: ResMut<ReplayStatus>) {
+    status.0 = Some("drop a replay file on the window to play it".to_owned());
 }
 
 /// k, the time scale and the step rate move by factors, so that a player reaches the hard

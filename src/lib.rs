@@ -11,7 +11,9 @@
 //! - [`hud`]: the heads-up display, its energy graph and the window title (headless, but the
 //!   graph, which needs gizmos);
 //! - [`view`] and [`draw`]: camera, interpolation and drawing (need a window);
-//! - [`cli`], [`report`], [`references`] and [`peers`]: the native tools on top of the core.
+//! - [`cli`], [`report`], [`references`] and [`peers`]: the native tools on top of the core;
+//!   `web`, in the browser only: the page's side (downloads, files opened, what the page
+//!   reads back), a leaf the recorder and the playback call.
 //!
 //! The plugins are wired here, once: [`GameLogicPlugin`] is the game without a screen (what
 //! the headless tests run), [`GamePlugin`] adds the screen.
@@ -38,6 +40,8 @@ pub mod simulation;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod timing;
 pub mod view;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
 
 use bevy::prelude::*;
 

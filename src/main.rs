@@ -88,6 +88,8 @@ fn play(args: PlayArgs) -> ExitCode {
         eprintln!("error: {error}");
         return ExitCode::from(2);
     }
+    // A replay (native only) may start with another.
+    #[cfg_attr(target_arch = "wasm32", allow(unused_mut))]
     let mut integrator = args.integrator.unwrap_or_default();
     let mut app = App::new();
     #[cfg(not(target_arch = "wasm32"))]

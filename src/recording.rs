@@ -22,7 +22,7 @@ pub struct RecordingPlugin;
 impl Plugin for RecordingPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Recorder>()
-            .init_resource::<SaveStatus>()
+            .init_resource::<ReplayStatus>()
             .add_observer(note_reset)
             .add_observer(save_on_request)
             .add_systems(
@@ -70,14 +70,24 @@ impl Recorder {
         }
     }
 
+    /// A new recording from the next step on (a replay opened in the game), to the same
+    /// target.
+    pub fn restart(&mut self) {
+        *self = Self {
+            #[cfg(not(target_arch = "wasm32"))]
+            target: self.target.take(),
+            ..default()
+        };
+    }
+
     pub fn steps(&self) -> u64 {
         self.replay.as_ref().map_or(0, |replay| replay.steps)
     }
 }
 
-/// What the latest save did, for the HUD.
+/// What the latest save or opened replay did, for the HUD.
 #[derive(Resource, Debug, Default, Clone, PartialEq)]
-pub struct SaveStatus(pub Option<String>);
+pub struct ReplayStatus(pub Option<String>);
 
 /// Save the game so far (the save control).
 #[derive(Event, Debug, Clone, Copy, Default)]
@@ -133,16 +143,27 @@ fn note_step_result(
 
 /// The save control: to `--record`'s file if there is one, else to a new file named by the
 /// time, in the working folder.
-fn save_on_request(_save: On<SaveReplay>, recorder: Res<Recorder>, mut status: ResMut<SaveStatus>) {
+fn save_on_request(
+    _save: On<SaveReplay>,
+    recorder: Res<Recorder>,
+    mut status: ResMut<ReplayStatus>,
+) {
     #[cfg(not(target_arch = "wasm32"))]
     {
         let path = recorder.target.clone().unwrap_or_else(timestamped_name);
         status.0 = Some(save(&recorder, &path).unwrap_or_else(|message| message));
     }
+    // In the browser: offered as a download.
     #[cfg(target_arch = "wasm32")]
     {
-        let _ = recorder;
-        status.0 = Some("saving a replay from the browser is not built yet".to_owned());
+        status.0 = Some(match recorder.replay.as_ref() {
+            None => "nothing to save yet: no step has run".to_owned(),
+            Some(replay) => {
+                let text = String::from_utf8_lossy(&replay.to_bytes()).into_owned();
+                let name = crate::web::download_replay(&text);
+                format!("saved {} steps as the download {name}", replay.steps)
+            }
+        });
     }
 }
 

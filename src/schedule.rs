@@ -4,13 +4,13 @@
 //!
 //! A frame, in order:
 //! 1. `RunFixedMainLoop`, before the fixed loop: [`GameSystems::Input`] (mouse, touch and
-//!    focus to the band entity), then [`GameSystems::Controls`] (keys: pause, step, reset,
+//!    focus to the band entity; a replay file opened), then [`GameSystems::Controls`] (keys: pause, step, reset,
 //!    integrator, parameters, overlays), then [`GameSystems::ApplySettings`] (the fixed
 //!    clock's step from the scene's step rate), so that all of it acts on the very next step;
 //! 2. `FixedUpdate`, zero or more times: the physics' own chain, accumulate, integrate,
 //!    publish (`simulation::PhysicsSystems`), then the HUD's energy history;
 //! 3. `RunFixedMainLoop`, after the fixed loop: the drawn state interpolated between the last
-//!    two steps (`view`);
+//!    two steps (`view`), and the end of a playback said (`playback`);
 //! 4. `Update`: the HUD's text and the window title, then the drawing.
 
 use bevy::prelude::*;
@@ -18,7 +18,7 @@ use bevy::prelude::*;
 /// The game's work before the fixed loop, in this order each frame.
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum GameSystems {
-    /// The pointer: mouse, touch and focus input to the band entity.
+    /// The pointer: mouse, touch and focus input to the band entity; replay files opened.
     Input,
     /// The keys: each writes the resource it controls, or triggers a reset.
     Controls,

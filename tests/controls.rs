@@ -179,7 +179,8 @@ fn readme_the_help_line_and_the_title_name_every_control_as_the_list_does() {
             .collect();
         let row = format!("| {} | {} |", keys.join(" / "), control.effect);
         assert!(readme.contains(&row), "README lacks the row\n{row}");
-        assert!(help.contains(&format!("{}: {}", control.label, control.name)));
+        let item = format!("{}: {}", control.label, control.name).replace(' ', "\u{a0}");
+        assert!(help.contains(&item), "{help}");
         assert!(hint.contains(control.label));
     }
     let mut game = Game::stepping();

@@ -32,7 +32,7 @@ fn readings() -> HudReadings {
         ledger: EnergyLedger::starting_at(0.0),
         residual: 0.0,
         recorded_steps: 150,
-        save_status: None,
+        replay_status: None,
         playback: None,
     }
 }
@@ -55,7 +55,7 @@ fn lines_say_what_the_readings_hold() {
     assert_eq!(HudLine::Replay.text(&r), "recorded 150 steps");
     let playing = HudReadings {
         playback: Some((40, 1125)),
-        save_status: Some("saved 150 steps to a.jsonl".to_owned()),
+        replay_status: Some("saved 150 steps to a.jsonl".to_owned()),
         ..r.clone()
     };
     assert_eq!(

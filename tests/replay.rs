@@ -13,8 +13,8 @@ use rubber_band_box::controls::{
     FASTER, FEWER_STEPS, MORE_STEPS, PAUSE, RESET, SAVE, SINGLE_STEP, SOFTER, STIFFER,
 };
 use rubber_band_box::physics::BodyState;
-use rubber_band_box::playback::Playback;
-use rubber_band_box::recording::{Recorder, SaveStatus};
+use rubber_band_box::playback::{self, Playback, PlaybackEnd};
+use rubber_band_box::recording::{Recorder, ReplayStatus};
 use rubber_band_box::replay::run::ReplayRun;
 use rubber_band_box::replay::save::write_atomically;
 use rubber_band_box::replay::{MAX_LINE_BYTES, Replay, TrajectoryHash};
@@ -197,7 +197,7 @@ fn the_save_key_and_the_games_end_write_a_replay_that_loads() {
     game.update(30);
     game.tap_key(SAVE);
     game.update(1);
-    let status = game.world().resource::<SaveStatus>().0.clone().unwrap();
+    let status = game.world().resource::<ReplayStatus>().0.clone().unwrap();
     assert_eq!(status, format!("saved 30 steps to {}", path.display()));
     assert!(game.hud(HudLine::Replay).contains(&status));
     assert_eq!(read(&path).steps, 30);
@@ -220,7 +220,7 @@ fn a_save_that_cannot_be_written_says_why_and_the_game_plays_on() {
     game.update(5);
     game.tap_key(SAVE);
     game.update(5);
-    let status = game.world().resource::<SaveStatus>().0.clone().unwrap();
+    let status = game.world().resource::<ReplayStatus>().0.clone().unwrap();
     assert!(
         status.starts_with(&format!("cannot save {}: ", path.display())),
         "{status}"
@@ -472,7 +472,122 @@ proptest! {
         prop_assert_eq!(bits(&states[..played.len()]), bits(&played));
         let recorded_again = saved_replay(&mut again);
         prop_assert_eq!(&recorded_again.records[..replay.records.len()], &replay.records[..]);
+        // And the game says so at the end.
+        let ended = again.world().resource::<Playback>().ended;
+        prop_assert_eq!(ended, Some(PlaybackEnd::Finished {
+            steps: replay.steps,
+            hash: replay.hash,
+            recorded: replay.hash,
+        }));
     }
+}
+
+/// Plays the game until its playback ends.
+fn until_the_playback_ends(game: &mut Game) {
+    for _ in 0..100_000 {
+        if !game.world().resource::<Playback>().is_playing() {
+            return;
+        }
+        game.update(1);
+    }
+    panic!("the playback never ended");
+}
+
+/// A replay opened while a game runs (dropped on the window, or chosen in the browser) starts
+/// over from the replay's start, whatever the game had done, and steps to its bits; a replay
+/// whose recorded hash is not the game's says so.
+#[test]
+fn a_replay_opened_mid_game_plays_from_its_start_and_says_whether_it_matched() {
+    let mut recorded = recorded_game();
+    play(
+        &mut recorded,
+        &[Hand::Key(2), Hand::Key(2), Hand::Press(150.0, 100.0)],
+    );
+    recorded.update(40);
+    play(&mut recorded, &[Hand::Move(-100.0, 50.0), Hand::Key(0)]);
+    recorded.update(40);
+    let played = recorded.world().resource::<Trajectory>().0.clone();
+    let replay = saved_replay(&mut recorded);
+
+    let mut game = recorded_game();
+    play(
+        &mut game,
+        &[Hand::Key(1), Hand::Press(-200.0, 0.0), Hand::Key(3)],
+    );
+    game.update(30);
+    let before = game.world().resource::<Trajectory>().0.len();
+    playback::open(game.world(), replay.clone());
+    until_the_playback_ends(&mut game);
+    let states = game.world().resource::<Trajectory>().0[before..].to_vec();
+    assert_eq!(bits(&states[..played.len()]), bits(&played));
+    assert_eq!(
+        game.world().resource::<Playback>().ended,
+        Some(PlaybackEnd::Finished {
+            steps: replay.steps,
+            hash: replay.hash,
+            recorded: replay.hash
+        })
+    );
+
+    let mut tampered = replay.clone();
+    tampered.hash = TrajectoryHash(1);
+    playback::open(game.world(), tampered);
+    until_the_playback_ends(&mut game);
+    let Some(PlaybackEnd::Finished { hash, recorded, .. }) =
+        game.world().resource::<Playback>().ended
+    else {
+        panic!("the playback did not finish");
+    };
+    assert_eq!((hash, recorded), (replay.hash, TrajectoryHash(1)));
+    let said = PlaybackEnd::Finished {
+        steps: 1,
+        hash,
+        recorded,
+    }
+    .describe();
+    assert!(said.contains("DIFFER"), "{said}");
+}
+
+/// A file dropped on the window plays if it is a replay, and is refused with the reason in
+/// the HUD's status if not, the game playing on.
+#[test]
+fn a_dropped_file_plays_or_is_refused_with_the_reason() {
+    let mut recorded = recorded_game();
+    play(&mut recorded, &[Hand::Press(150.0, 100.0)]);
+    recorded.update(20);
+    let replay = saved_replay(&mut recorded);
+    let good = scratch("dropped.jsonl");
+    std::fs::write(&good, replay.to_bytes()).unwrap();
+    let bad = scratch("dropped.txt");
+    std::fs::write(&bad, "not a replay\n").unwrap();
+
+    let mut game = recorded_game();
+    let window = game.window;
+    let drop = |game: &mut Game, path: &PathBuf| {
+        game.world()
+            .write_message(bevy::window::FileDragAndDrop::DroppedFile {
+                window,
+                path_buf: path.clone(),
+            });
+        game.update(1);
+    };
+    drop(&mut game, &bad);
+    let status = game.world().resource::<ReplayStatus>().0.clone().unwrap();
+    assert!(
+        status.starts_with("cannot play") && status.contains("line 1"),
+        "{status}"
+    );
+    assert!(!game.world().resource::<Playback>().is_playing());
+
+    drop(&mut game, &good);
+    let status = game.world().resource::<ReplayStatus>().0.clone().unwrap();
+    assert!(status.starts_with("playing"), "{status}");
+    assert!(game.world().resource::<Playback>().is_playing());
+    until_the_playback_ends(&mut game);
+    assert!(matches!(
+        game.world().resource::<Playback>().ended,
+        Some(PlaybackEnd::Finished { hash, recorded, .. }) if hash == recorded
+    ));
 }
 
 /// A press during playback takes over: the playback ends, the band is the pointer's.
@@ -503,6 +618,10 @@ fn a_press_takes_over_a_playback() {
     again.press_at(there);
     again.update(1);
     assert!(!again.world().resource::<Playback>().is_playing());
+    assert!(matches!(
+        again.world().resource::<Playback>().ended,
+        Some(PlaybackEnd::TakenOver { step }) if step > 0
+    ));
     let band = again.the_band();
     assert!(
         band.ends.anchor.distance(there) < 1e-4,
@@ -518,4 +637,83 @@ fn a_press_takes_over_a_playback() {
 #[test]
 fn a_record_takes_at_most_48_bytes() {
     assert!(std::mem::size_of::<rubber_band_box::replay::Record>() <= 48);
+}
+
+/// The replay the browser test steps inside the page (`tests/fixtures/cross-platform.jsonl`),
+/// whose recorded hash is the one stepped here: every integrator in turn, each at a stiffness
+/// it holds (up to 1e6), a hand that circles, lets go and grabs another corner, a reset, a
+/// mass change and a step-rate change. It calls every transcendental function the core has.
+fn cross_platform_replay() -> Replay {
+    use rubber_band_box::physics::{AutoSettings, BandEnds, Integrator, SceneParams};
+    use rubber_band_box::replay::Settings;
+
+    let tutorial = SceneParams::tutorial();
+    let start = Settings::new(&tutorial, 0.01, Integrator::Auto);
+    let mut replay = Replay::start(
+        "tutorial",
+        start,
+        AutoSettings::default(),
+        BodyState::default(),
+    );
+    let stiffness = [20.0, 2e3, 5e3, 2e4, 1e6, 1e3, 1e5];
+    let corners = [(30.0, 30.0), (-30.0, 30.0), (-30.0, -30.0), (30.0, -30.0)];
+    let mut settings = start;
+    for step in 0..700_u64 {
+        let (phase, within) = ((step / 100) as usize, step % 100);
+        if within == 0 {
+            settings.integrator = Integrator::ALL[phase];
+            settings.stiffness = stiffness[phase];
+        }
+        if step == 250 {
+            settings.mass = 2.0;
+        }
+        if step == 350 {
+            replay.push_reset();
+        }
+        if step == 450 {
+            settings.step_rate_hz = 240.0;
+            settings.dt = Duration::from_secs_f64(1.0 / 240.0).as_secs_f64();
+        }
+        replay.push_settings(settings);
+        let t = step as f64 * 0.05;
+        let (x, y) = corners[phase % 4];
+        let (u, v) = corners[(phase + 2) % 4];
+        let band = match within {
+            0..60 => Some(BandEnds {
+                local_point: DVec2::new(x, y),
+                anchor: DVec2::new(150.0 * t.cos(), 100.0 * (2.0 * t).sin()),
+            }),
+            60..80 => None,
+            _ => Some(BandEnds {
+                local_point: DVec2::new(u, v),
+                anchor: DVec2::new(250.0, -150.0),
+            }),
+        };
+        replay.push_step(band, &BodyState::default());
+    }
+    let mut run = ReplayRun::new(&replay, None).unwrap();
+    let hash = run.finish();
+    assert_eq!(run.refused, None, "the fixture stays inside every bound");
+    replay.hash = hash;
+    replay
+}
+
+/// The fixture is the script above stepped natively, so its recorded hash is this platform's;
+/// the browser test steps it in the page and must read back the same hash
+/// (`.ci/web/browser-test.mjs`). A change to the core that moves a bit fails here first:
+/// regenerate with `UPDATE_FIXTURES=1 cargo test --test replay cross_platform`.
+#[test]
+fn the_cross_platform_fixture_is_its_script_stepped_here() {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/cross-platform.jsonl");
+    let replay = cross_platform_replay();
+    if std::env::var_os("UPDATE_FIXTURES").is_some() {
+        write_atomically(&path, |file| replay.write(file)).unwrap();
+    }
+    let on_disk = Replay::read_file(&path).unwrap();
+    assert_eq!(
+        on_disk, replay,
+        "regenerate the fixture if the change is meant"
+    );
+    assert_eq!(on_disk.hash, replayed(&on_disk).1);
 }

@@ -161,21 +161,23 @@ fn the_quick_report_bears_out_the_claims_readme_makes() {
     };
     for rate in ["64", "100"] {
         let k = |i: &str| largest_k(i, rate);
-        assert!(k("euler") < k("symplectic").min(k("seed")), "{rate} Hz");
-        assert!(k("symplectic").max(k("seed")) < k("verlet"), "{rate} Hz");
-        assert!(k("verlet") < k("rk4") && k("rk4").is_finite(), "{rate} Hz");
+        let w = |i: &str| omega_dt(i, rate);
         assert!(
             k("implicit").is_infinite() && k("auto").is_infinite(),
             "{rate} Hz"
         );
-        // The stability limits in ω·dt of the stiffest mode, 2√(k/m) at a corner: 2 for
-        // symplectic Euler, up to twice RK4's 2.83 once the box hangs on the band's line.
-        assert!(
-            (omega_dt("symplectic", rate) - 2.0).abs() < 0.2,
-            "{rate} Hz"
-        );
-        let rk4 = omega_dt("rk4", rate);
+        // In ω·dt of the stiffest mode, 2√(k/m) at a corner: explicit Euler holds only while
+        // damping outweighs its growth; the three second-order symplectic steps share the
+        // linear limit of 2 (lowered by the box's swing); RK4's is 2.83, up to twice that once
+        // the box hangs on the band's line, where the mode is half as fast.
+        assert!(w("euler") < 0.5, "{rate} Hz: {}", w("euler"));
+        let symplectic = ["symplectic", "verlet", "seed"].map(w);
+        for limit in symplectic {
+            assert!((1.5..=2.2).contains(&limit), "{rate} Hz: {symplectic:?}");
+        }
+        let rk4 = w("rk4");
         assert!((2.78..=2.0 * 2.83).contains(&rk4), "{rate} Hz: {rk4}");
+        assert!(symplectic.iter().all(|&limit| limit < rk4), "{rate} Hz");
     }
 
     let ledger = markdown

@@ -2,14 +2,22 @@
 // page starts without console errors and draws the box, then drags the band with the mouse
 // and checks that the band is drawn while pressed and that the box has moved and turned; the
 // HUD is drawn, and the H key hides it.
+// Replays across platforms: the page steps a fixed replay (tests/fixtures/cross-platform.jsonl)
+// to the hash recorded natively; a game played in the page is saved as a download that the
+// native build (NATIVE_BINARY, `simulate --replay FILE --hash`) steps to the page's hash; and
+// the fixture opened in the page with the O key plays back to its recorded hash.
 // Screenshots go to site/screens/. Run: node .ci/web/browser-test.mjs [site-dir]
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
 import http from "node:http";
 import fs from "node:fs";
 import path from "node:path";
+import { execFileSync } from "node:child_process";
 
 const site = path.resolve(process.argv[2] ?? "site");
+const fixture = path.resolve("tests/fixtures/cross-platform.jsonl");
+// A replay's recorded hash is on its last line, the end record.
+const recordedHash = (text) => JSON.parse(text.trim().split("\n").at(-1)).hash;
 const screens = path.join(site, "screens");
 fs.mkdirSync(screens, { recursive: true });
 
@@ -134,6 +142,55 @@ try {
   check(moved > 20, `the box moved (${moved.toFixed(1)} px)`);
   check(before && before.fill > 0.95 && after.fill < 0.95,
     `the box turned (fills ${before?.fill.toFixed(2)} of its bounding box, then as little as ${after.fill.toFixed(2)})`);
+
+  // The fixture stepped inside the page, with the core compiled to wasm.
+  const fixtureText = fs.readFileSync(fixture, "utf8");
+  const nativeHash = recordedHash(fixtureText);
+  const inPage = await page.evaluate((text) => window.rubberBandBox?.replayHash(text), fixtureText);
+  check(inPage === nativeHash, `the fixture replay steps in the page to the native bits (hash ${inPage}, native ${nativeHash})`);
+
+  // A stiffer band, another integrator, a second pull; then S saves the game as a download.
+  for (const key of ["]", "]", "i"]) await page.keyboard.press(key);
+  await page.mouse.move(width / 2 - 300, height / 2 + 200);
+  await page.mouse.down();
+  for (let i = 1; i <= 8; i++) {
+    await page.mouse.move(width / 2 - 300 + 40 * i, height / 2 + 200 - 30 * i);
+    await page.waitForTimeout(40);
+  }
+  await page.mouse.up();
+  await page.waitForTimeout(300);
+  const [download] = await Promise.all([page.waitForEvent("download", { timeout: 10000 }), page.keyboard.press("s")]);
+  const saved = path.join(screens, "browser-recorded.jsonl");
+  await download.saveAs(saved);
+  const browserHash = recordedHash(fs.readFileSync(saved, "utf8"));
+  const steps = JSON.parse(fs.readFileSync(saved, "utf8").trim().split("\n").at(-1)).steps;
+  check(download.suggestedFilename().match(/^replay-\d+\.jsonl$/) && steps > 100,
+    `S downloads the game as ${download.suggestedFilename()} (${steps} steps, hash ${browserHash})`);
+  const native = process.env.NATIVE_BINARY;
+  if (native) {
+    let stepped = "";
+    try {
+      stepped = execFileSync(native, ["simulate", "--replay", saved, "--hash"], { encoding: "utf8" }).trim();
+    } catch (error) {
+      stepped = `exit ${error.status}: ${String(error.stderr).trim()}`;
+    }
+    check(stepped === browserHash, `the browser's recording steps natively to the same bits (native ${stepped})`);
+  } else {
+    check(process.env.CI !== "true", "NATIVE_BINARY is not set: the browser's recording was not stepped natively");
+  }
+
+  // O opens a file chooser; the fixture chosen plays back in the page to its recorded bits.
+  const [chooser] = await Promise.all([page.waitForEvent("filechooser", { timeout: 10000 }), page.keyboard.press("o")]);
+  await chooser.setFiles(fixture);
+  await page.waitForTimeout(1500);
+  await page.keyboard.press("h");
+  await shot("playback");
+  const ended = await page.waitForFunction(() => window.rubberBandBox?.playback, null, { timeout: 120000 })
+    .then((handle) => handle.jsonValue()).catch(() => null);
+  check(ended?.matched === true && ended?.hash === nativeHash,
+    `the fixture opened in the page plays back to its recorded bits (${JSON.stringify(ended)})`);
+  await shot("playback-over");
+
   check(errors.length === 0, `no console errors${errors.length ? ": " + errors.join(" | ") : ""}`);
   console.log(`first frame: ${firstFrameMs} ms after navigation, ${firstFrameBytes} bytes transferred`);
 } finally {

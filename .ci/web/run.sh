@@ -3,6 +3,7 @@
 # npm packages the test uses (never a downloaded browser), then runs it.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/rubber-band-box/target}"
 bash .ci/web/build.sh site
 
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -25,6 +26,9 @@ fi
 if ! (cd .ci/web && npm install --no-audit --no-fund --silent); then
     skip "the npm packages could not be installed"
 fi
+# The native build that steps the page's recording (`cargo test` has built it already).
+cargo build --quiet --bin rubber_band_box
+export NATIVE_BINARY="$CARGO_TARGET_DIR/debug/rubber_band_box"
 start=$(date +%s)
 node .ci/web/browser-test.mjs site
 echo "browser test: $(( $(date +%s) - start )) s"

@@ -21,7 +21,7 @@ use crate::physics::{
     AngularState, Energies, EnergyLedger, Integrator, LinearState, MassProperties, SceneParams,
 };
 use crate::playback::Playback;
-use crate::recording::{Recorder, SaveStatus};
+use crate::recording::{Recorder, ReplayStatus};
 use crate::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
 pub use history::EnergyHistory;
 
@@ -119,7 +119,10 @@ impl HudLine {
                 let mut line = format!(
                     "step {:.2} ms ({} Hz)  time x{}  t {:.2} s  {:.0} fps",
                     1e3 / r.step_rate_hz,
-                    r.step_rate_hz,
+                    // The clock counts whole nanoseconds: 240 Hz steps at 239.99998 Hz.
+                    format!("{:.2}", r.step_rate_hz)
+                        .trim_end_matches('0')
+                        .trim_end_matches('.'),
                     r.time_scale,
                     r.simulated_seconds,
                     r.frames_per_second
@@ -160,7 +163,7 @@ impl HudLine {
                 if let Some((played, steps)) = r.playback {
                     line = format!("replay: step {played} of {steps} (press to take over)  {line}");
                 }
-                if let Some(status) = &r.save_status {
+                if let Some(status) = &r.replay_status {
                     line += &format!("  {status}");
                 }
                 line
@@ -205,7 +208,7 @@ pub struct HudReadings {
     pub residual: f64,
     /// Steps in the recording so far, and what the latest save said.
     pub recorded_steps: u64,
-    pub save_status: Option<String>,
+    pub replay_status: Option<String>,
     /// While a replay plays back: (steps played, steps in it).
     pub playback: Option<(u64, u64)>,
 }
@@ -221,7 +224,7 @@ pub struct HudSources<'w, 's> {
     diagnostics: Res<'w, DiagnosticsStore>,
     history: Res<'w, EnergyHistory>,
     recorder: Res<'w, Recorder>,
-    save_status: Res<'w, SaveStatus>,
+    replay_status: Res<'w, ReplayStatus>,
     playback: Res<'w, Playback>,
     boxes: Query<
         'w,
@@ -270,7 +273,7 @@ impl HudSources<'_, '_> {
             ledger: self.books.ledger,
             residual: self.books.residual,
             recorded_steps: self.recorder.steps(),
-            save_status: self.save_status.0.clone(),
+            replay_status: self.replay_status.0.clone(),
             playback: self.playback.progress(),
         }
     }

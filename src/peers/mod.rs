@@ -8,6 +8,7 @@ pub mod avian;
 pub mod measure;
 pub mod ours;
 pub mod rapier;
+pub mod replay;
 
 use std::time::Duration;
 

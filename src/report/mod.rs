@@ -79,11 +79,13 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
         let recorded = crate::replay::Replay::read_file(path).map_err(BadInput)?;
         let points = replay::sweep(&recorded, quick);
         let name = path.display().to_string();
-        return write(
-            &args.out,
-            &[replay::table(&recorded, &name, &points)],
-            started,
-        );
+        #[allow(unused_mut)]
+        let mut tables = vec![replay::table(&recorded, &name, &points)];
+        #[cfg(feature = "peers")]
+        if args.peers {
+            tables.push(peers::replay_table(&recorded, quick));
+        }
+        return write(&args.out, &tables, started);
     }
 
     let work = work_precision::sweep(quick);

@@ -225,3 +225,44 @@ fn stiffness_side_by_side(cases: &[StiffCase], quick: bool) -> (Table, [Vec<Line
         .collect();
     (table, [cost, error])
 }
+
+/// `report --replay FILE --peers`: the contenders on the recorded hand at the recorded rate
+/// and finer, against the replay sweep's reference (`peers_replay.csv`).
+pub(super) fn replay_table(recorded: &crate::replay::Replay, quick: bool) -> Table {
+    let (reference, seconds) = super::replay::reference(recorded);
+    let points = crate::peers::replay::sweep(
+        recorded,
+        super::replay::subdivisions(quick),
+        &reference,
+        seconds,
+        quick,
+    );
+    let mut table = Table::new(
+        "Replay side by side: each contender's whole App on the recorded hand (largest corner \
+         error over the game in px, against the replay table's reference; ns per simulated \
+         second, building the App again at each settings change included)",
+        Some("peers_replay.csv"),
+        vec![
+            Column::new("steps per recorded step", "substeps"),
+            Column::csv("contender"),
+            Column::csv("error_px"),
+            Column::csv("ns_per_simulated_second"),
+            Column::markdown("{}").each(),
+        ],
+    )
+    .across(1);
+    for p in &points {
+        let outcome = match p.error {
+            Some(error) => format!("{error:.1e} / {:.0}", p.ns_per_simulated_second),
+            None => "diverged".to_owned(),
+        };
+        table.row(vec![
+            Cell::same(p.substeps),
+            Cell::same(p.contender),
+            Cell::csv_option(p.error),
+            Cell::csv(p.ns_per_simulated_second),
+            Cell::markdown(outcome),
+        ]);
+    }
+    table
+}

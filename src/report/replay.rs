@@ -14,7 +14,7 @@ use super::table::{Cell, Column, Table};
 use super::work_precision::WorkPoint;
 
 /// How many steps per recorded step each run takes.
-fn subdivisions(quick: bool) -> &'static [u32] {
+pub(super) fn subdivisions(quick: bool) -> &'static [u32] {
     if quick { &[1, 4] } else { &[1, 2, 4, 8, 16] }
 }
 
@@ -51,10 +51,15 @@ fn trajectory(
     Ok((states, run.time))
 }
 
+/// The reference's state after each recorded step, and the seconds simulated.
+pub(super) fn reference(replay: &Replay) -> (Vec<BodyState>, f64) {
+    trajectory(replay, Integrator::Auto, 1, Some(reference_settings()))
+        .expect("the tightest series never leaves the bounds")
+}
+
 /// One point per integrator and rate.
 pub(super) fn sweep(replay: &Replay, quick: bool) -> Vec<WorkPoint> {
-    let (reference, seconds) = trajectory(replay, Integrator::Auto, 1, Some(reference_settings()))
-        .expect("the tightest series never leaves the bounds");
+    let (reference, seconds) = reference(replay);
     let mass = replay
         .header
         .settings

@@ -1,0 +1,86 @@
+//! The page around the web build: the few things only JavaScript can do (download a file,
+//! ask for one, receive a dropped one) and what the page can read back (a replay's hash, how a
+//! playback ended). A leaf: no Bevy, no game state; the recorder and the playback call it.
+
+use wasm_bindgen::prelude::*;
+
+#[wasm_bindgen(inline_js = r#"
+// The latest replay file the player chose or dropped, until the game takes it.
+let opened = null;
+
+function read(file) {
+  if (file) file.text().then((text) => { opened = { name: file.name, text }; });
+}
+
+export function download_replay(text) {
+  const name = `replay-${Math.floor(Date.now() / 1000)}.jsonl`;
+  const link = document.createElement("a");
+  link.href = URL.createObjectURL(new Blob([text], { type: "application/x-ndjson" }));
+  link.download = name;
+  document.body.appendChild(link);
+  link.click();
+  link.remove();
+  setTimeout(() => URL.revokeObjectURL(link.href), 60000);
+  return name;
+}
+
+export function choose_replay_file() {
+  const input = document.createElement("input");
+  input.type = "file";
+  input.accept = ".jsonl,.json,.txt,application/x-ndjson";
+  input.addEventListener("change", () => read(input.files[0]));
+  input.click();
+}
+
+export function accept_dropped_files() {
+  window.addEventListener("dragover", (event) => event.preventDefault());
+  window.addEventListener("drop", (event) => {
+    event.preventDefault();
+    read(event.dataTransfer?.files?.[0]);
+  });
+}
+
+export function take_opened_name() {
+  return opened?.name;
+}
+
+export function take_opened_text() {
+  const text = opened?.text;
+  opened = null;
+  return text;
+}
+
+function api() {
+  return (window.rubberBandBox ??= {});
+}
+
+export function expose_replay_hash(hash) {
+  api().replayHash = (text) => hash(String(text));
+}
+
+export function publish_playback(steps, hash, recorded, matched) {
+  api().playback = { steps, hash, recorded, matched };
+}
+"#)]
+extern "C" {
+    /// Offers `text` as a download; the file's name.
+    pub fn download_replay(text: &str) -> String;
+
+    /// Opens the browser's file chooser (needs a recent key press or click).
+    pub fn choose_replay_file();
+
+    /// Files dropped anywhere on the page are opened.
+    pub fn accept_dropped_files();
+
+    /// The name of the file opened, if one waits (call before [`take_opened_text`]).
+    pub fn take_opened_name() -> Option<String>;
+
+    /// The text of the file opened since the last call, if any.
+    pub fn take_opened_text() -> Option<String>;
+
+    /// `window.rubberBandBox.replayHash(text)`: what `simulate --replay FILE --hash` prints.
+    pub fn expose_replay_hash(hash: &Closure<dyn Fn(String) -> String>);
+
+    /// `window.rubberBandBox.playback`: how the latest playback ended.
+    pub fn publish_playback(steps: f64, hash: &str, recorded: &str, matched: bool);
+}
