@@ -2,6 +2,8 @@
 //! scene as we set it up, and our own contender is the core, step for step. CI runs these.
 #![cfg(feature = "peers")]
 
+mod common;
+
 use rubber_band_box::peers::avian::Avian;
 use rubber_band_box::peers::ours::Ours;
 use rubber_band_box::peers::rapier::Rapier;
@@ -150,4 +152,48 @@ fn avian2d_keeps_f64_positions_with_no_transform_round_trip() {
     let mut run = PeerRun::<Avian>::of(&scenario, 100.0);
     run.advance_by(10);
     assert_eq!(run.state().linear.position.x, 1000.1);
+}
+
+/// `report --replay --peers`: a recorded hand (a reset, a settings change) drives each
+/// contender; ours, rebuilt at the settings change, steps exactly as the core's replay run,
+/// at the recorded rate and at twice it; the peers follow the same band.
+#[test]
+fn a_replay_drives_every_contender_with_the_recorded_hand() {
+    use rubber_band_box::peers::replay::PeerReplay;
+    use rubber_band_box::replay::run::ReplayRun;
+
+    let replay = common::small_replay();
+    for substeps in [1, 2] {
+        let mut ours = PeerReplay::<Ours>::new(&replay, substeps);
+        let mut core = ReplayRun::new(&replay, Some(Integrator::Auto))
+            .unwrap()
+            .subdivided(substeps);
+        let mut steps = 0;
+        while core.advance().is_some() {
+            assert!(ours.advance().is_some());
+            assert_eq!(
+                ours.state(),
+                core.stepper.state,
+                "step {steps}, x{substeps}"
+            );
+            steps += 1;
+        }
+        assert!(ours.advance().is_none());
+        assert_eq!(steps, replay.steps);
+    }
+    fn follows<C: Contender>(replay: &rubber_band_box::replay::Replay) {
+        let mut run = PeerReplay::<C>::new(replay, 1);
+        while run.advance().is_some() {
+            assert!(run.state().is_finite(), "{}", C::NAME);
+        }
+        // The last steps pull toward (200, 120) from the centre.
+        let position = run.state().linear.position;
+        assert!(
+            position.x > 0.0 && position.y > 0.0,
+            "{}: {position}",
+            C::NAME
+        );
+    }
+    follows::<Avian>(&replay);
+    follows::<Rapier>(&replay);
 }
