@@ -7,10 +7,11 @@ use bevy::input::common_conditions::input_just_pressed;
 use bevy::prelude::*;
 
 use crate::overlays::Overlays;
-use crate::physics::{Integrator, SceneParams};
+use crate::physics::{Integrator, Scenario, SceneParams};
 #[cfg(not(target_arch = "wasm32"))]
 use crate::recording::ReplayStatus;
 use crate::recording::SaveReplay;
+use crate::scenes::LoadScene;
 use crate::schedule::GameSystems;
 use crate::simulation::ResetScene;
 
@@ -27,6 +28,7 @@ impl Plugin for ControlsPlugin {
                 reset_scene.run_if(input_just_pressed(RESET)),
                 save_replay.run_if(input_just_pressed(SAVE)),
                 open_replay.run_if(input_just_pressed(OPEN)),
+                load_scene,
                 tune_parameters,
                 toggle_overlays,
             )
@@ -53,6 +55,20 @@ pub const TRAIL: KeyCode = KeyCode::KeyT;
 pub const HUD: KeyCode = KeyCode::KeyH;
 pub const SAVE: KeyCode = KeyCode::KeyS;
 pub const OPEN: KeyCode = KeyCode::KeyO;
+pub const GHOSTS: KeyCode = KeyCode::KeyG;
+/// The named scenes, in the core's order ([`Scenario::NAMES`]).
+pub const SCENE_KEYS: [KeyCode; 10] = [
+    KeyCode::Digit1,
+    KeyCode::Digit2,
+    KeyCode::Digit3,
+    KeyCode::Digit4,
+    KeyCode::Digit5,
+    KeyCode::Digit6,
+    KeyCode::Digit7,
+    KeyCode::Digit8,
+    KeyCode::Digit9,
+    KeyCode::Digit0,
+];
 
 pub const STIFFNESS_RANGE: (f64, f64) = (1e-2, 1e12);
 pub const TIME_SCALE_RANGE: (f64, f64) = (1.0 / 16.0, 16.0);
@@ -71,7 +87,7 @@ pub struct Control {
 }
 
 /// Every key the game reads, in the order the help line lists them.
-pub const CONTROLS: [Control; 12] = [
+pub const CONTROLS: [Control; 14] = [
     Control {
         keys: &[PAUSE],
         label: "Space",
@@ -125,6 +141,18 @@ pub const CONTROLS: [Control; 12] = [
         label: "T",
         name: "trail",
         effect: "a fading trail of the pulled corner",
+    },
+    Control {
+        keys: &[GHOSTS],
+        label: "G",
+        name: "ghosts",
+        effect: "ghosts: every integrator and a reference (Taylor order 24 at 1e-13 px) beside the box under the same band, each outlined in its colour; the HUD lists their distance from the reference, energy residual and cost per step",
+    },
+    Control {
+        keys: &SCENE_KEYS,
+        label: "1-0",
+        name: "scene",
+        effect: "load the named scene at that place in the core's table (the order of `simulate --scene`'s list: 1 the first, 0 the tenth): its parameters and start, its scripted pull played until you press; the HUD names it and says what makes it hard",
     },
     Control {
         keys: &[HUD],
@@ -254,5 +282,17 @@ fn toggle_overlays(keys: Res<ButtonInput<KeyCode>>, mut overlays: ResMut<Overlay
     }
     if keys.just_pressed(HUD) {
         overlays.hud_hidden = !overlays.hud_hidden;
+    }
+    if keys.just_pressed(GHOSTS) {
+        overlays.ghosts = !overlays.ghosts;
+    }
+}
+
+/// A digit loads the scene at its place in the core's table ([`SCENE_KEYS`]).
+fn load_scene(keys: Res<ButtonInput<KeyCode>>, mut commands: Commands) {
+    for (key, name) in SCENE_KEYS.iter().zip(Scenario::NAMES) {
+        if keys.just_pressed(*key) {
+            commands.trigger(LoadScene(name));
+        }
     }
 }

@@ -10,8 +10,9 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
+use crate::ghosts::{GhostKind, Ghosts};
 use crate::overlays::Overlays;
-use crate::physics::{MassProperties, SCENE_SIZE, SceneParams};
+use crate::physics::{Integrator, MassProperties, SCENE_SIZE, SceneParams};
 use crate::simulation::{Band, RenderSnapshots, ResetScene, RigidBox};
 use crate::view::interpolated_state;
 
@@ -40,6 +41,7 @@ impl Plugin for DrawPlugin {
                     draw_bands,
                     draw_vectors.run_if(|overlays: Res<Overlays>| overlays.vectors),
                     (record_trail, draw_trail).chain(),
+                    draw_ghosts,
                 ),
             );
     }
@@ -209,4 +211,92 @@ fn draw_trail(mut gizmos: Gizmos, trail: Res<Trail>) {
             .enumerate()
             .map(|(i, &p)| (p, PIN_FILL.with_alpha(i as f32 / n))),
     );
+}
+
+/// A ghost's name, drawn above its outline.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+struct GhostLabel(GhostKind);
+
+const GHOST_LABEL_SIZE: f32 = 11.0;
+
+/// Each ghost as a thin outline in its colour with its band and its name, between its last
+/// two steps as the live box is drawn; a diverged one crossed out where it froze, with the
+/// step. The ghost of the live box's own integrator is not drawn (it lies under the box).
+fn draw_ghosts(
+    mut commands: Commands,
+    mut gizmos: Gizmos,
+    fixed_time: Res<Time<Fixed>>,
+    ghosts: Res<Ghosts>,
+    integrator: Res<Integrator>,
+    mut labels: Query<(
+        Entity,
+        &GhostLabel,
+        &mut Text2d,
+        &mut Transform,
+        &mut Visibility,
+    )>,
+) {
+    let alpha = fixed_time.overstep_fraction_f64().clamp(0.0, 1.0);
+    let mut unlabelled: Vec<GhostKind> = ghosts.ghosts.iter().map(|g| g.kind).collect();
+    for (entity, label, mut text, mut transform, mut visibility) in &mut labels {
+        let Some(ghost) = ghosts.ghosts.iter().find(|g| g.kind == label.0) else {
+            commands.entity(entity).despawn();
+            continue;
+        };
+        unlabelled.retain(|&kind| kind != label.0);
+        let hidden = ghost.kind == GhostKind::Method(*integrator);
+        visibility.set_if_neq(if hidden {
+            Visibility::Hidden
+        } else {
+            Visibility::Inherited
+        });
+        if hidden {
+            continue;
+        }
+        let state = RenderSnapshots {
+            previous: ghost.previous,
+            current: ghost.stepper.state,
+        }
+        .interpolate(if ghost.diverged_at.is_some() {
+            1.0
+        } else {
+            alpha
+        });
+        let colour = ghost.kind.colour().with_alpha(0.8);
+        let centre = state.linear.position.as_vec2();
+        let rotation = Rot2::radians(state.angular.orientation as f32);
+        let size = ghost.stepper.mass.size().as_vec2();
+        gizmos.rect_2d(Isometry2d::new(centre, rotation), size, colour);
+        if let Some(band) = ghost.stepper.band {
+            let corner = band.attachment(&state).as_vec2();
+            gizmos.line_2d(corner, band.anchor.as_vec2(), colour.with_alpha(0.35));
+        }
+        let name = match ghost.diverged_at {
+            Some(step) => {
+                let half = size / 2.0;
+                for corner in [half, Vec2::new(half.x, -half.y)] {
+                    let a = centre + rotation * corner;
+                    let b = centre - rotation * corner;
+                    gizmos.line_2d(a, b, colour);
+                }
+                format!("{} diverged @{step}", ghost.kind.name())
+            }
+            None => ghost.kind.name().to_owned(),
+        };
+        if text.0 != name {
+            text.0 = name;
+        }
+        transform.translation = (centre + Vec2::new(0.0, size.y.max(size.x) * 0.75)).extend(2.0);
+    }
+    for kind in unlabelled {
+        commands.spawn((
+            Name::new("Ghost label"),
+            GhostLabel(kind),
+            Text2d::new(kind.name()),
+            TextFont::from_font_size(GHOST_LABEL_SIZE),
+            TextColor(kind.colour()),
+            Transform::default(),
+            Visibility::Hidden,
+        ));
+    }
 }

@@ -6,8 +6,9 @@
 //! - [`simulation`]: the Bevy plugin that steps the core in `FixedUpdate` (headless);
 //! - [`replay`]: a game's input as data, read, written and stepped again with the core;
 //! - [`pointer`] and [`controls`]: mouse, touch and keys (headless); [`recording`]: what
-//!   reached the physics, kept as a replay, and [`playback`], a replay played back in the game
-//!   (headless);
+//!   reached the physics, kept as a replay, and [`playback`], a replay played back in the game;
+//!   [`scenes`], the core's named scenes played as replays of their scripted pulls;
+//!   [`ghosts`], every integrator and a reference stepping beside the live box (headless);
 //! - [`hud`]: the heads-up display, its energy graph and the window title (headless, but the
 //!   graph, which needs gizmos);
 //! - [`view`] and [`draw`]: camera, interpolation and drawing (need a window);
@@ -22,6 +23,7 @@
 pub mod cli;
 pub mod controls;
 pub mod draw;
+pub mod ghosts;
 pub mod hud;
 pub mod overlays;
 #[cfg(all(feature = "peers", not(target_arch = "wasm32")))]
@@ -35,6 +37,7 @@ pub mod references;
 pub mod replay;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod report;
+pub mod scenes;
 pub mod schedule;
 pub mod simulation;
 #[cfg(not(target_arch = "wasm32"))]
@@ -58,6 +61,8 @@ impl Plugin for GameLogicPlugin {
             controls::ControlsPlugin,
             recording::RecordingPlugin,
             playback::PlaybackPlugin,
+            scenes::ScenesPlugin,
+            ghosts::GhostsPlugin,
             hud::HudPlugin,
         ));
     }

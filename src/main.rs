@@ -101,6 +101,9 @@ fn play(args: PlayArgs) -> ExitCode {
                 return ExitCode::from(2);
             }
         };
+        app.insert_resource(rubber_band_box::recording::SceneName(
+            replay.header.scene.clone(),
+        ));
         let playback = rubber_band_box::playback::Playback::of(replay);
         if let Some((start, recorded, auto)) = playback.start() {
             (params, integrator) = (start, recorded);

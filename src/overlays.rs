@@ -10,6 +10,8 @@ pub struct Overlays {
     pub vectors: bool,
     /// The pulled corner's trail.
     pub trail: bool,
+    /// Every integrator and a reference beside the live box (`ghosts`).
+    pub ghosts: bool,
     /// The HUD (text, energy graph, help line) shows unless hidden.
     pub hud_hidden: bool,
 }

@@ -15,7 +15,7 @@ use bevy::prelude::*;
 
 use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams};
 use crate::pointer::{PointerAction, read_pointer};
-use crate::recording::{Recorder, ReplayStatus};
+use crate::recording::{Recorder, ReplayStatus, SceneName};
 use crate::replay::{Record, Replay, TrajectoryHash};
 use crate::schedule::GameSystems;
 use crate::simulation::{Band, PhysicsSystems, ResetScene, RigidBox, rigid_box};
@@ -277,6 +277,7 @@ pub fn open(world: &mut World, replay: Replay) {
         world.resource_mut::<Time<Fixed>>().set_timestep(step);
     }
     world.resource_mut::<Recorder>().restart();
+    world.insert_resource(SceneName(replay.header.scene.clone()));
     world.insert_resource(Playback::of(replay));
 }
 

@@ -23,6 +23,7 @@ impl Plugin for RecordingPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Recorder>()
             .init_resource::<ReplayStatus>()
+            .init_resource::<SceneName>()
             .add_observer(note_reset)
             .add_observer(save_on_request)
             .add_systems(
@@ -40,8 +41,16 @@ impl Plugin for RecordingPlugin {
     }
 }
 
-/// The scene the game plays (the header's `scene`).
-pub const GAME_SCENE: &str = "tutorial";
+/// The scene the game plays (a recording's header names it): the tutorial's, a named scene
+/// loaded, or the one a replay opened was recorded in.
+#[derive(Resource, Debug, Clone, PartialEq, Eq)]
+pub struct SceneName(pub String);
+
+impl Default for SceneName {
+    fn default() -> Self {
+        Self("tutorial".to_owned())
+    }
+}
 
 /// The game so far, and where `play --record` saves it.
 #[derive(Resource, Debug, Default)]
@@ -104,6 +113,7 @@ fn note_step_inputs(
     params: Res<SceneParams>,
     integrator: Res<Integrator>,
     auto: Res<AutoSettings>,
+    scene: Res<SceneName>,
     boxes: Query<(&LinearState, &AngularState, &ForceAccumulator), With<RigidBox>>,
 ) {
     let Ok((linear, angular, accumulator)) = boxes.single() else {
@@ -112,7 +122,7 @@ fn note_step_inputs(
     let settings = Settings::new(&params, time.timestep().as_secs_f64(), *integrator);
     let recorder = &mut *recorder;
     let replay = recorder.replay.get_or_insert_with(|| {
-        Replay::start(GAME_SCENE, settings, *auto, body_state(linear, angular))
+        Replay::start(&scene.0, settings, *auto, body_state(linear, angular))
     });
     if replay.is_full() {
         warn_once!("the recording is full: later steps are not recorded");

@@ -34,6 +34,8 @@ fn readings() -> HudReadings {
         recorded_steps: 150,
         replay_status: None,
         playback: None,
+        scene: "tutorial".to_owned(),
+        ghosts: Vec::new(),
     }
 }
 

@@ -16,12 +16,14 @@ use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
 use crate::controls::help_line;
+use crate::ghosts::{GhostKind, Ghosts};
 use crate::overlays::Overlays;
 use crate::physics::{
-    AngularState, Energies, EnergyLedger, Integrator, LinearState, MassProperties, SceneParams,
+    AngularState, Energies, EnergyLedger, Integrator, LinearState, MassProperties, Scenario,
+    SceneParams,
 };
 use crate::playback::Playback;
-use crate::recording::{Recorder, ReplayStatus};
+use crate::recording::{Recorder, ReplayStatus, SceneName};
 use crate::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
 pub use history::EnergyHistory;
 
@@ -51,6 +53,7 @@ const HELP_FONT_SIZE: f32 = 12.0;
 /// One line of the HUD. Each is a `Text` entity whose content [`HudLine::text`] writes.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 pub enum HudLine {
+    SceneName,
     Integrator,
     Clock,
     Scene,
@@ -62,12 +65,14 @@ pub enum HudLine {
     Ledger,
     Residual,
     Replay,
+    Ghosts,
     Help,
 }
 
 impl HudLine {
     /// The panel's lines, top to bottom (the help line sits apart, at the bottom).
-    pub const PANEL: [HudLine; 11] = [
+    pub const PANEL: [HudLine; 13] = [
+        HudLine::SceneName,
         HudLine::Integrator,
         HudLine::Clock,
         HudLine::Scene,
@@ -79,6 +84,7 @@ impl HudLine {
         HudLine::Ledger,
         HudLine::Residual,
         HudLine::Replay,
+        HudLine::Ghosts,
     ];
 
     /// The line's colour: the energy lines in their graph colours (the graph's legend).
@@ -88,7 +94,9 @@ impl HudLine {
             HudLine::BandPotential => BAND_ENERGY_COLOUR,
             HudLine::Total => TOTAL_COLOUR,
             HudLine::Integrator if readings.divergence.is_some() => WARNING_COLOUR,
-            HudLine::EnergyHeading | HudLine::Help | HudLine::Replay => DIM_COLOUR,
+            HudLine::EnergyHeading | HudLine::Help | HudLine::Replay | HudLine::Ghosts => {
+                DIM_COLOUR
+            }
             _ => TEXT_COLOUR,
         }
     }
@@ -96,6 +104,12 @@ impl HudLine {
     pub fn text(self, r: &HudReadings) -> String {
         let e = &r.energies;
         match self {
+            HudLine::SceneName => {
+                let summary = Scenario::named(&r.scene)
+                    .map_or("a recorded game", |scenario| scenario.summary);
+                format!("scene {}: {summary}", r.scene)
+            }
+            HudLine::Ghosts => ghost_lines(r),
             HudLine::Integrator => {
                 let mut line = format!("integrator {}", r.integrator);
                 if r.integrator == Integrator::Auto {
@@ -173,6 +187,39 @@ impl HudLine {
     }
 }
 
+/// A line per ghost: its distance from the reference, its energy residual, its work and
+/// time per step; empty while the ghosts are off.
+fn ghost_lines(r: &HudReadings) -> String {
+    if r.ghosts.is_empty() {
+        return String::new();
+    }
+    let mut text =
+        "ghosts: distance from the reference, energy residual, work and time per step".to_owned();
+    for g in &r.ghosts {
+        let live = if g.live { " (live)" } else { "" };
+        let name = format!("{}{live}", g.name);
+        text += &format!("\n  {name:<17}");
+        if let Some(step) = g.diverged_at {
+            text += &format!("DIVERGED at step {step} (frozen)");
+            continue;
+        }
+        let distance = g.distance.map_or("-".to_owned(), |d| format!("{d:.1e} px"));
+        let work = if g.substeps > 1 {
+            format!("{} substeps, {} evals", g.substeps, g.evaluations)
+        } else {
+            format!("{} evals", g.evaluations)
+        };
+        text += &format!(
+            "{distance:>10}  {:>+9.1e}  {work:<22} {:>7.0} ns",
+            g.residual, g.ns_per_step
+        );
+        if g.capped > 0 {
+            text += &format!("  capped {} steps", g.capped);
+        }
+    }
+    text
+}
+
 /// Energies are shown fixed-point in the usual range, in scientific notation outside it.
 fn energy(value: f64) -> String {
     // An empty sum is −0.0 in Rust: show it as 0.
@@ -211,6 +258,25 @@ pub struct HudReadings {
     pub replay_status: Option<String>,
     /// While a replay plays back: (steps played, steps in it).
     pub playback: Option<(u64, u64)>,
+    /// The scene's name (the core's table's, or a recording's).
+    pub scene: String,
+    /// Every ghost, while they are on.
+    pub ghosts: Vec<GhostReading>,
+}
+
+/// What the HUD says about one ghost.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GhostReading {
+    pub name: &'static str,
+    /// The live box's integrator.
+    pub live: bool,
+    pub distance: Option<f64>,
+    pub residual: f64,
+    pub substeps: u32,
+    pub evaluations: u32,
+    pub ns_per_step: f64,
+    pub diverged_at: Option<u64>,
+    pub capped: u64,
 }
 
 #[derive(SystemParam)]
@@ -226,6 +292,8 @@ pub struct HudSources<'w, 's> {
     recorder: Res<'w, Recorder>,
     replay_status: Res<'w, ReplayStatus>,
     playback: Res<'w, Playback>,
+    scene: Res<'w, SceneName>,
+    ghosts: Res<'w, Ghosts>,
     boxes: Query<
         'w,
         's,
@@ -275,6 +343,23 @@ impl HudSources<'_, '_> {
             recorded_steps: self.recorder.steps(),
             replay_status: self.replay_status.0.clone(),
             playback: self.playback.progress(),
+            scene: self.scene.0.clone(),
+            ghosts: self
+                .ghosts
+                .ghosts
+                .iter()
+                .map(|ghost| GhostReading {
+                    name: ghost.kind.name(),
+                    live: ghost.kind == GhostKind::Method(*self.integrator),
+                    distance: self.ghosts.distance_from_reference(ghost),
+                    residual: ghost.residual(),
+                    substeps: ghost.last.substeps,
+                    evaluations: ghost.last.evaluations,
+                    ns_per_step: ghost.ns_per_step,
+                    diverged_at: ghost.diverged_at,
+                    capped: ghost.capped,
+                })
+                .collect(),
         }
     }
 }

@@ -10,6 +10,7 @@
 pub mod run;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod save;
+pub mod scene;
 
 use std::fmt;
 use std::io::{self, BufRead, Read, Write};
