@@ -1,5 +1,6 @@
 //! Criterion benchmarks: one core step per integrator; one headless `App` fixed step with the
-//! box and its band beside an empty `App` (the ECS floor); and N boxes each with a band.
+//! box and its band beside an empty `App` (the ECS floor); N boxes each with a band; and a
+//! scene's step with the ghosts on and off.
 //!
 //! Run: `cargo bench --bench steps` (add `-- core` to run one group).
 
@@ -11,10 +12,12 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
+use rubber_band_box::ghosts::GhostsPlugin;
+use rubber_band_box::overlays::Overlays;
 use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
-use rubber_band_box::physics::{BandEnds, BodyState, Integrator, SceneParams, Stepper};
+use rubber_band_box::physics::{BandEnds, BodyState, Integrator, Scenario, SceneParams, Stepper};
 use rubber_band_box::simulation::{
-    Band, RigidBox, SimulationPlugin, rigid_box, run_single_threaded,
+    Band, PhysicsSystems, RigidBox, SimulationPlugin, rigid_box, run_single_threaded,
 };
 
 fn core_step(c: &mut Criterion) {
@@ -112,5 +115,71 @@ fn many_boxes(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, core_step, app_tick, many_boxes);
+/// One fixed step of a scene's box and band in a headless `App`, the anchor circling as a hand
+/// would (so the band never settles), with every ghost stepping beside it and without: what
+/// the ghosts cost a frame (README, "The lab").
+fn ghosts(c: &mut Criterion) {
+    let mut group = c.benchmark_group("ghosts");
+    // The tutorial's band, the stiff scene's (k = 1e5), and the stiffest the game allows,
+    // where the reference runs out of its substep budget.
+    for (scene, stiffness) in [("tutorial", None), ("stiff", None), ("stiff", Some(1e12))] {
+        for on in [false, true] {
+            let mut app = ghost_app(scene, stiffness, on);
+            let k = stiffness.map_or(String::new(), |k| format!("-k{k:e}"));
+            let label = format!("{scene}{k}/{}", if on { "on" } else { "off" });
+            group.bench_function(label, |b| b.iter(|| app.update()));
+        }
+    }
+    group.finish();
+}
+
+fn ghost_app(scene: &str, stiffness: Option<f64>, ghosts_on: bool) -> App {
+    let mut scenario = Scenario::named(scene).unwrap();
+    if let Some(k) = stiffness {
+        scenario.params.stiffness = k;
+    }
+    let mut app = App::new();
+    app.add_plugins(MinimalPlugins)
+        .insert_resource(Time::<Fixed>::from_hz(100.0))
+        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
+            10,
+        )))
+        .insert_resource(scenario.params)
+        .insert_resource(Overlays {
+            ghosts: ghosts_on,
+            ..default()
+        })
+        .add_plugins((SimulationPlugin, GhostsPlugin))
+        .add_systems(
+            FixedUpdate,
+            circle_the_anchor.before(PhysicsSystems::Accumulate),
+        );
+    app.finish();
+    app.cleanup();
+    app.update();
+    let mass = scenario.params.mass_properties().unwrap();
+    let world = app.world_mut();
+    let body = world
+        .query_filtered::<Entity, With<RigidBox>>()
+        .single(world)
+        .unwrap();
+    world.spawn(Band {
+        body,
+        ends: BandEnds::grabbing(&mass, &BodyState::default(), TUTORIAL_PULL_TARGET),
+    });
+    run_single_threaded(&mut app);
+    app.update();
+    app
+}
+
+/// The anchor around a circle of 200 px, a turn every 2 s.
+fn circle_the_anchor(mut bands: Query<&mut Band>, mut step: Local<u32>) {
+    *step += 1;
+    let angle = f64::from(*step) * std::f64::consts::PI / 100.0;
+    for mut band in &mut bands {
+        band.ends.anchor = 200.0 * DVec2::new(angle.cos(), angle.sin());
+    }
+}
+
+criterion_group!(benches, core_step, app_tick, many_boxes, ghosts);
 criterion_main!(benches);

@@ -286,7 +286,15 @@ fn draw_ghosts(
         if text.0 != name {
             text.0 = name;
         }
-        transform.translation = (centre + Vec2::new(0.0, size.y.max(size.x) * 0.75)).extend(2.0);
+        // Stacked by the ghost's place in the list, so that ghosts that coincide (most of
+        // them, on a soft band) keep their names apart.
+        let place = ghosts
+            .ghosts
+            .iter()
+            .position(|g| g.kind == ghost.kind)
+            .unwrap_or(0);
+        let above = size.y.max(size.x) * 0.75 + place as f32 * (GHOST_LABEL_SIZE + 2.0);
+        transform.translation = (centre + Vec2::new(0.0, above)).extend(2.0);
     }
     for kind in unlabelled {
         commands.spawn((

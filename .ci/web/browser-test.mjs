@@ -5,7 +5,8 @@
 // Replays across platforms: the page steps a fixed replay (tests/fixtures/cross-platform.jsonl)
 // to the hash recorded natively; a game played in the page is saved as a download that the
 // native build (NATIVE_BINARY, `simulate --replay FILE --hash`) steps to the page's hash; and
-// the fixture opened in the page with the O key plays back to its recorded hash.
+// the fixture opened in the page with the O key plays back to its recorded hash. Then the
+// stiff scene (3) with the ghosts (G).
 // Screenshots go to site/screens/. Run: node .ci/web/browser-test.mjs [site-dir]
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
@@ -191,6 +192,17 @@ try {
     `the fixture opened in the page plays back to its recorded bits (${JSON.stringify(ended)})`);
   await shot("playback-over");
 
+  // The lab: 3 loads the stiff scene, G shows the ghosts (each integrator's outline in its
+  // colour). Gizmo lines blend dimmer than their colour, so the hue is looked for: rk4's
+  // green, which nothing else on screen has.
+  const green = (png, i) => png.data[i + 1] > png.data[i] + 40 && png.data[i + 1] > png.data[i + 2] + 40;
+  await page.keyboard.press("3");
+  await page.waitForTimeout(1000);
+  const withoutGhosts = pixels(await shot("stiff-scene"), green).length;
+  await page.keyboard.press("g");
+  await page.waitForTimeout(1500);
+  const rk4 = pixels(await shot("ghosts"), green).length;
+  check(rk4 > 50 && withoutGhosts < 5, `G draws the ghosts on the stiff scene (${rk4} pixels of rk4's green, ${withoutGhosts} before G)`);
   check(errors.length === 0, `no console errors${errors.length ? ": " + errors.join(" | ") : ""}`);
   console.log(`first frame: ${firstFrameMs} ms after navigation, ${firstFrameBytes} bytes transferred`);
 } finally {
