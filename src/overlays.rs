@@ -15,3 +15,8 @@ pub struct Overlays {
     /// The HUD (text, energy graph, help line) shows unless hidden.
     pub hud_hidden: bool,
 }
+
+/// The latest thing the game has to tell the player (a save, a replay opened or refused, a
+/// value refused), shown on the HUD's replay line until the next.
+#[derive(Resource, Debug, Default, Clone, PartialEq)]
+pub struct StatusMessage(pub Option<String>);

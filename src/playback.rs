@@ -13,9 +13,10 @@ use std::time::Duration;
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
+use crate::overlays::StatusMessage;
 use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams};
 use crate::pointer::{PointerAction, read_pointer};
-use crate::recording::{Recorder, ReplayStatus, SceneName};
+use crate::recording::{Recorder, SceneName};
 use crate::replay::{Record, Replay, TrajectoryHash};
 use crate::schedule::GameSystems;
 use crate::simulation::{Band, PhysicsSystems, ResetScene, RigidBox, rigid_box};
@@ -288,13 +289,13 @@ fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, Stri
             let message = format!("playing {name} ({} steps)", replay.steps);
             commands.queue(move |world: &mut World| {
                 open(world, replay);
-                world.resource_mut::<ReplayStatus>().0 = Some(message);
+                world.resource_mut::<StatusMessage>().0 = Some(message);
             });
         }
         Err(error) => {
             let message = format!("cannot play {name}: {error}");
             commands.queue(move |world: &mut World| {
-                world.resource_mut::<ReplayStatus>().0 = Some(message);
+                world.resource_mut::<StatusMessage>().0 = Some(message);
             });
         }
     }
@@ -304,7 +305,7 @@ fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, Stri
 /// the page too.
 fn report_the_end(
     playback: Res<Playback>,
-    mut status: ResMut<ReplayStatus>,
+    mut status: ResMut<StatusMessage>,
     mut said: Local<Option<PlaybackEnd>>,
 ) {
     let Some(end) = playback.ended else {

@@ -13,6 +13,7 @@ use std::path::{Path, PathBuf};
 
 use bevy::prelude::*;
 
+use crate::overlays::StatusMessage;
 use crate::physics::{AngularState, AutoSettings, BandEnds, Integrator, LinearState, SceneParams};
 use crate::replay::{Replay, Settings};
 use crate::simulation::{ForceAccumulator, PhysicsSystems, ResetScene, RigidBox, body_state};
@@ -22,7 +23,7 @@ pub struct RecordingPlugin;
 impl Plugin for RecordingPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Recorder>()
-            .init_resource::<ReplayStatus>()
+            .init_resource::<StatusMessage>()
             .init_resource::<SceneName>()
             .add_observer(note_reset)
             .add_observer(save_on_request)
@@ -94,10 +95,6 @@ impl Recorder {
     }
 }
 
-/// What the latest save or opened replay did, for the HUD.
-#[derive(Resource, Debug, Default, Clone, PartialEq)]
-pub struct ReplayStatus(pub Option<String>);
-
 /// Save the game so far (the save control).
 #[derive(Event, Debug, Clone, Copy, Default)]
 pub struct SaveReplay;
@@ -156,7 +153,7 @@ fn note_step_result(
 fn save_on_request(
     _save: On<SaveReplay>,
     recorder: Res<Recorder>,
-    mut status: ResMut<ReplayStatus>,
+    mut status: ResMut<StatusMessage>,
 ) {
     #[cfg(not(target_arch = "wasm32"))]
     {

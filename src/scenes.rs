@@ -4,9 +4,9 @@
 
 use bevy::prelude::*;
 
+use crate::overlays::StatusMessage;
 use crate::physics::{AutoSettings, Integrator, Scenario, SceneParams};
 use crate::playback;
-use crate::recording::ReplayStatus;
 use crate::replay::scene::scene_replay;
 
 pub struct ScenesPlugin;
@@ -40,7 +40,7 @@ pub fn load_scene(world: &mut World, name: &str) {
     match loaded {
         Ok(replay) => playback::open(world, replay),
         Err(error) => {
-            world.resource_mut::<ReplayStatus>().0 = Some(format!("cannot load {name}: {error}"))
+            world.resource_mut::<StatusMessage>().0 = Some(format!("cannot load {name}: {error}"))
         }
     }
 }

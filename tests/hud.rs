@@ -32,7 +32,7 @@ fn readings() -> HudReadings {
         ledger: EnergyLedger::starting_at(0.0),
         residual: 0.0,
         recorded_steps: 150,
-        replay_status: None,
+        status: None,
         playback: None,
         scene: "tutorial".to_owned(),
         ghosts: Vec::new(),
@@ -57,7 +57,7 @@ fn lines_say_what_the_readings_hold() {
     assert_eq!(HudLine::Replay.text(&r), "recorded 150 steps");
     let playing = HudReadings {
         playback: Some((40, 1125)),
-        replay_status: Some("saved 150 steps to a.jsonl".to_owned()),
+        status: Some("saved 150 steps to a.jsonl".to_owned()),
         ..r.clone()
     };
     assert_eq!(

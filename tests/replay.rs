@@ -12,9 +12,10 @@ use common::*;
 use rubber_band_box::controls::{
     FASTER, FEWER_STEPS, MORE_STEPS, PAUSE, RESET, SAVE, SINGLE_STEP, SOFTER, STIFFER,
 };
+use rubber_band_box::overlays::StatusMessage;
 use rubber_band_box::physics::BodyState;
 use rubber_band_box::playback::{self, Playback, PlaybackEnd};
-use rubber_band_box::recording::{Recorder, ReplayStatus};
+use rubber_band_box::recording::Recorder;
 use rubber_band_box::replay::run::ReplayRun;
 use rubber_band_box::replay::save::write_atomically;
 use rubber_band_box::replay::{MAX_LINE_BYTES, Replay, TrajectoryHash};
@@ -197,7 +198,7 @@ fn the_save_key_and_the_games_end_write_a_replay_that_loads() {
     game.update(30);
     game.tap_key(SAVE);
     game.update(1);
-    let status = game.world().resource::<ReplayStatus>().0.clone().unwrap();
+    let status = game.world().resource::<StatusMessage>().0.clone().unwrap();
     assert_eq!(status, format!("saved 30 steps to {}", path.display()));
     assert!(game.hud(HudLine::Replay).contains(&status));
     assert_eq!(read(&path).steps, 30);
@@ -220,7 +221,7 @@ fn a_save_that_cannot_be_written_says_why_and_the_game_plays_on() {
     game.update(5);
     game.tap_key(SAVE);
     game.update(5);
-    let status = game.world().resource::<ReplayStatus>().0.clone().unwrap();
+    let status = game.world().resource::<StatusMessage>().0.clone().unwrap();
     assert!(
         status.starts_with(&format!("cannot save {}: ", path.display())),
         "{status}"
@@ -572,7 +573,7 @@ fn a_dropped_file_plays_or_is_refused_with_the_reason() {
         game.update(1);
     };
     drop(&mut game, &bad);
-    let status = game.world().resource::<ReplayStatus>().0.clone().unwrap();
+    let status = game.world().resource::<StatusMessage>().0.clone().unwrap();
     assert!(
         status.starts_with("cannot play") && status.contains("line 1"),
         "{status}"
@@ -580,7 +581,7 @@ fn a_dropped_file_plays_or_is_refused_with_the_reason() {
     assert!(!game.world().resource::<Playback>().is_playing());
 
     drop(&mut game, &good);
-    let status = game.world().resource::<ReplayStatus>().0.clone().unwrap();
+    let status = game.world().resource::<StatusMessage>().0.clone().unwrap();
     assert!(status.starts_with("playing"), "{status}");
     assert!(game.world().resource::<Playback>().is_playing());
     until_the_playback_ends(&mut game);

@@ -18,12 +18,13 @@ use bevy::prelude::*;
 use crate::controls::help_line;
 use crate::ghosts::{GhostKind, Ghosts};
 use crate::overlays::Overlays;
+use crate::overlays::StatusMessage;
 use crate::physics::{
     AngularState, Energies, EnergyLedger, Integrator, LinearState, MassProperties, Scenario,
     SceneParams,
 };
 use crate::playback::Playback;
-use crate::recording::{Recorder, ReplayStatus, SceneName};
+use crate::recording::{Recorder, SceneName};
 use crate::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
 pub use history::EnergyHistory;
 
@@ -177,7 +178,7 @@ impl HudLine {
                 if let Some((played, steps)) = r.playback {
                     line = format!("replay: step {played} of {steps} (press to take over)  {line}");
                 }
-                if let Some(status) = &r.replay_status {
+                if let Some(status) = &r.status {
                     line += &format!("  {status}");
                 }
                 line
@@ -255,7 +256,7 @@ pub struct HudReadings {
     pub residual: f64,
     /// Steps in the recording so far, and what the latest save said.
     pub recorded_steps: u64,
-    pub replay_status: Option<String>,
+    pub status: Option<String>,
     /// While a replay plays back: (steps played, steps in it).
     pub playback: Option<(u64, u64)>,
     /// The scene's name (the core's table's, or a recording's).
@@ -290,7 +291,7 @@ pub struct HudSources<'w, 's> {
     diagnostics: Res<'w, DiagnosticsStore>,
     history: Res<'w, EnergyHistory>,
     recorder: Res<'w, Recorder>,
-    replay_status: Res<'w, ReplayStatus>,
+    status: Res<'w, StatusMessage>,
     playback: Res<'w, Playback>,
     scene: Res<'w, SceneName>,
     ghosts: Res<'w, Ghosts>,
@@ -341,7 +342,7 @@ impl HudSources<'_, '_> {
             ledger: self.books.ledger,
             residual: self.books.residual,
             recorded_steps: self.recorder.steps(),
-            replay_status: self.replay_status.0.clone(),
+            status: self.status.0.clone(),
             playback: self.playback.progress(),
             scene: self.scene.0.clone(),
             ghosts: self
