@@ -5,7 +5,8 @@
 //! - [`schedule`] and [`overlays`]: leaves the plugins share (the frame's order, what shows);
 //! - [`simulation`]: the Bevy plugin that steps the core in `FixedUpdate` (headless);
 //! - [`replay`]: a game's input as data, read, written and stepped again with the core;
-//! - [`pointer`] and [`controls`]: mouse, touch and keys (headless); [`recording`]: what
+//! - [`pointer`] and [`controls`]: mouse, touch and keys, and [`panel`], the same controls on
+//!   screen (headless); [`recording`]: what
 //!   reached the physics, kept as a replay, and [`playback`], a replay played back in the game;
 //!   [`scenes`], the core's named scenes played as replays of their scripted pulls;
 //!   [`ghosts`], every integrator and a reference stepping beside the live box (headless);
@@ -26,6 +27,7 @@ pub mod draw;
 pub mod ghosts;
 pub mod hud;
 pub mod overlays;
+pub mod panel;
 #[cfg(all(feature = "peers", not(target_arch = "wasm32")))]
 pub mod peers;
 pub mod physics;
@@ -63,6 +65,7 @@ impl Plugin for GameLogicPlugin {
             playback::PlaybackPlugin,
             scenes::ScenesPlugin,
             ghosts::GhostsPlugin,
+            panel::PanelPlugin,
             hud::HudPlugin,
         ));
     }

@@ -20,3 +20,14 @@ pub struct Overlays {
 /// value refused), shown on the HUD's replay line until the next.
 #[derive(Resource, Debug, Default, Clone, PartialEq)]
 pub struct StatusMessage(pub Option<String>);
+
+/// Where the on-screen controls lie, in logical window pixels: a press there goes to them, not
+/// to the band. The panel writes it after each layout; the pointer reads it.
+#[derive(Resource, Debug, Default, Clone, PartialEq)]
+pub struct ControlsArea(pub Vec<Rect>);
+
+impl ControlsArea {
+    pub fn contains(&self, point: Vec2) -> bool {
+        self.0.iter().any(|rect| rect.contains(point))
+    }
+}

@@ -20,6 +20,7 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy::window::{PrimaryWindow, WindowFocused};
 
+use crate::overlays::ControlsArea;
 use crate::physics::{AngularState, BandEnds, LinearState, MassProperties};
 use crate::schedule::GameSystems;
 use crate::simulation::{Band, ResetScene, RigidBox, Tap, body_state};
@@ -29,6 +30,7 @@ pub struct PointerPlugin;
 impl Plugin for PointerPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Grip>()
+            .init_resource::<ControlsArea>()
             .add_message::<PointerAction>()
             .add_observer(let_go_on_reset)
             .add_systems(
@@ -63,8 +65,11 @@ pub enum PointerSource {
 
 /// Mouse, touch and focus input to [`PointerAction`]s.
 pub fn read_pointer(
-    buttons: Res<ButtonInput<MouseButton>>,
-    touches: Res<Touches>,
+    (buttons, touches, controls): (
+        Res<ButtonInput<MouseButton>>,
+        Res<Touches>,
+        Res<ControlsArea>,
+    ),
     mut focus: MessageReader<WindowFocused>,
     window: Option<Single<&Window, With<PrimaryWindow>>>,
     camera: Option<Single<(&Camera, &GlobalTransform), With<Camera2d>>>,
@@ -83,10 +88,12 @@ pub fn read_pointer(
 
     // The mouse. A press and a release seen in the same frame happened in the order that
     // leaves the button in its current state.
-    let cursor = window
+    let on_screen = window
         .as_deref()
-        .and_then(|window| window.cursor_position())
-        .and_then(to_world);
+        .and_then(|window| window.cursor_position());
+    let cursor = on_screen.and_then(to_world);
+    // A press on the on-screen controls is theirs.
+    let on_controls = on_screen.is_some_and(|point| controls.contains(point));
     let (pressed, released, held) = (
         buttons.just_pressed(MouseButton::Left),
         buttons.just_released(MouseButton::Left),
@@ -95,7 +102,10 @@ pub fn read_pointer(
     if released && held {
         release(&mut grip, &mut actions, PointerSource::Mouse);
     }
-    if pressed && let Some(at) = cursor {
+    if pressed
+        && !on_controls
+        && let Some(at) = cursor
+    {
         grip.0 = Some(PointerSource::Mouse);
         actions.write(PointerAction::Press(at));
     }
@@ -112,6 +122,7 @@ pub fn read_pointer(
     // One finger: the first to touch holds the band until it lifts.
     for touch in touches.iter_just_pressed() {
         if grip.0.is_none()
+            && !controls.contains(touch.position())
             && let Some(at) = to_world(touch.position())
         {
             grip.0 = Some(PointerSource::Touch(touch.id()));

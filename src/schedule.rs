@@ -11,7 +11,8 @@
 //!    publish (`simulation::PhysicsSystems`), then the HUD's energy history;
 //! 3. `RunFixedMainLoop`, after the fixed loop: the drawn state interpolated between the last
 //!    two steps (`view`), and the end of a playback said (`playback`);
-//! 4. `Update`: the HUD's text and the window title, then the drawing.
+//! 4. `Update`: the HUD's text and the window title, then the panel ([`ScreenSystems`]),
+//!    and the drawing.
 
 use bevy::prelude::*;
 
@@ -26,6 +27,13 @@ pub enum GameSystems {
     ApplySettings,
 }
 
+/// The text on screen, each frame in this order (both write `Text`).
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ScreenSystems {
+    Hud,
+    Panel,
+}
+
 /// Chains [`GameSystems`] inside `BeforeFixedMainLoop`: a press and a key in one frame always
 /// act in the same order (the press first, so a reset in that frame also lets go).
 pub fn order_the_frame(app: &mut App) {
@@ -38,5 +46,6 @@ pub fn order_the_frame(app: &mut App) {
         )
             .chain()
             .in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
-    );
+    )
+    .configure_sets(Update, (ScreenSystems::Hud, ScreenSystems::Panel).chain());
 }

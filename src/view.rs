@@ -12,11 +12,13 @@ pub struct ViewPlugin;
 
 impl Plugin for ViewPlugin {
     fn build(&self, app: &mut App) {
-        app.add_systems(Startup, spawn_camera).add_systems(
-            RunFixedMainLoop,
-            (interpolate_body_transforms, place_band_pins)
-                .in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
-        );
+        app.add_systems(Startup, spawn_camera)
+            .add_systems(
+                RunFixedMainLoop,
+                (interpolate_body_transforms, place_band_pins)
+                    .in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
+            )
+            .add_systems(Update, scale_ui_to_window);
     }
 }
 
@@ -30,6 +32,24 @@ pub fn scene_projection() -> Projection {
         },
         ..OrthographicProjection::default_2d()
     })
+}
+
+/// The game's window is 960 x 720; in a smaller one (a phone) the HUD and the panel shrink with
+/// it, to no less than 0.6, so that they leave the scene readable.
+pub fn ui_scale_for(size: Vec2) -> f32 {
+    (size.x / 960.0).min(size.y / 720.0).clamp(0.6, 1.0)
+}
+
+fn scale_ui_to_window(
+    windows: Query<&Window, (With<bevy::window::PrimaryWindow>, Changed<Window>)>,
+    mut scale: ResMut<UiScale>,
+) {
+    for window in &windows {
+        let fit = ui_scale_for(window.size());
+        if scale.0 != fit {
+            scale.0 = fit;
+        }
+    }
 }
 
 fn spawn_camera(mut commands: Commands) {

@@ -1,6 +1,7 @@
 //! The page around the web build: the few things only JavaScript can do (download a file,
 //! ask for one, receive a dropped one) and what the page can read back (a replay's hash, how a
-//! playback ended). A leaf: no Bevy, no game state; the recorder and the playback call it.
+//! playback ended, where the panel's buttons are). A leaf: no Bevy, no game state; the
+//! recorder, the playback and the panel call it.
 
 use wasm_bindgen::prelude::*;
 
@@ -61,6 +62,10 @@ export function expose_replay_hash(hash) {
 export function publish_playback(steps, hash, recorded, matched) {
   api().playback = { steps, hash, recorded, matched };
 }
+
+export function publish_panel(json) {
+  api().panel = JSON.parse(json);
+}
 "#)]
 extern "C" {
     /// Offers `text` as a download; the file's name.
@@ -83,4 +88,8 @@ extern "C" {
 
     /// `window.rubberBandBox.playback`: how the latest playback ended.
     pub fn publish_playback(steps: f64, hash: &str, recorded: &str, matched: bool);
+
+    /// `window.rubberBandBox.panel`: each panel button's label and where it lies on the page
+    /// (CSS pixels: x, y, width, height), so that a test can click what a player clicks.
+    pub fn publish_panel(json: &str);
 }

@@ -203,8 +203,85 @@ try {
   await page.waitForTimeout(1500);
   const rk4 = pixels(await shot("ghosts"), green).length;
   check(rk4 > 50 && withoutGhosts < 5, `G draws the ghosts on the stiff scene (${rk4} pixels of rk4's green, ${withoutGhosts} before G)`);
+  // The panel (bottom right): "controls" unfolds it, a scene button loads that scene (its
+  // scripted band is drawn), pause stops the box. The page says where each button lies.
+  await page.keyboard.press("g");
+  const buttons = () => page.evaluate(() => window.rubberBandBox?.panel ?? {});
+  const centre = (r) => [r[0] + r[2] / 2, r[1] + r[3] / 2];
+  let places = await buttons();
+  check(Boolean(places.controls), `the panel's button is on screen (${JSON.stringify(places.controls)})`);
+  if (places.controls) {
+    await page.mouse.click(...centre(places.controls));
+    await page.waitForTimeout(500);
+    places = await buttons();
+    await page.mouse.click(...centre(places.tutorial));
+    await page.waitForTimeout(1000);
+    const scripted = pixels(await shot("panel-scene"), isBand).length;
+    check(scripted > 30, `the panel's "tutorial" loads the scene: its scripted band is drawn (${scripted} band pixels)`);
+    await page.mouse.click(...centre(places.pause));
+    await page.waitForTimeout(400);
+    const [a, b] = [boxPose(await shot("panel-paused")), (await page.waitForTimeout(700), boxPose(await shot("panel-paused-later")))];
+    const drift = a && b ? Math.hypot(a.x - b.x, a.y - b.y) : Infinity;
+    check(drift < 0.5, `the panel's "pause" stops the box (moved ${drift.toFixed(2)} px in 0.7 s)`);
+    places = await buttons();
+    check(Boolean(places.resume), `the pause button now says "resume"`);
+    if (places.resume) await page.mouse.click(...centre(places.resume));
+  }
+
+
+  // Phones, held upright and turned (CSS pixels, touch, twice as many device pixels): the
+  // HUD, the graph and the folded panel leave the box uncovered; a finger drags it; a tap
+  // unfolds the panel, which still leaves the box in view.
+  for (const [name, w, h] of [["phone-portrait", 390, 844], ["phone-landscape", 844, 390]]) {
+    const context = await browser.newContext({ viewport: { width: w, height: h }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
+    const phone = await context.newPage();
+    phone.on("pageerror", (e) => { if (!String(e).includes("Using exceptions for control flow")) errors.push(String(e)); });
+    const snap = async (label) => PNG.sync.read(await phone.screenshot({ path: path.join(screens, `${name}-${label}.png`), scale: "css" }));
+    await phone.goto(url);
+    // The scene fits the tutorial's 640 x 480 in the viewport: the box's side is 60 of those.
+    const scale = Math.min(w / 640, h / 480);
+    const expected = (60 * scale) ** 2;
+    let start = null;
+    for (let i = 0; i < 300 && !start; i++) {
+      const png = await snap("start");
+      const pose = boxPose(png);
+      if (pose && pixels(png, isBox).length > 0.5 * expected) start = { pose, seen: pixels(png, isBox).length };
+      else await phone.waitForTimeout(100);
+    }
+    check(start && start.seen > 0.9 * expected, `${name}: the box is in view and uncovered (${start?.seen} of ${expected.toFixed(0)} px)`);
+    if (!start) { await context.close(); continue; }
+    const cdp = await context.newCDPSession(phone);
+    const touch = (type, x, y) => cdp.send("Input.dispatchTouchEvent", { type, touchPoints: type === "touchEnd" ? [] : [{ x, y }] });
+    const [x0, y0] = [start.pose.x + 60 * scale, start.pose.y - 60 * scale];
+    await touch("touchStart", x0, y0);
+    for (let i = 1; i <= 10; i++) {
+      await touch("touchMove", x0 + 8 * i, y0 - 4 * i);
+      await phone.waitForTimeout(40);
+    }
+    await touch("touchEnd");
+    await phone.waitForTimeout(800);
+    const after = boxPose(await snap("dragged"));
+    const moved = after ? Math.hypot(after.x - start.pose.x, after.y - start.pose.y) : 0;
+    check(moved > 5 * scale, `${name}: a finger drags the box (${moved.toFixed(1)} px)`);
+    const places = await phone.evaluate(() => window.rubberBandBox?.panel ?? {});
+    if (places.controls) {
+      await phone.touchscreen.tap(...centre(places.controls));
+      await phone.waitForTimeout(600);
+      const open = await phone.evaluate(() => Boolean(window.rubberBandBox?.panel?.pause));
+      check(open, `${name}: a tap unfolds the panel`);
+      // Back to the start, still, and look: the panel must leave the box uncovered.
+      const reset = (await phone.evaluate(() => window.rubberBandBox?.panel ?? {})).reset;
+      if (reset) await phone.touchscreen.tap(...centre(reset));
+      await phone.waitForTimeout(600);
+      const seen = pixels(await snap("panel-open"), isBox).length;
+      check(seen > 0.9 * expected, `${name}: with the panel open the box is uncovered (${seen} of ${expected.toFixed(0)} px)`);
+    } else {
+      check(false, `${name}: the panel's button is on screen`);
+    }
+    await context.close();
+  }
   check(errors.length === 0, `no console errors${errors.length ? ": " + errors.join(" | ") : ""}`);
-  console.log(`first frame: ${firstFrameMs} ms after navigation, ${firstFrameBytes} bytes transferred`);
+  console.log(`first frame (desktop): ${firstFrameMs} ms after navigation, ${firstFrameBytes} bytes transferred`);
 } finally {
   await browser.close();
   server.close();

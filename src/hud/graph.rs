@@ -7,7 +7,7 @@ use bevy::prelude::*;
 use super::history::EnergyHistory;
 use super::{BAND_ENERGY_COLOUR, KINETIC_COLOUR, TOTAL_COLOUR};
 use crate::overlays::Overlays;
-use crate::physics::Energies;
+use crate::physics::{Energies, SCENE_SIZE};
 
 pub struct EnergyGraphPlugin;
 
@@ -24,12 +24,13 @@ fn hud_shown(overlays: Res<Overlays>) -> bool {
     !overlays.hud_hidden
 }
 
-/// The graph's size in world units, and its distance from the view's top-right corner.
+/// The graph's size in world units, and its distance from the top-right corner.
 const GRAPH_SIZE: Vec2 = Vec2::new(200.0, 80.0);
 const GRAPH_MARGIN: f32 = 8.0;
 
-/// Kinetic, band and total energy over the last seconds, in the view's top-right corner,
-/// scaled so that the largest total in view reaches the top.
+/// Kinetic, band and total energy over the last seconds, in the top-right corner of the
+/// tutorial's screen or of the view, whichever is lower (on a tall phone the view reaches far
+/// above the scene, where the HUD is), scaled so that the largest total in view reaches the top.
 fn draw_energy_graph(
     mut gizmos: Gizmos,
     history: Res<EnergyHistory>,
@@ -39,7 +40,7 @@ fn draw_energy_graph(
         return;
     };
     let area = projection.area;
-    let top_right = area.max - Vec2::splat(GRAPH_MARGIN);
+    let top_right = area.max.min(SCENE_SIZE.as_vec2() / 2.0) - Vec2::splat(GRAPH_MARGIN);
     let frame = Rect::from_corners(top_right - GRAPH_SIZE, top_right);
     gizmos.rect_2d(
         Isometry2d::from_translation(frame.center()),

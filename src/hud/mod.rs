@@ -25,6 +25,7 @@ use crate::physics::{
 };
 use crate::playback::Playback;
 use crate::recording::{Recorder, SceneName};
+use crate::schedule::ScreenSystems;
 use crate::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
 pub use history::EnergyHistory;
 
@@ -37,7 +38,10 @@ impl Plugin for HudPlugin {
         }
         app.add_plugins(history::EnergyHistoryPlugin)
             .add_systems(Startup, spawn_hud)
-            .add_systems(Update, (show_hud, title::show_state_in_title));
+            .add_systems(
+                Update,
+                (show_hud, title::show_state_in_title).in_set(ScreenSystems::Hud),
+            );
     }
 }
 

@@ -1,0 +1,232 @@
+//! The on-screen panel, driven headless through the picking events a click or a tap sends
+//! (press, release, click on the widget's entity): each button sends its key's action, the
+//! sliders set their parameter (refused values kept out), what it shows follows the game, and
+//! a press on it never grabs the box.
+
+mod common;
+
+use bevy::camera::{ManualTextureViewHandle, NormalizedRenderTarget};
+use bevy::picking::backend::HitData;
+use bevy::picking::events::{Click, Pointer, Press, Release};
+use bevy::picking::pointer::{Location, PointerButton, PointerId};
+use bevy::ui_widgets::{SetSliderValue, SliderValueChange};
+
+use common::*;
+use rubber_band_box::controls::{Action, CONTROLS, Parameter};
+use rubber_band_box::overlays::{ControlsArea, Overlays, StatusMessage};
+use rubber_band_box::panel::{PanelButton, PanelOpen, PanelSlider};
+use rubber_band_box::physics::Integrator;
+use rubber_band_box::recording::SceneName;
+
+fn button(game: &mut Game, does: PanelButton) -> Entity {
+    let world = game.world();
+    let mut buttons = world.query::<(Entity, &PanelButton)>();
+    buttons
+        .iter(world)
+        .find(|(_, b)| **b == does)
+        .map(|(entity, _)| entity)
+        .unwrap_or_else(|| panic!("no button for {does:?}"))
+}
+
+/// What a mouse click (or a finger's tap, `PointerId::Touch`) on `entity` sends through picking.
+fn click(game: &mut Game, entity: Entity, pointer: PointerId) {
+    let location = Location {
+        target: NormalizedRenderTarget::TextureView(ManualTextureViewHandle(0)),
+        position: Vec2::new(900.0, 40.0),
+    };
+    let hit = HitData::new(Entity::PLACEHOLDER, 0.0, None, None);
+    let button = PointerButton::Primary;
+    let world = game.world();
+    world.trigger(Pointer::new(
+        pointer,
+        location.clone(),
+        Press {
+            button,
+            hit: hit.clone(),
+            count: 1,
+        },
+        entity,
+    ));
+    world.flush();
+    world.trigger(Pointer::new(
+        pointer,
+        location.clone(),
+        Click {
+            button,
+            hit: hit.clone(),
+            duration: Duration::from_millis(80),
+            count: 1,
+        },
+        entity,
+    ));
+    world.trigger(Pointer::new(
+        pointer,
+        location,
+        Release { button, hit },
+        entity,
+    ));
+    world.flush();
+    game.update(1);
+}
+
+#[test]
+fn a_click_or_a_tap_on_a_button_does_what_its_key_does() {
+    let mut game = Game::stepping();
+    let fold = button(&mut game, PanelButton::Fold);
+    click(&mut game, fold, PointerId::Mouse);
+    assert!(game.world().resource::<PanelOpen>().0);
+
+    let pause = button(&mut game, PanelButton::Send(Action::TogglePause));
+    click(&mut game, pause, PointerId::Mouse);
+    game.update(1);
+    assert!(game.world().resource::<Time<Virtual>>().is_paused());
+    let steps = game.steps();
+    let step = button(&mut game, PanelButton::Send(Action::Step));
+    click(&mut game, step, PointerId::Touch(7));
+    game.update(2);
+    assert_eq!(game.steps(), steps + 1);
+    click(&mut game, pause, PointerId::Touch(7));
+    game.update(1);
+    assert!(!game.world().resource::<Time<Virtual>>().is_paused());
+
+    let rk4 = button(
+        &mut game,
+        PanelButton::Send(Action::Integrator(Integrator::Rk4)),
+    );
+    click(&mut game, rk4, PointerId::Touch(7));
+    assert_eq!(*game.world().resource::<Integrator>(), Integrator::Rk4);
+
+    let stiff = button(&mut game, PanelButton::Send(Action::Scene(2)));
+    click(&mut game, stiff, PointerId::Mouse);
+    game.update(1);
+    assert_eq!(game.world().resource::<SceneName>().0, "stiff");
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 1e5);
+
+    let ghosts = button(&mut game, PanelButton::Send(Action::ToggleGhosts));
+    click(&mut game, ghosts, PointerId::Mouse);
+    assert!(game.world().resource::<Overlays>().ghosts);
+    let faster = button(&mut game, PanelButton::Send(Action::MoreSteps));
+    click(&mut game, faster, PointerId::Mouse);
+    game.update(1);
+    assert_eq!(game.world().resource::<SceneParams>().step_rate_hz, 200.0);
+
+    click(&mut game, fold, PointerId::Mouse);
+    assert!(!game.world().resource::<PanelOpen>().0);
+}
+
+/// Every action a key sends has a button, but for the digits' scenes (each has one) and the
+/// single-key cycles the panel shows as choices.
+#[test]
+fn the_panel_reaches_every_control() {
+    let mut game = Game::stepping();
+    let world = game.world();
+    let sent: Vec<Action> = world
+        .query::<&PanelButton>()
+        .iter(world)
+        .filter_map(|b| match b {
+            PanelButton::Send(action) => Some(*action),
+            PanelButton::Fold => None,
+        })
+        .collect();
+    for control in CONTROLS {
+        assert_eq!(
+            control.keys.len(),
+            control.actions.len(),
+            "{}",
+            control.name
+        );
+        for action in control.actions {
+            let reached = match action {
+                // A choice of every integrator instead of "the next one".
+                Action::NextIntegrator => Integrator::ALL
+                    .iter()
+                    .all(|&i| sent.contains(&Action::Integrator(i))),
+                // k's slider instead of ÷10 and ×10.
+                Action::Softer | Action::Stiffer => true,
+                other => sent.contains(other),
+            };
+            assert!(
+                reached,
+                "no panel button for {action:?} ({})",
+                control.label
+            );
+        }
+    }
+    let sliders: Vec<Parameter> = world
+        .query::<&PanelSlider>()
+        .iter(world)
+        .map(|s| s.0)
+        .collect();
+    assert_eq!(sliders, Parameter::ALL);
+}
+
+fn slider(game: &mut Game, parameter: Parameter) -> Entity {
+    let world = game.world();
+    let mut sliders = world.query::<(Entity, &PanelSlider)>();
+    sliders
+        .iter(world)
+        .find(|(_, s)| s.0 == parameter)
+        .map(|(entity, _)| entity)
+        .unwrap()
+}
+
+/// k's slider is logarithmic (1e-2 to 1e12); a value the scene refuses is kept out, with a
+/// message, and the slider goes back to the value in force.
+#[test]
+fn sliders_set_parameters_through_validation() {
+    let mut game = Game::stepping();
+    let k = slider(&mut game, Parameter::Stiffness);
+    game.world().trigger(SetSliderValue {
+        entity: k,
+        change: SliderValueChange::Absolute(5.0),
+    });
+    game.update(2);
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 1e5);
+    game.world().trigger(SetSliderValue {
+        entity: k,
+        change: SliderValueChange::Absolute(40.0),
+    });
+    game.update(2);
+    assert_eq!(
+        game.world().resource::<SceneParams>().stiffness,
+        1e12,
+        "clamped to the range"
+    );
+
+    let mass = game.world().resource::<SceneParams>().mass;
+    game.world()
+        .write_message(Action::Set(Parameter::Mass, f64::NAN));
+    game.update(2);
+    assert_eq!(game.world().resource::<SceneParams>().mass, mass);
+    let said = game.world().resource::<StatusMessage>().0.clone().unwrap();
+    assert!(said.starts_with("refused: mass"), "{said}");
+    let mass_slider = slider(&mut game, Parameter::Mass);
+    let shown = game
+        .world()
+        .get::<bevy::ui_widgets::SliderValue>(mass_slider)
+        .unwrap()
+        .0;
+    assert!((shown - mass.log10() as f32).abs() < 1e-4, "{shown}");
+}
+
+/// A press where the panel lies is the panel's: no band; beside it, the band.
+#[test]
+fn a_press_on_the_panel_never_grabs_the_box() {
+    let mut game = Game::stepping();
+    let on_panel = Vec2::new(1200.0, 40.0);
+    game.world().resource_mut::<ControlsArea>().0 =
+        vec![Rect::from_center_size(on_panel, Vec2::new(100.0, 60.0))];
+    game.cursor(Some(on_panel));
+    game.mouse(ButtonState::Pressed);
+    game.update(2);
+    assert!(game.bands().is_empty());
+    game.touch_screen(3, TouchPhase::Started, on_panel);
+    game.update(2);
+    assert!(game.bands().is_empty());
+    game.touch_screen(3, TouchPhase::Ended, on_panel);
+    game.mouse(ButtonState::Released);
+    game.update(1);
+    game.press_at(DVec2::new(100.0, 50.0));
+    game.update(1);
+    assert_eq!(game.bands().len(), 1);
+}
