@@ -424,7 +424,7 @@ fn show_state(
     for (entity, PanelSlider(parameter), value) in &sliders {
         let (start, end, _) = parameter.slider();
         let wanted = parameter
-            .to_slider(parameter.get(&params))
+            .slider_position(parameter.get(&params))
             .clamp(start, end);
         if (value.0 - wanted).abs() > 1e-4 {
             commands.entity(entity).insert(SliderValue(wanted));
