@@ -8,15 +8,15 @@
 use bevy::prelude::*;
 use bevy::ui::UiGlobalTransform;
 use bevy::ui_widgets::{
-    Activate, Button, ButtonPlugin, Slider, SliderPlugin, SliderRange, SliderStep, SliderThumb,
-    SliderValue, TrackClick, ValueChange,
+    Activate, ActivateOnPress, Button, ButtonPlugin, Slider, SliderPlugin, SliderRange, SliderStep,
+    SliderThumb, SliderValue, TrackClick, ValueChange,
 };
 
 use crate::controls::{Action, Parameter};
 use crate::overlays::{ControlsArea, Overlays};
 use crate::physics::{Integrator, Scenario, SceneParams};
 use crate::recording::SceneName;
-use crate::schedule::ScreenSystems;
+use crate::schedule::{GameSystems, ScreenSystems};
 
 pub struct PanelPlugin;
 
@@ -36,6 +36,7 @@ impl Plugin for PanelPlugin {
             .add_observer(press_button)
             .add_observer(move_slider)
             .add_systems(Startup, spawn_panel)
+            .add_systems(RunFixedMainLoop, tap_buttons.in_set(GameSystems::Input))
             .add_systems(
                 Update,
                 (show_state, place_thumbs)
@@ -149,6 +150,8 @@ fn spawn_button(commands: &mut Commands, parent: Entity, label: &str, does: Pane
     commands.spawn((
         Name::new(format!("Panel button {label}")),
         Button,
+        // On the press, not the release: a quick tap (down and up in one frame) still counts.
+        ActivateOnPress,
         does,
         Node {
             min_height: px(BUTTON_HEIGHT),
@@ -275,7 +278,7 @@ fn spawn_panel(mut commands: Commands) {
         ("time", Readout::TimeScale, Action::Slower, Action::Faster),
     ] {
         let row = spawn_row(&mut commands, body, title);
-        spawn_button(&mut commands, row, "÷2", PanelButton::Send(slower));
+        spawn_button(&mut commands, row, "/2", PanelButton::Send(slower));
         commands.spawn((
             text(""),
             readout,
@@ -286,7 +289,7 @@ fn spawn_panel(mut commands: Commands) {
             },
             ChildOf(row),
         ));
-        spawn_button(&mut commands, row, "×2", PanelButton::Send(faster));
+        spawn_button(&mut commands, row, "x2", PanelButton::Send(faster));
     }
     let row = spawn_row(&mut commands, body, "show");
     for (label, action) in [
@@ -331,19 +334,59 @@ fn spawn_slider(commands: &mut Commands, row: Entity, parameter: Parameter) {
     ));
 }
 
-/// A button pressed (a click, a tap, or Enter while focused) sends its action.
+/// Where a UI node lies in the window, in logical pixels (what the pointer and the page use):
+/// the node's physical rectangle over the window's scale factor. `ComputedNode`'s inverse
+/// scale factor also divides by the UI scale, which is put back.
+fn window_rect(node: &ComputedNode, transform: &UiGlobalTransform, ui_scale: &UiScale) -> Rect {
+    let scale = node.inverse_scale_factor() * ui_scale.0;
+    Rect::from_center_size(transform.translation * scale, node.size() * scale)
+}
+
+/// What pressing a button does.
+fn press(does: PanelButton, open: &mut PanelOpen, actions: &mut MessageWriter<Action>) {
+    match does {
+        PanelButton::Fold => open.0 = !open.0,
+        PanelButton::Send(action) => {
+            actions.write(action);
+        }
+    }
+}
+
+/// A button pressed (a click, or Enter while focused) sends its action. While a finger is on
+/// the screen, touches are [`tap_buttons`]'s.
 fn press_button(
     activate: On<Activate>,
     buttons: Query<&PanelButton>,
+    touches: Res<Touches>,
     mut open: ResMut<PanelOpen>,
     mut actions: MessageWriter<Action>,
 ) {
-    match buttons.get(activate.entity) {
-        Ok(PanelButton::Fold) => open.0 = !open.0,
-        Ok(PanelButton::Send(action)) => {
-            actions.write(*action);
+    let fingers = touches.iter().next().is_some() || touches.any_just_released();
+    if let Ok(&does) = buttons.get(activate.entity)
+        && !fingers
+    {
+        press(does, &mut open, &mut actions);
+    }
+}
+
+/// A finger's tap on a button, read from the touches: in the browser, picking misses a new
+/// finger's first press (its pointer has no hover yet when the press is dispatched), so taps
+/// go through here.
+fn tap_buttons(
+    touches: Res<Touches>,
+    ui_scale: Res<UiScale>,
+    buttons: Query<(&PanelButton, &ComputedNode, &UiGlobalTransform)>,
+    mut open: ResMut<PanelOpen>,
+    mut actions: MessageWriter<Action>,
+) {
+    for touch in touches.iter_just_pressed() {
+        let tapped = buttons.iter().find(|(_, node, transform)| {
+            let rect = window_rect(node, transform, &ui_scale);
+            !rect.is_empty() && rect.contains(touch.position())
+        });
+        if let Some((&does, _, _)) = tapped {
+            press(does, &mut open, &mut actions);
         }
-        Err(_) => {}
     }
 }
 
@@ -450,14 +493,12 @@ fn place_thumbs(
 /// The panel's rectangle on screen, in logical pixels, for the pointer to leave alone.
 fn publish_area(
     panels: Query<(&ComputedNode, &UiGlobalTransform), With<Panel>>,
+    ui_scale: Res<UiScale>,
     mut area: ResMut<ControlsArea>,
 ) {
     let rects: Vec<Rect> = panels
         .iter()
-        .map(|(node, transform)| {
-            let scale = node.inverse_scale_factor();
-            Rect::from_center_size(transform.translation * scale, node.size() * scale)
-        })
+        .map(|(node, transform)| window_rect(node, transform, &ui_scale))
         .filter(|rect| !rect.is_empty())
         .collect();
     // Nothing laid out (no UI renderer: the headless game) leaves the area as it is.
@@ -470,6 +511,7 @@ fn publish_area(
 #[cfg(target_arch = "wasm32")]
 fn publish_buttons(
     buttons: Query<(&ComputedNode, &UiGlobalTransform, &Children), With<PanelButton>>,
+    ui_scale: Res<UiScale>,
     texts: Query<&Text>,
     mut published: Local<String>,
 ) {
@@ -478,8 +520,7 @@ fn publish_buttons(
         let Some(label) = children.first().and_then(|&child| texts.get(child).ok()) else {
             continue;
         };
-        let scale = node.inverse_scale_factor();
-        let rect = Rect::from_center_size(transform.translation * scale, node.size() * scale);
+        let rect = window_rect(node, transform, &ui_scale);
         places.entry(label.0.clone()).or_insert([
             rect.min.x,
             rect.min.y,

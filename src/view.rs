@@ -41,7 +41,7 @@ pub fn ui_scale_for(size: Vec2) -> f32 {
 }
 
 fn scale_ui_to_window(
-    windows: Query<&Window, (With<bevy::window::PrimaryWindow>, Changed<Window>)>,
+    windows: Query<&Window, With<bevy::window::PrimaryWindow>>,
     mut scale: ResMut<UiScale>,
 ) {
     for window in &windows {
