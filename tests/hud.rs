@@ -146,13 +146,13 @@ fn h_hides_and_shows_the_hud() {
         roots.iter(game.world()).copied().collect::<Vec<_>>()
     };
     game.update(1);
-    assert_eq!(visibilities(&mut game), [Visibility::Inherited; 2]);
+    assert_eq!(visibilities(&mut game), [Visibility::Inherited; 3]);
     game.tap_key(HUD);
     game.update(1);
-    assert_eq!(visibilities(&mut game), [Visibility::Hidden; 2]);
+    assert_eq!(visibilities(&mut game), [Visibility::Hidden; 3]);
     game.tap_key(HUD);
     game.update(1);
-    assert_eq!(visibilities(&mut game), [Visibility::Inherited; 2]);
+    assert_eq!(visibilities(&mut game), [Visibility::Inherited; 3]);
 }
 
 #[test]

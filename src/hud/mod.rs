@@ -75,8 +75,9 @@ pub enum HudLine {
 }
 
 impl HudLine {
-    /// The panel's lines, top to bottom (the help line sits apart, at the bottom).
-    pub const PANEL: [HudLine; 13] = [
+    /// The panel's lines, top to bottom (the ghosts' list and the help line sit apart, at
+    /// the bottom).
+    pub const PANEL: [HudLine; 12] = [
         HudLine::SceneName,
         HudLine::Integrator,
         HudLine::Clock,
@@ -89,7 +90,6 @@ impl HudLine {
         HudLine::Ledger,
         HudLine::Residual,
         HudLine::Replay,
-        HudLine::Ghosts,
     ];
 
     /// The line's colour: the energy lines in their graph colours (the graph's legend).
@@ -400,6 +400,20 @@ fn spawn_hud(mut commands: Commands) {
     for line in HudLine::PANEL {
         commands.spawn((text(line, FONT_SIZE), ChildOf(panel)));
     }
+    // Bottom left, above the help line: on a short screen (a phone turned) the panel's column
+    // and this list together would reach down over the box's start.
+    commands.spawn((
+        Name::new("HUD ghosts"),
+        Hud,
+        text(HudLine::Ghosts, FONT_SIZE),
+        Node {
+            position_type: PositionType::Absolute,
+            bottom: px(40),
+            left: px(6),
+            ..default()
+        },
+        BackgroundColor(PANEL_COLOUR),
+    ));
     commands.spawn((
         Name::new("HUD help"),
         Hud,
@@ -418,7 +432,7 @@ fn show_hud(
     sources: HudSources,
     overlays: Res<Overlays>,
     mut roots: Query<&mut Visibility, With<Hud>>,
-    mut lines: Query<(&HudLine, &mut Text, &mut TextColor)>,
+    mut lines: Query<(&HudLine, &mut Text, &mut TextColor, &mut Node)>,
 ) {
     let visibility = if overlays.hud_hidden {
         Visibility::Hidden
@@ -429,9 +443,20 @@ fn show_hud(
         shown.set_if_neq(visibility);
     }
     let readings = sources.readings();
-    for (line, mut text, mut colour) in &mut lines {
+    for (line, mut text, mut colour, mut node) in &mut lines {
         // Only write what changed, so change detection (and text layout) stays quiet.
         let content = line.text(&readings);
+        // The ghosts' list has a box of its own: none while the ghosts are off.
+        if *line == HudLine::Ghosts {
+            let display = if content.is_empty() {
+                Display::None
+            } else {
+                Display::Flex
+            };
+            if node.display != display {
+                node.display = display;
+            }
+        }
         if text.0 != content {
             text.0 = content;
         }
