@@ -133,11 +133,7 @@ impl Ghost {
             return;
         }
         self.stepper.band = band;
-        let now = self.stepper.energy();
-        match self.settled {
-            Some(settled) => self.ledger.hand(now - settled),
-            None => self.ledger = EnergyLedger::starting_at(now),
-        }
+        self.ledger.open_step(self.settled, self.stepper.energy());
         let before = self.stepper.state;
         let started = Instant::now();
         let info = self.stepper.step(dt);

@@ -315,8 +315,9 @@ fn report_the_end(
         return;
     }
     *said = Some(end);
-    info!("{}", end.describe());
-    status.0 = Some(end.describe());
+    let said = end.describe();
+    info!("{said}");
+    status.0 = Some(said);
     #[cfg(target_arch = "wasm32")]
     if let PlaybackEnd::Finished {
         steps,

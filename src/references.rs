@@ -1,14 +1,19 @@
 //! The answers the report and the side-by-side with the peers measure against: the work
 //! scenes with their converged solutions (a closed form where there is one, a fine RK4 run
-//! where not), and the stiff pulls with two tight, independent references each (Taylor series
-//! and DOP853) and the horizon within which they can judge a state at all. A leaf over the
+//! where not), the stiff pulls with two tight, independent references each (Taylor series
+//! and DOP853) and the horizon within which they can judge a state at all, and a recorded
+//! game's reference (`report --replay`). A leaf over the
 //! core: the report and the peers both use it, neither is used by it.
 
 use bevy::math::DVec2;
 
 use crate::physics::integrators::dop853;
 use crate::physics::integrators::taylor::{self, TaylorSettings};
-use crate::physics::{BandEnds, BodyState, Integrator, Run, Scenario, SceneParams};
+use crate::physics::{
+    AutoSettings, BandEnds, BodyState, Integrator, MassProperties, Run, Scenario, SceneParams,
+};
+use crate::replay::Replay;
+use crate::replay::run::ReplayRun;
 
 /// A scene of the work-precision sweep and how its reference is obtained.
 pub struct WorkScene {
@@ -245,5 +250,72 @@ impl StiffCase {
     /// Simulated seconds run.
     pub fn seconds(&self) -> f64 {
         self.ticks as f64 / self.rate
+    }
+}
+
+/// Every state after each recorded step of `replay` run with `integrator` (and `auto`'s
+/// settings if given), each recorded step split into `substeps` equal steps with the same
+/// band, and the seconds simulated; or the step where the run left every bound.
+pub fn replay_trajectory(
+    replay: &Replay,
+    integrator: Integrator,
+    substeps: u32,
+    auto: Option<AutoSettings>,
+) -> Result<(Vec<BodyState>, f64), u64> {
+    let mut run = ReplayRun::new(replay, Some(integrator))
+        .expect("a replay read from a file is valid")
+        .subdivided(substeps);
+    if let Some(auto) = auto {
+        run.stepper.auto = auto;
+    }
+    let mut states = Vec::with_capacity(replay.steps as usize);
+    while run.advance().is_some() {
+        if let Some(step) = run.refused {
+            return Err(step);
+        }
+        states.push(run.stepper.state);
+    }
+    Ok((states, run.time))
+}
+
+/// A recorded game's converged answer: the state after each recorded step of the tightest
+/// Taylor series (order 24 at 1e-15 px, no budget, so it never falls back) at the recorded
+/// rate, the seconds simulated, and the box the corner distance is measured on.
+pub struct ReplayReference {
+    pub states: Vec<BodyState>,
+    pub seconds: f64,
+    pub mass: MassProperties,
+}
+
+impl ReplayReference {
+    pub fn of(replay: &Replay) -> Self {
+        let tightest = AutoSettings {
+            tolerance: 1e-15,
+            order: 24,
+            max_substeps: u32::MAX,
+        };
+        let (states, seconds) = replay_trajectory(replay, Integrator::Auto, 1, Some(tightest))
+            .expect("the tightest series never leaves the bounds");
+        let mass = replay
+            .header
+            .settings
+            .params()
+            .mass_properties()
+            .expect("a replay read from a file is valid");
+        Self {
+            states,
+            seconds,
+            mass,
+        }
+    }
+
+    /// The largest corner distance over the game of `states` (a state after each recorded
+    /// step) from the reference's.
+    pub fn largest_error(&self, states: &[BodyState]) -> f64 {
+        states
+            .iter()
+            .zip(&self.states)
+            .map(|(state, reference)| state.pose_error(reference, &self.mass))
+            .fold(0.0, f64::max)
     }
 }

@@ -198,10 +198,8 @@ fn book_hand_work(
     mut books: ResMut<EnergyBooks>,
 ) {
     let now = mechanical_energies(&params, &bodies, &bands).total();
-    match books.settled {
-        Some(settled) => books.ledger.hand(now - settled),
-        None => books.ledger = EnergyLedger::starting_at(now),
-    }
+    let settled = books.settled;
+    books.ledger.open_step(settled, now);
 }
 
 fn settle_books(

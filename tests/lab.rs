@@ -10,30 +10,8 @@ use rubber_band_box::physics::{BodyState, Integrator, Scenario};
 use rubber_band_box::playback::{Playback, PlaybackEnd};
 use rubber_band_box::recording::SceneName;
 
-/// Every state the live box had after each fixed step.
-#[derive(Resource, Default)]
-struct Trajectory(Vec<[u64; 6]>);
-
-fn keep_trajectory(
-    mut trajectory: ResMut<Trajectory>,
-    boxes: Query<(&LinearState, &AngularState), With<RigidBox>>,
-) {
-    for (linear, angular) in &boxes {
-        let state = BodyState {
-            linear: *linear,
-            angular: *angular,
-        };
-        trajectory.0.push(state.to_array().map(f64::to_bits));
-    }
-}
-
 fn lab() -> Game {
-    Game::with(Duration::from_secs_f64(1.0 / 60.0), |app| {
-        app.init_resource::<Trajectory>().add_systems(
-            FixedUpdate,
-            keep_trajectory.after(PhysicsSystems::Integrate),
-        );
-    })
+    Game::keeping_trajectory(Duration::from_secs_f64(1.0 / 60.0), |_| {})
 }
 
 /// A hand: a drag with circles, a stiffer band, another integrator, a release, a reset.
@@ -70,8 +48,8 @@ fn ghosts_never_change_what_the_live_box_does() {
     play_a_hand(&mut with, Some(5));
     assert!(!with.world().resource::<Ghosts>().ghosts.is_empty());
     let (a, b) = (
-        &without.world().resource::<Trajectory>().0.clone(),
-        &with.world().resource::<Trajectory>().0,
+        bits(&without.world().resource::<Trajectory>().0),
+        bits(&with.world().resource::<Trajectory>().0),
     );
     assert!(a.len() > 300);
     assert_eq!(a, b);

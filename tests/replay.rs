@@ -20,30 +20,9 @@ use rubber_band_box::replay::run::ReplayRun;
 use rubber_band_box::replay::save::write_atomically;
 use rubber_band_box::replay::{MAX_LINE_BYTES, Replay, TrajectoryHash};
 
-/// Every state the game's box had after each fixed step, as the physics left it.
-#[derive(Resource, Default)]
-struct Trajectory(Vec<BodyState>);
-
-fn keep_trajectory(
-    mut trajectory: ResMut<Trajectory>,
-    boxes: Query<(&LinearState, &AngularState), With<RigidBox>>,
-) {
-    for (linear, angular) in &boxes {
-        trajectory.0.push(BodyState {
-            linear: *linear,
-            angular: *angular,
-        });
-    }
-}
-
 /// A headless game at 60 frames per second that keeps its trajectory.
 fn recorded_game() -> Game {
-    Game::with(Duration::from_secs_f64(1.0 / 60.0), |app| {
-        app.init_resource::<Trajectory>().add_systems(
-            FixedUpdate,
-            keep_trajectory.after(PhysicsSystems::Integrate),
-        );
-    })
+    Game::keeping_trajectory(Duration::from_secs_f64(1.0 / 60.0), |_| {})
 }
 
 /// What a hand does in one frame.
@@ -113,13 +92,6 @@ fn replayed(replay: &Replay) -> (Vec<BodyState>, TrajectoryHash) {
         states.push(run.stepper.state);
     }
     (states, run.hash)
-}
-
-fn bits(states: &[BodyState]) -> Vec<[u64; 6]> {
-    states
-        .iter()
-        .map(|state| state.to_array().map(f64::to_bits))
-        .collect()
 }
 
 proptest! {
@@ -429,13 +401,8 @@ proptest! {
 /// kept; it runs until the playback ends.
 fn played_back(replay: Replay, frame: Duration) -> Game {
     let (params, integrator, auto) = Playback::of(replay.clone()).start().unwrap();
-    let mut game = Game::with(frame, move |app| {
-        app.init_resource::<Trajectory>()
-            .add_systems(
-                FixedUpdate,
-                keep_trajectory.after(PhysicsSystems::Integrate),
-            )
-            .insert_resource(params)
+    let mut game = Game::keeping_trajectory(frame, move |app| {
+        app.insert_resource(params)
             .insert_resource(integrator)
             .insert_resource(auto)
             .insert_resource(Playback::of(replay));

@@ -10,7 +10,8 @@ use super::Contender;
 use super::avian::Avian;
 use super::ours::Ours;
 use super::rapier::Rapier;
-use crate::physics::{BandEnds, BodyState, MassProperties};
+use crate::physics::{BandEnds, BodyState};
+use crate::references::ReplayReference;
 use crate::replay::{Record, Replay, Settings};
 use crate::timing::median;
 
@@ -110,23 +111,18 @@ pub struct PeerReplayPoint {
 fn point<C: Contender>(
     replay: &Replay,
     substeps: u32,
-    reference: &[BodyState],
-    mass: &MassProperties,
-    seconds: f64,
+    reference: &ReplayReference,
     reps: usize,
 ) -> PeerReplayPoint {
     let mut run = PeerReplay::<C>::new(replay, substeps);
-    let mut error: Option<f64> = Some(0.0);
-    let mut index = 0;
+    let mut states = Vec::with_capacity(replay.steps as usize);
     while run.advance().is_some() {
-        let state = run.state();
-        error = error.and_then(|worst| {
-            state
-                .is_finite()
-                .then(|| worst.max(state.pose_error(&reference[index], mass)))
-        });
-        index += 1;
+        states.push(run.state());
     }
+    let error = states
+        .iter()
+        .all(BodyState::is_finite)
+        .then(|| reference.largest_error(&states));
     let times = (0..reps)
         .map(|_| {
             let start = Instant::now();
@@ -140,33 +136,25 @@ fn point<C: Contender>(
         contender: C::NAME,
         substeps,
         error,
-        ns_per_simulated_second: median(times) / seconds,
+        ns_per_simulated_second: median(times) / reference.seconds,
     }
 }
 
-/// Every contender on `replay` at each subdivision, against `reference` (a state after each
-/// recorded step) over `seconds` of simulated time.
+/// Every contender on `replay` at each subdivision, against `reference`.
 pub fn sweep(
     replay: &Replay,
     subdivisions: &[u32],
-    reference: &[BodyState],
-    seconds: f64,
+    reference: &ReplayReference,
     quick: bool,
 ) -> Vec<PeerReplayPoint> {
     let reps = if quick { 1 } else { 3 };
-    let mass = replay
-        .header
-        .settings
-        .params()
-        .mass_properties()
-        .expect("a replay read from a file is valid");
     subdivisions
         .iter()
         .flat_map(|&substeps| {
             [
-                point::<Ours>(replay, substeps, reference, &mass, seconds, reps),
-                point::<Avian>(replay, substeps, reference, &mass, seconds, reps),
-                point::<Rapier>(replay, substeps, reference, &mass, seconds, reps),
+                point::<Ours>(replay, substeps, reference, reps),
+                point::<Avian>(replay, substeps, reference, reps),
+                point::<Rapier>(replay, substeps, reference, reps),
             ]
         })
         .collect()

@@ -94,6 +94,16 @@ impl EnergyLedger {
         }
     }
 
+    /// Before a step: the hand's work since the previous one, the change from `settled` (the
+    /// energy right after it) to `now` (the band has moved, attached or let go since); with
+    /// no previous step (`None`: the start, a reset), the ledger starts at `now`.
+    pub fn open_step(&mut self, settled: Option<f64>, now: f64) {
+        match settled {
+            Some(settled) => self.hand(now - settled),
+            None => *self = Self::starting_at(now),
+        }
+    }
+
     /// The hand changed the band's energy by `delta` (attach, move or release).
     pub fn hand(&mut self, delta: f64) {
         self.work_in += delta;

@@ -97,11 +97,7 @@ impl<'a> ReplayRun<'a> {
     /// One step as the game's fixed step takes it.
     fn step_with(&mut self, band: Option<BandEnds>) -> StepInfo {
         self.stepper.band = band;
-        let now = self.stepper.energy();
-        match self.settled {
-            Some(settled) => self.ledger.hand(now - settled),
-            None => self.ledger = EnergyLedger::starting_at(now),
-        }
+        self.ledger.open_step(self.settled, self.stepper.energy());
         let before = self.stepper.state;
         let step = self.dt / f64::from(self.substeps);
         let mut info = StepInfo::default();

@@ -77,13 +77,15 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     let quick = args.quick;
     if let Some(path) = &args.replay {
         let recorded = crate::replay::Replay::read_file(path).map_err(BadInput)?;
-        let points = replay::sweep(&recorded, quick);
+        // Run once, measured against by the integrators and, with `--peers`, the peers.
+        let reference = crate::references::ReplayReference::of(&recorded);
+        let points = replay::sweep(&recorded, &reference, quick);
         let name = path.display().to_string();
         #[allow(unused_mut)]
         let mut tables = vec![replay::table(&recorded, &name, &points)];
         #[cfg(feature = "peers")]
         if args.peers {
-            tables.push(peers::replay_table(&recorded, quick));
+            tables.push(peers::replay_table(&recorded, &reference, quick));
         }
         return write(&args.out, &tables, started);
     }

@@ -228,13 +228,15 @@ fn stiffness_side_by_side(cases: &[StiffCase], quick: bool) -> (Table, [Vec<Line
 
 /// `report --replay FILE --peers`: the contenders on the recorded hand at the recorded rate
 /// and finer, against the replay sweep's reference (`peers_replay.csv`).
-pub(super) fn replay_table(recorded: &crate::replay::Replay, quick: bool) -> Table {
-    let (reference, seconds) = super::replay::reference(recorded);
+pub(super) fn replay_table(
+    recorded: &crate::replay::Replay,
+    reference: &crate::references::ReplayReference,
+    quick: bool,
+) -> Table {
     let points = crate::peers::replay::sweep(
         recorded,
         super::replay::subdivisions(quick),
-        &reference,
-        seconds,
+        reference,
         quick,
     );
     let mut table = Table::new(

@@ -5,9 +5,9 @@
 //! and releases). The reference is the tightest Taylor series (order 24 at 1e-15 px) at the
 //! recorded rate; the error is the largest corner distance from it over the whole game.
 
-use crate::physics::{AutoSettings, BodyState, Integrator};
+use crate::physics::Integrator;
+use crate::references::{ReplayReference, replay_trajectory};
 use crate::replay::Replay;
-use crate::replay::run::ReplayRun;
 use crate::timing::median_ns;
 
 use super::table::{Cell, Column, Table};
@@ -18,68 +18,19 @@ pub(super) fn subdivisions(quick: bool) -> &'static [u32] {
     if quick { &[1, 4] } else { &[1, 2, 4, 8, 16] }
 }
 
-/// The reference: `auto` with its tightest series and no budget, so it never falls back.
-fn reference_settings() -> AutoSettings {
-    AutoSettings {
-        tolerance: 1e-15,
-        order: 24,
-        max_substeps: u32::MAX,
-    }
-}
-
-/// Every state after each recorded step and the seconds simulated, or the step where the run
-/// left every bound.
-fn trajectory(
-    replay: &Replay,
-    integrator: Integrator,
-    substeps: u32,
-    auto: Option<AutoSettings>,
-) -> Result<(Vec<BodyState>, f64), u64> {
-    let mut run = ReplayRun::new(replay, Some(integrator))
-        .expect("a replay read from a file is valid")
-        .subdivided(substeps);
-    if let Some(auto) = auto {
-        run.stepper.auto = auto;
-    }
-    let mut states = Vec::with_capacity(replay.steps as usize);
-    while run.advance().is_some() {
-        if let Some(step) = run.refused {
-            return Err(step);
-        }
-        states.push(run.stepper.state);
-    }
-    Ok((states, run.time))
-}
-
-/// The reference's state after each recorded step, and the seconds simulated.
-pub(super) fn reference(replay: &Replay) -> (Vec<BodyState>, f64) {
-    trajectory(replay, Integrator::Auto, 1, Some(reference_settings()))
-        .expect("the tightest series never leaves the bounds")
-}
-
 /// One point per integrator and rate.
-pub(super) fn sweep(replay: &Replay, quick: bool) -> Vec<WorkPoint> {
-    let (reference, seconds) = reference(replay);
-    let mass = replay
-        .header
-        .settings
-        .params()
-        .mass_properties()
-        .expect("a replay read from a file is valid");
+pub(super) fn sweep(replay: &Replay, reference: &ReplayReference, quick: bool) -> Vec<WorkPoint> {
     let mut points = Vec::new();
     for &substeps in subdivisions(quick) {
         for integrator in Integrator::ALL {
-            let outcome = trajectory(replay, integrator, substeps, None);
-            let error = outcome.as_ref().ok().map(|(states, _)| {
-                states
-                    .iter()
-                    .zip(&reference)
-                    .map(|(state, reference)| state.pose_error(reference, &mass))
-                    .fold(0.0, f64::max)
-            });
+            let outcome = replay_trajectory(replay, integrator, substeps, None);
+            let error = outcome
+                .as_ref()
+                .ok()
+                .map(|(states, _)| reference.largest_error(states));
             let reps = if quick { 3 } else { 7 };
             let ns = median_ns(reps, || {
-                let _ = std::hint::black_box(trajectory(replay, integrator, substeps, None));
+                let _ = std::hint::black_box(replay_trajectory(replay, integrator, substeps, None));
             });
             points.push(WorkPoint {
                 scene: "replay",
@@ -89,7 +40,7 @@ pub(super) fn sweep(replay: &Replay, quick: bool) -> Vec<WorkPoint> {
                 error,
                 diverged_at: outcome.err(),
                 energy_drift: None,
-                ns_per_simulated_second: ns / seconds,
+                ns_per_simulated_second: ns / reference.seconds,
             });
         }
     }

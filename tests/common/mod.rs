@@ -310,3 +310,42 @@ pub fn small_replay() -> Replay {
     }
     replay
 }
+
+/// Every state the game's box had after each fixed step, as the physics left it (a test adds
+/// it with [`Game::keeping_trajectory`]).
+#[derive(Resource, Default)]
+pub struct Trajectory(pub Vec<BodyState>);
+
+fn keep_trajectory(
+    mut trajectory: ResMut<Trajectory>,
+    boxes: Query<(&LinearState, &AngularState), With<RigidBox>>,
+) {
+    for (linear, angular) in &boxes {
+        trajectory.0.push(BodyState {
+            linear: *linear,
+            angular: *angular,
+        });
+    }
+}
+
+impl Game {
+    /// A headless game at `frame` per update that keeps its [`Trajectory`], with `extra`
+    /// applied as [`Game::with`] does.
+    pub fn keeping_trajectory(frame: Duration, extra: impl FnOnce(&mut App)) -> Self {
+        Self::with(frame, |app| {
+            app.init_resource::<Trajectory>().add_systems(
+                FixedUpdate,
+                keep_trajectory.after(PhysicsSystems::Integrate),
+            );
+            extra(app);
+        })
+    }
+}
+
+/// States as their bits, for comparing trajectories exactly.
+pub fn bits(states: &[BodyState]) -> Vec<[u64; 6]> {
+    states
+        .iter()
+        .map(|state| state.to_array().map(f64::to_bits))
+        .collect()
+}
