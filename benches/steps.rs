@@ -12,13 +12,13 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
-use rubber_band_box::ghosts::GhostsPlugin;
-use rubber_band_box::overlays::Overlays;
-use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
-use rubber_band_box::physics::{BandEnds, BodyState, Integrator, Scenario, SceneParams, Stepper};
-use rubber_band_box::simulation::{
+use rubber_band_box::game::ghosts::GhostsPlugin;
+use rubber_band_box::game::shared::Overlays;
+use rubber_band_box::game::simulation::{
     Band, PhysicsSystems, RigidBox, SimulationPlugin, rigid_box, run_single_threaded,
 };
+use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
+use rubber_band_box::physics::{BandEnds, BodyState, Integrator, Scenario, SceneParams, Stepper};
 
 fn core_step(c: &mut Criterion) {
     let mut group = c.benchmark_group("core_step");

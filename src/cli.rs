@@ -33,7 +33,7 @@ pub enum Command {
     /// Run a scene headless and write its trajectory as CSV to stdout.
     Simulate(Box<SimulateArgs>),
     /// Measure each integrator's speed against its error; print and write tables and a plot.
-    Report(crate::report::ReportArgs),
+    Report(crate::measure::report::ReportArgs),
 }
 
 #[derive(Args, Debug, Default)]

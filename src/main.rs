@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::ShapePlugin;
 
-use rubber_band_box::GamePlugin;
+use rubber_band_box::game::GamePlugin;
 use rubber_band_box::physics::{Integrator, SceneParams};
 
 /// How to start the game: `play` on the command line, defaults on the web.
@@ -59,11 +59,11 @@ fn main() -> ExitCode {
                 ExitCode::FAILURE
             }
         },
-        Some(Command::Report(args)) => match rubber_band_box::report::run(&args) {
+        Some(Command::Report(args)) => match rubber_band_box::measure::report::run(&args) {
             Ok(()) => ExitCode::SUCCESS,
             Err(error) => {
                 eprintln!("error: {error}");
-                if error.is::<rubber_band_box::report::BadInput>() {
+                if error.is::<rubber_band_box::measure::report::BadInput>() {
                     ExitCode::from(2)
                 } else {
                     ExitCode::FAILURE
@@ -101,10 +101,10 @@ fn play(args: PlayArgs) -> ExitCode {
                 return ExitCode::from(2);
             }
         };
-        app.insert_resource(rubber_band_box::recording::SceneName(
+        app.insert_resource(rubber_band_box::game::replays::recording::SceneName(
             replay.header.scene.clone(),
         ));
-        let playback = rubber_band_box::playback::Playback::of(replay);
+        let playback = rubber_band_box::game::replays::playback::Playback::of(replay);
         if let Some((start, recorded, auto)) = playback.start() {
             (params, integrator) = (start, recorded);
             app.insert_resource(auto);
@@ -126,9 +126,9 @@ fn play(args: PlayArgs) -> ExitCode {
             );
             return ExitCode::from(2);
         }
-        app.insert_resource(rubber_band_box::recording::Recorder::to_file(target));
+        app.insert_resource(rubber_band_box::game::replays::recording::Recorder::to_file(target));
         #[cfg(unix)]
-        rubber_band_box::recording::sigterm::exit_on_sigterm(&mut app);
+        rubber_band_box::game::replays::recording::sigterm::exit_on_sigterm(&mut app);
     }
     app.insert_resource(ClearColor(Color::BLACK))
         .insert_resource(params)

@@ -3,11 +3,11 @@
 mod common;
 
 use common::*;
-use rubber_band_box::controls::{
+use rubber_band_box::game::input::controls::{
     CONTROLS, FASTER, FEWER_STEPS, MORE_STEPS, PAUSE, RESET, SINGLE_STEP, SLOWER, SOFTER, STIFFER,
     TRAIL, VECTORS, help_line, key_hint,
 };
-use rubber_band_box::overlays::Overlays;
+use rubber_band_box::game::shared::Overlays;
 
 #[test]
 fn pause_stops_the_fixed_steps_and_resume_continues() {

@@ -4,8 +4,8 @@
 mod common;
 
 use common::*;
-use rubber_band_box::controls::{HUD, PAUSE};
-use rubber_band_box::hud::HudReadings;
+use rubber_band_box::game::hud::HudReadings;
+use rubber_band_box::game::input::controls::{HUD, PAUSE};
 use rubber_band_box::physics::{Energies, EnergyLedger};
 
 fn readings() -> HudReadings {
@@ -210,7 +210,7 @@ fn reset_restarts_the_graph_and_the_clock() {
         "{}",
         game.hud(HudLine::Clock)
     );
-    game.tap_key(rubber_band_box::controls::RESET);
+    game.tap_key(rubber_band_box::game::input::controls::RESET);
     game.update(1);
     let history = game.world().resource::<EnergyHistory>().clone();
     assert!(history.samples.len() <= 1, "{:?}", history.samples);

@@ -1,13 +1,13 @@
 //! The integrators against closed forms, invariants, the tutorial and the hard cases.
 
 use bevy::math::DVec2;
+use rubber_band_box::measure::references::diagonal_exact;
+use rubber_band_box::measure::report::hard_cases;
 use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
 use rubber_band_box::physics::{
     AutoSettings, BodyState, Integrator, Pull, Run, Scenario, SceneParams, Stepper,
     angular_momentum_about,
 };
-use rubber_band_box::references::diagonal_exact;
-use rubber_band_box::report::hard_cases;
 
 /// The largest pose error against the closed form over 2 s of the diagonal pull.
 fn diagonal_error(integrator: Integrator, dt: f64) -> f64 {

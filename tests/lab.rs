@@ -4,11 +4,13 @@
 mod common;
 
 use common::*;
-use rubber_band_box::controls::{CYCLE_INTEGRATOR, GHOSTS, RESET, SCENE_KEYS, STIFFER};
-use rubber_band_box::ghosts::{GhostKind, Ghosts};
+use rubber_band_box::game::ghosts::{GhostKind, Ghosts};
+use rubber_band_box::game::input::controls::{
+    CYCLE_INTEGRATOR, GHOSTS, RESET, SCENE_KEYS, STIFFER,
+};
+use rubber_band_box::game::replays::playback::{Playback, PlaybackEnd};
+use rubber_band_box::game::replays::recording::SceneName;
 use rubber_band_box::physics::{BodyState, Integrator, Scenario};
-use rubber_band_box::playback::{Playback, PlaybackEnd};
-use rubber_band_box::recording::SceneName;
 
 fn lab() -> Game {
     Game::keeping_trajectory(Duration::from_secs_f64(1.0 / 60.0), |_| {})

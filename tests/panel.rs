@@ -12,11 +12,11 @@ use bevy::picking::pointer::{Location, PointerButton, PointerId};
 use bevy::ui_widgets::{SetSliderValue, SliderValueChange};
 
 use common::*;
-use rubber_band_box::controls::{Action, CONTROLS, Parameter};
-use rubber_band_box::overlays::{ControlsArea, Overlays, StatusMessage};
-use rubber_band_box::panel::{PanelButton, PanelOpen, PanelSlider};
+use rubber_band_box::game::input::controls::{Action, CONTROLS, Parameter};
+use rubber_band_box::game::input::panel::{PanelButton, PanelOpen, PanelSlider};
+use rubber_band_box::game::replays::recording::SceneName;
+use rubber_band_box::game::shared::{ControlsArea, Overlays, StatusMessage};
 use rubber_band_box::physics::Integrator;
-use rubber_band_box::recording::SceneName;
 
 fn button(game: &mut Game, does: PanelButton) -> Entity {
     let world = game.world();

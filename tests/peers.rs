@@ -4,12 +4,12 @@
 
 mod common;
 
-use rubber_band_box::peers::avian::Avian;
-use rubber_band_box::peers::ours::Ours;
-use rubber_band_box::peers::rapier::Rapier;
-use rubber_band_box::peers::{Contender, PeerRun, unwrap_angle};
+use rubber_band_box::measure::peers::avian::Avian;
+use rubber_band_box::measure::peers::ours::Ours;
+use rubber_band_box::measure::peers::rapier::Rapier;
+use rubber_band_box::measure::peers::{Contender, PeerRun, unwrap_angle};
+use rubber_band_box::measure::references::reference_state;
 use rubber_band_box::physics::{BodyState, Integrator, Run, Scenario};
-use rubber_band_box::references::reference_state;
 
 #[test]
 fn our_contender_steps_exactly_as_the_core() {
@@ -159,7 +159,7 @@ fn avian2d_keeps_f64_positions_with_no_transform_round_trip() {
 /// at the recorded rate and at twice it; the peers follow the same band.
 #[test]
 fn a_replay_drives_every_contender_with_the_recorded_hand() {
-    use rubber_band_box::peers::replay::PeerReplay;
+    use rubber_band_box::measure::peers::replay::PeerReplay;
     use rubber_band_box::replay::run::ReplayRun;
 
     let replay = common::small_replay();

@@ -15,13 +15,13 @@ use bevy::window::WindowFocused;
 use proptest::prelude::*;
 
 use common::Game;
-use rubber_band_box::controls;
+use rubber_band_box::game::input::controls;
+use rubber_band_box::game::input::pointer::Grip;
+use rubber_band_box::game::simulation::{ForceAccumulator, RigidBox, Tap};
 use rubber_band_box::physics::{
     AngularState, BodyState, Integrator, LinearState, Pull, Run, SceneParams, Stepper,
     kinetic_energy,
 };
-use rubber_band_box::pointer::Grip;
-use rubber_band_box::simulation::{ForceAccumulator, RigidBox, Tap};
 
 fn cases(n: u32) -> ProptestConfig {
     let long = std::env::var("RBB_LONG").is_ok_and(|v| v == "1");
@@ -308,8 +308,8 @@ proptest! {
             prop_assert!(angular.orientation.is_finite() && angular.angular_velocity.is_finite());
             // The books balance to `auto`'s error whenever it never fell back (a fall-back is
             // an `implicit` step, which damps; k may have been stiff before it was soft).
-            let books = *game.world().resource::<rubber_band_box::simulation::EnergyBooks>();
-            let stats = *game.world().resource::<rubber_band_box::simulation::StepStats>();
+            let books = *game.world().resource::<rubber_band_box::game::simulation::EnergyBooks>();
+            let stats = *game.world().resource::<rubber_band_box::game::simulation::StepStats>();
             let auto = *game.world().resource::<Integrator>() == Integrator::Auto;
             let soft = game.world().resource::<SceneParams>().stiffness <= 1e4;
             let never_fell_back = stats.fallbacks == 0;

@@ -9,13 +9,13 @@ use std::path::PathBuf;
 use proptest::prelude::*;
 
 use common::*;
-use rubber_band_box::controls::{
+use rubber_band_box::game::input::controls::{
     FASTER, FEWER_STEPS, MORE_STEPS, PAUSE, RESET, SAVE, SINGLE_STEP, SOFTER, STIFFER,
 };
-use rubber_band_box::overlays::StatusMessage;
+use rubber_band_box::game::replays::playback::{self, Playback, PlaybackEnd};
+use rubber_band_box::game::replays::recording::Recorder;
+use rubber_band_box::game::shared::StatusMessage;
 use rubber_band_box::physics::BodyState;
-use rubber_band_box::playback::{self, Playback, PlaybackEnd};
-use rubber_band_box::recording::Recorder;
 use rubber_band_box::replay::run::ReplayRun;
 use rubber_band_box::replay::save::write_atomically;
 use rubber_band_box::replay::{MAX_LINE_BYTES, Replay, TrajectoryHash};

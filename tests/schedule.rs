@@ -385,7 +385,7 @@ fn a_reset_in_the_frame_of_a_press_lets_go_and_leaves_no_band_behind() {
     );
 
     game.press_at(DVec2::new(-200.0, 100.0));
-    game.tap_key(rubber_band_box::controls::RESET);
+    game.tap_key(rubber_band_box::game::input::controls::RESET);
     game.update(1);
     assert!(game.bands().is_empty(), "{:?}", game.bands());
     assert_eq!(*game.world().resource::<Grip>(), Grip(None));
@@ -567,8 +567,8 @@ fn the_state_survives_a_resize_and_the_pointer_follows_the_new_view() {
 /// jitter no other test would see.)
 #[test]
 fn the_drawn_state_moves_forward_every_frame_between_steps() {
-    use rubber_band_box::simulation::RenderSnapshots;
-    use rubber_band_box::view::interpolated_state;
+    use rubber_band_box::game::screen::view::interpolated_state;
+    use rubber_band_box::game::simulation::RenderSnapshots;
     let mut game = Game::new(Duration::from_millis(7));
     // Along the diagonal from rest: x grows for the first half period, about 1.5 s.
     game.press_at(DVec2::new(150.0, 150.0));

@@ -1,5 +1,5 @@
 //! Replays: what reached the physics at each fixed step of a game (the band, the settings the
-//! controls changed, the resets), as data. The game records one ([`crate::recording`]);
+//! controls changed, the resets), as data. The game records one ([`crate::game::replays::recording`]);
 //! `simulate --replay` and the tests step it again with the core ([`run::ReplayRun`]) and get
 //! the game's states to the bit.
 //!
@@ -10,7 +10,7 @@
 pub mod run;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod save;
-pub mod scene;
+pub mod script;
 
 use std::fmt;
 use std::io::{self, BufRead, Read, Write};

@@ -21,18 +21,18 @@ pub use bevy::window::{
     ExitCondition, PrimaryWindow, WindowFocused, WindowPlugin, WindowResolution,
 };
 
-pub use rubber_band_box::GameLogicPlugin;
-pub use rubber_band_box::controls::CYCLE_INTEGRATOR;
-pub use rubber_band_box::hud::{EnergyHistory, Hud, HudLine};
-pub use rubber_band_box::physics::{
-    AngularState, Integrator, LinearState, SceneParams, Stepper, Wrench,
-};
-pub use rubber_band_box::pointer::{Grip, PointerPlugin, PointerSource};
-pub use rubber_band_box::simulation::{
+pub use rubber_band_box::game::GameLogicPlugin;
+pub use rubber_band_box::game::hud::{EnergyHistory, Hud, HudLine};
+pub use rubber_band_box::game::input::controls::CYCLE_INTEGRATOR;
+pub use rubber_band_box::game::input::pointer::{Grip, PointerPlugin, PointerSource};
+pub use rubber_band_box::game::screen::view::scene_projection;
+pub use rubber_band_box::game::simulation::{
     Band, EnergyBooks, ForceAccumulator, PhysicsSystems, RigidBox, SimulationPlugin, StepCount,
     StepStats,
 };
-pub use rubber_band_box::view::scene_projection;
+pub use rubber_band_box::physics::{
+    AngularState, Integrator, LinearState, SceneParams, Stepper, Wrench,
+};
 
 use rubber_band_box::physics::{AutoSettings, BandEnds, BodyState};
 use rubber_band_box::replay::{Replay, Settings};

@@ -1,0 +1,237 @@
+//! Ghosts (G): every integrator, and a reference, stepping the live box's scene beside it under
+//! the live band (the same anchor path, the same attach and release steps), so that a player
+//! sees each method's distance from the converged answer follow their own hand. Each ghost is
+//! the core's [`Stepper`] with its own energy books; the live box never reads them.
+//!
+//! A ghost whose step leaves the bounds freezes there, with the step. The reference is the
+//! tightest Taylor series the core has, with a budget of substeps so that a stiff band cannot
+//! stall the frame; a step that exhausts it falls back to `implicit` and is counted as capped.
+//! Ghosts restart from the live box at a reset (and so at a scene or replay opened) and when
+//! they are switched on.
+
+use bevy::platform::time::Instant;
+use bevy::prelude::*;
+
+use crate::game::shared::Overlays;
+use crate::game::simulation::{ForceAccumulator, PhysicsSystems, ResetScene, RigidBox, body_state};
+use crate::physics::{
+    AutoSettings, BandEnds, BodyState, EnergyLedger, Integrator, MassProperties, SceneParams,
+    StepInfo, Stepper,
+};
+
+pub struct GhostsPlugin;
+
+impl Plugin for GhostsPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<Ghosts>()
+            .init_resource::<Overlays>()
+            .add_observer(restart_on_reset)
+            .add_systems(
+                FixedUpdate,
+                // The step's band is in the accumulator between these two.
+                step_ghosts
+                    .after(PhysicsSystems::Accumulate)
+                    .before(PhysicsSystems::Integrate),
+            );
+    }
+}
+
+/// The reference: Taylor series of order 24 at 1e-13 px per step, at most this many
+/// substeps a fixed step.
+pub const REFERENCE: AutoSettings = AutoSettings {
+    tolerance: 1e-13,
+    order: 24,
+    max_substeps: 2000,
+};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GhostKind {
+    Method(Integrator),
+    Reference,
+}
+
+impl GhostKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Method(integrator) => integrator.name(),
+            Self::Reference => "reference",
+        }
+    }
+
+    /// Its outline's colour: one per integrator, white for the reference.
+    pub fn colour(self) -> Color {
+        match self {
+            Self::Method(Integrator::Euler) => Color::srgb(0.95, 0.35, 0.3),
+            Self::Method(Integrator::Symplectic) => Color::srgb(0.95, 0.65, 0.2),
+            Self::Method(Integrator::Verlet) => Color::srgb(0.9, 0.9, 0.3),
+            Self::Method(Integrator::Rk4) => Color::srgb(0.4, 0.85, 0.4),
+            Self::Method(Integrator::Implicit) => Color::srgb(0.35, 0.8, 0.95),
+            Self::Method(Integrator::Seed) => Color::srgb(0.75, 0.5, 0.95),
+            Self::Method(Integrator::Auto) => Color::srgb(0.95, 0.5, 0.8),
+            Self::Reference => Color::WHITE,
+        }
+    }
+}
+
+/// One ghost: a stepper following the live band.
+#[derive(Clone, Debug)]
+pub struct Ghost {
+    pub kind: GhostKind,
+    pub stepper: Stepper,
+    /// The state before the latest step, for drawing between the two.
+    pub previous: BodyState,
+    /// The step at which it left the bounds (frozen since).
+    pub diverged_at: Option<u64>,
+    pub ledger: EnergyLedger,
+    /// Mechanical energy right after the latest step.
+    settled: Option<f64>,
+    pub last: StepInfo,
+    /// Steps taken since the (re)start.
+    pub steps: u64,
+    /// Steps that ran out of the substep budget (the reference only: see [`REFERENCE`]).
+    pub capped: u64,
+    /// Wall time of a step, averaged over the latest few dozen (ns).
+    pub ns_per_step: f64,
+}
+
+impl Ghost {
+    pub fn new(
+        kind: GhostKind,
+        params: SceneParams,
+        mass: MassProperties,
+        state: BodyState,
+    ) -> Self {
+        let (integrator, auto) = match kind {
+            GhostKind::Method(integrator) => (integrator, AutoSettings::default()),
+            GhostKind::Reference => (Integrator::Auto, REFERENCE),
+        };
+        Self {
+            kind,
+            stepper: Stepper {
+                params,
+                mass,
+                state,
+                band: None,
+                integrator,
+                auto,
+            },
+            previous: state,
+            diverged_at: None,
+            ledger: EnergyLedger::default(),
+            settled: None,
+            last: StepInfo::SINGLE,
+            steps: 0,
+            capped: 0,
+            ns_per_step: 0.0,
+        }
+    }
+
+    /// One step of `dt` under `band`, as the game's fixed step takes one, the books kept as
+    /// the game keeps them. A step that leaves the bounds is undone and the ghost frozen.
+    pub fn step(&mut self, band: Option<BandEnds>, dt: f64) {
+        if self.diverged_at.is_some() {
+            return;
+        }
+        self.stepper.band = band;
+        self.ledger.open_step(self.settled, self.stepper.energy());
+        let before = self.stepper.state;
+        let started = Instant::now();
+        let info = self.stepper.step(dt);
+        let ns = started.elapsed().as_nanos() as f64;
+        self.ns_per_step = if self.steps == 0 {
+            ns
+        } else {
+            0.95 * self.ns_per_step + 0.05 * ns
+        };
+        self.steps += 1;
+        self.last = info;
+        self.capped += u64::from(info.fell_back && self.kind == GhostKind::Reference);
+        if self.stepper.state.is_sane() {
+            self.previous = before;
+            self.ledger.dissipated += info.dissipated;
+            self.settled = Some(self.stepper.energy());
+        } else {
+            self.stepper.state = before;
+            self.previous = before;
+            self.diverged_at = Some(self.steps);
+        }
+    }
+
+    /// The books' residual now: the integrator's energy error since the (re)start.
+    pub fn residual(&self) -> f64 {
+        self.ledger.residual(self.stepper.energy())
+    }
+}
+
+/// The ghosts, every integrator then the reference; empty while they are off.
+#[derive(Resource, Debug, Default)]
+pub struct Ghosts {
+    pub ghosts: Vec<Ghost>,
+    restart: bool,
+}
+
+impl Ghosts {
+    pub fn reference(&self) -> Option<&Ghost> {
+        self.ghosts.iter().find(|g| g.kind == GhostKind::Reference)
+    }
+
+    /// How far `ghost` is from the reference now (px: the largest corner distance, so the
+    /// orientation counts as the corner's 30·θ).
+    pub fn distance_from_reference(&self, ghost: &Ghost) -> Option<f64> {
+        let reference = self.reference()?;
+        Some(
+            ghost
+                .stepper
+                .state
+                .pose_error(&reference.stepper.state, &ghost.stepper.mass),
+        )
+    }
+}
+
+fn restart_on_reset(_reset: On<ResetScene>, mut ghosts: ResMut<Ghosts>) {
+    ghosts.restart = true;
+}
+
+/// Before the live box's integration: every ghost takes the same step under the same band,
+/// with the settings in force. Switched off, they are dropped, to start again from the live
+/// box when switched on.
+fn step_ghosts(
+    overlays: Res<Overlays>,
+    mut ghosts: ResMut<Ghosts>,
+    time: Res<Time<Fixed>>,
+    params: Res<SceneParams>,
+    boxes: Query<
+        (
+            &crate::physics::LinearState,
+            &crate::physics::AngularState,
+            &MassProperties,
+            &ForceAccumulator,
+        ),
+        With<RigidBox>,
+    >,
+) {
+    if !overlays.ghosts {
+        if !ghosts.ghosts.is_empty() {
+            ghosts.ghosts.clear();
+        }
+        return;
+    }
+    let Ok((linear, angular, mass, accumulator)) = boxes.single() else {
+        return;
+    };
+    if ghosts.ghosts.is_empty() || std::mem::take(&mut ghosts.restart) {
+        let start = body_state(linear, angular);
+        ghosts.ghosts = Integrator::ALL
+            .map(GhostKind::Method)
+            .into_iter()
+            .chain([GhostKind::Reference])
+            .map(|kind| Ghost::new(kind, *params, *mass, start))
+            .collect();
+    }
+    let dt = time.timestep().as_secs_f64();
+    for ghost in &mut ghosts.ghosts {
+        ghost.stepper.params = *params;
+        ghost.stepper.mass = *mass;
+        ghost.step(accumulator.band, dt);
+    }
+}

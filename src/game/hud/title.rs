@@ -1,0 +1,49 @@
+//! The window title: the essentials of the HUD for when it is hidden, and the keys.
+
+use bevy::prelude::*;
+use bevy::window::PrimaryWindow;
+
+use crate::game::input::controls::key_hint;
+use crate::game::simulation::{EnergyBooks, StepStats};
+use crate::physics::{Integrator, SceneParams};
+
+/// "Rubber Band Box: auto (2 substeps, 0 fall-backs), k 20, 100 Hz, time ×1, paused; keys".
+pub fn show_state_in_title(
+    integrator: Res<Integrator>,
+    stats: Res<StepStats>,
+    params: Res<SceneParams>,
+    books: Res<EnergyBooks>,
+    virtual_time: Res<Time<Virtual>>,
+    mut window: Option<Single<&mut Window, With<PrimaryWindow>>>,
+) {
+    let Some(window) = window.as_deref_mut() else {
+        return;
+    };
+    let mut title = format!("Rubber Band Box: {}", *integrator);
+    if *integrator == Integrator::Auto {
+        let plural = |n: u64, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
+        title += &format!(
+            " ({}, {})",
+            plural(u64::from(stats.substeps), "substep"),
+            plural(stats.fallbacks, "fall-back")
+        );
+    }
+    title += &format!(
+        ", k {}, {} Hz, time ×{}",
+        params.stiffness,
+        params.step_rate_hz,
+        virtual_time.relative_speed_f64()
+    );
+    title += &format!(", energy error {:.1e}", books.residual);
+    if virtual_time.is_paused() {
+        title += ", paused (N steps)";
+    }
+    if let Some((diverged, step)) = stats.divergence {
+        title += &format!(", {diverged} diverged at step {step}: steps refused");
+    }
+    title += "; ";
+    title += &key_hint();
+    if window.title != title {
+        window.title = title;
+    }
+}

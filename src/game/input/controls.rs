@@ -1,0 +1,390 @@
+//! The controls: every action a player can take ([`Action`]), from the keys or from the
+//! on-screen panel, applied in one place before the fixed loop ([`GameSystems::Controls`]) so
+//! that it acts on the very next step. The keys are listed once, in [`CONTROLS`], with the
+//! action each sends: the HUD's help line, the window title's hint and README's table are
+//! written from it (a test holds README to it). A value that `SceneParams::validate` refuses
+//! is not applied, and the HUD's status line says why.
+
+use bevy::ecs::system::SystemParam;
+use bevy::prelude::*;
+
+use crate::game::replays::recording::SaveReplay;
+use crate::game::replays::scenes::LoadScene;
+use crate::game::schedule::GameSystems;
+use crate::game::shared::{Overlays, StatusMessage};
+use crate::game::simulation::ResetScene;
+use crate::physics::{Integrator, Scenario, SceneParams};
+
+pub struct ControlsPlugin;
+
+impl Plugin for ControlsPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<Overlays>()
+            .init_resource::<StatusMessage>()
+            .add_message::<Action>()
+            .add_systems(
+                RunFixedMainLoop,
+                (keys_to_actions, apply_actions)
+                    .chain()
+                    .in_set(GameSystems::Controls),
+            );
+    }
+}
+
+pub const PAUSE: KeyCode = KeyCode::Space;
+pub const SINGLE_STEP: KeyCode = KeyCode::KeyN;
+pub const RESET: KeyCode = KeyCode::KeyR;
+pub const CYCLE_INTEGRATOR: KeyCode = KeyCode::KeyI;
+pub const SOFTER: KeyCode = KeyCode::BracketLeft;
+pub const STIFFER: KeyCode = KeyCode::BracketRight;
+pub const SLOWER: KeyCode = KeyCode::Minus;
+pub const FASTER: KeyCode = KeyCode::Equal;
+pub const FEWER_STEPS: KeyCode = KeyCode::PageDown;
+pub const MORE_STEPS: KeyCode = KeyCode::PageUp;
+pub const VECTORS: KeyCode = KeyCode::KeyV;
+pub const TRAIL: KeyCode = KeyCode::KeyT;
+pub const HUD: KeyCode = KeyCode::KeyH;
+pub const SAVE: KeyCode = KeyCode::KeyS;
+pub const OPEN: KeyCode = KeyCode::KeyO;
+pub const GHOSTS: KeyCode = KeyCode::KeyG;
+/// The named scenes, in the core's order ([`Scenario::NAMES`]).
+pub const SCENE_KEYS: [KeyCode; 10] = [
+    KeyCode::Digit1,
+    KeyCode::Digit2,
+    KeyCode::Digit3,
+    KeyCode::Digit4,
+    KeyCode::Digit5,
+    KeyCode::Digit6,
+    KeyCode::Digit7,
+    KeyCode::Digit8,
+    KeyCode::Digit9,
+    KeyCode::Digit0,
+];
+
+const SCENE_ACTIONS: [Action; 10] = [
+    Action::Scene(0),
+    Action::Scene(1),
+    Action::Scene(2),
+    Action::Scene(3),
+    Action::Scene(4),
+    Action::Scene(5),
+    Action::Scene(6),
+    Action::Scene(7),
+    Action::Scene(8),
+    Action::Scene(9),
+];
+
+pub const STIFFNESS_RANGE: (f64, f64) = (1e-2, 1e12);
+pub const TIME_SCALE_RANGE: (f64, f64) = (1.0 / 16.0, 16.0);
+pub const STEP_RATE_RANGE: (f64, f64) = (8.0, 4096.0);
+
+/// Everything a player can do but drag: what a key and a panel button send.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub enum Action {
+    TogglePause,
+    /// One fixed step, while paused.
+    Step,
+    Reset,
+    NextIntegrator,
+    Integrator(Integrator),
+    Softer,
+    Stiffer,
+    Slower,
+    Faster,
+    FewerSteps,
+    MoreSteps,
+    /// A parameter set to a value (the panel's sliders), refused if not valid.
+    Set(Parameter, f64),
+    ToggleVectors,
+    ToggleTrail,
+    ToggleGhosts,
+    ToggleHud,
+    Save,
+    Open,
+    /// The scene at this place in [`Scenario::NAMES`].
+    Scene(usize),
+}
+
+/// A scene parameter the panel sets directly.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Parameter {
+    Stiffness,
+    Mass,
+    LinearDamping,
+    AngularDamping,
+}
+
+impl Parameter {
+    pub const ALL: [Self; 4] = [
+        Self::Stiffness,
+        Self::Mass,
+        Self::LinearDamping,
+        Self::AngularDamping,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Stiffness => "k",
+            Self::Mass => "mass",
+            Self::LinearDamping => "linear damping",
+            Self::AngularDamping => "angular damping",
+        }
+    }
+
+    pub fn get(self, params: &SceneParams) -> f64 {
+        match self {
+            Self::Stiffness => params.stiffness,
+            Self::Mass => params.mass,
+            Self::LinearDamping => params.linear_damping,
+            Self::AngularDamping => params.angular_damping,
+        }
+    }
+
+    fn set(self, params: &mut SceneParams, value: f64) {
+        match self {
+            Self::Stiffness => params.stiffness = value,
+            Self::Mass => params.mass = value,
+            Self::LinearDamping => params.linear_damping = value,
+            Self::AngularDamping => params.angular_damping = value,
+        }
+    }
+}
+
+/// One control: its keys and the action each sends, how the help line names them, and what
+/// it does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Control {
+    pub keys: &'static [KeyCode],
+    /// The action of each key, in the same order.
+    pub actions: &'static [Action],
+    /// The keys as the help line, the title and README write them ("[ ]").
+    pub label: &'static str,
+    /// What it does, in a word (the help line).
+    pub name: &'static str,
+    /// What it does, in full (README's table).
+    pub effect: &'static str,
+}
+
+/// Every key the game reads, in the order the help line lists them.
+pub const CONTROLS: [Control; 14] = [
+    Control {
+        keys: &[PAUSE],
+        actions: &[Action::TogglePause],
+        label: "Space",
+        name: "pause",
+        effect: "pause / resume (from the next frame: Bevy advances its clocks before it reads input)",
+    },
+    Control {
+        keys: &[SINGLE_STEP],
+        actions: &[Action::Step],
+        label: "N",
+        name: "step",
+        effect: "one fixed step while paused",
+    },
+    Control {
+        keys: &[RESET],
+        actions: &[Action::Reset],
+        label: "R",
+        name: "reset",
+        effect: "reset: the box at rest at the centre, no band, the books, the graph and the trail started over",
+    },
+    Control {
+        keys: &[CYCLE_INTEGRATOR],
+        actions: &[Action::NextIntegrator],
+        label: "I",
+        name: "integrator",
+        effect: "the next integrator",
+    },
+    Control {
+        keys: &[SOFTER, STIFFER],
+        actions: &[Action::Softer, Action::Stiffer],
+        label: "[ ]",
+        name: "k",
+        effect: "band stiffness k ÷10 / ×10, from 1e-2 to 1e12 (the hard cases are a few presses away)",
+    },
+    Control {
+        keys: &[SLOWER, FASTER],
+        actions: &[Action::Slower, Action::Faster],
+        label: "- =",
+        name: "time",
+        effect: "time scale ÷2 / ×2, from 1/16 to 16 (slow motion, fast forward)",
+    },
+    Control {
+        keys: &[FEWER_STEPS, MORE_STEPS],
+        actions: &[Action::FewerSteps, Action::MoreSteps],
+        label: "PgDn PgUp",
+        name: "rate",
+        effect: "fixed step rate ÷2 / ×2, from 8 to 4096 Hz",
+    },
+    Control {
+        keys: &[VECTORS],
+        actions: &[Action::ToggleVectors],
+        label: "V",
+        name: "vectors",
+        effect: "vectors: velocity at the centre (green, where it will be in 0.25 s), the band's force at its corner (orange, length growing with log force)",
+    },
+    Control {
+        keys: &[TRAIL],
+        actions: &[Action::ToggleTrail],
+        label: "T",
+        name: "trail",
+        effect: "a fading trail of the pulled corner",
+    },
+    Control {
+        keys: &[GHOSTS],
+        actions: &[Action::ToggleGhosts],
+        label: "G",
+        name: "ghosts",
+        effect: "ghosts: every integrator and a reference (Taylor order 24 at 1e-13 px) beside the box under the same band, each outlined in its colour; the HUD lists their distance from the reference, energy residual and cost per step",
+    },
+    Control {
+        keys: &SCENE_KEYS,
+        actions: &SCENE_ACTIONS,
+        label: "1-0",
+        name: "scene",
+        effect: "load the named scene at that place in the core's table (the order of `simulate --scene`'s list: 1 the first, 0 the tenth): its parameters and start, its scripted pull played until you press; the HUD names it and says what makes it hard",
+    },
+    Control {
+        keys: &[HUD],
+        actions: &[Action::ToggleHud],
+        label: "H",
+        name: "HUD",
+        effect: "hide / show the HUD and the energy graph",
+    },
+    Control {
+        keys: &[SAVE],
+        actions: &[Action::Save],
+        label: "S",
+        name: "save",
+        effect: "save the game so far as a replay (to `--record`'s file, else `replay-<time>.jsonl`; in the browser a download; the HUD shows the name)",
+    },
+    Control {
+        keys: &[OPEN],
+        actions: &[Action::Open],
+        label: "O",
+        name: "open",
+        effect: "play a replay file: in the browser a file chooser; on the desktop drop the file on the window (or `play --replay FILE`); dropping works in the browser too",
+    },
+];
+
+/// The HUD's help line: "drag: pull  Space: pause  N: step ...".
+/// Each item's spaces are non-breaking, so that a narrow window wraps the line between items,
+/// never inside one.
+pub fn help_line() -> String {
+    let keys: Vec<String> = CONTROLS
+        .iter()
+        .map(|control| format!("{}: {}", control.label, control.name).replace(' ', "\u{a0}"))
+        .collect();
+    format!("drag:\u{a0}pull  {}", keys.join("  "))
+}
+
+/// The window title's reminder of the keys: "Space N R I [ ] ...".
+pub fn key_hint() -> String {
+    let labels: Vec<&str> = CONTROLS.iter().map(|control| control.label).collect();
+    labels.join(" ")
+}
+
+/// Each key pressed this frame sends its action.
+fn keys_to_actions(keys: Res<ButtonInput<KeyCode>>, mut actions: MessageWriter<Action>) {
+    for control in &CONTROLS {
+        for (key, action) in control.keys.iter().zip(control.actions) {
+            if keys.just_pressed(*key) {
+                actions.write(*action);
+            }
+        }
+    }
+}
+
+/// What the actions write.
+#[derive(SystemParam)]
+struct Controlled<'w> {
+    integrator: ResMut<'w, Integrator>,
+    params: ResMut<'w, SceneParams>,
+    virtual_time: ResMut<'w, Time<Virtual>>,
+    fixed_time: ResMut<'w, Time<Fixed>>,
+    overlays: ResMut<'w, Overlays>,
+    status: ResMut<'w, StatusMessage>,
+}
+
+/// Every action of this frame, in the order sent. k, the time scale and the step rate move by
+/// factors, so that a player reaches the hard cases in a few presses; each stays inside its
+/// range, and a scene parameter changes only if the whole scene stays valid.
+fn apply_actions(
+    mut actions: MessageReader<Action>,
+    mut commands: Commands,
+    mut controlled: Controlled,
+) {
+    let scaled =
+        |value: f64, factor: f64, (low, high): (f64, f64)| (value * factor).clamp(low, high);
+    for &action in actions.read() {
+        let c = &mut controlled;
+        let mut next = *c.params;
+        match action {
+            Action::TogglePause if c.virtual_time.is_paused() => c.virtual_time.unpause(),
+            Action::TogglePause => c.virtual_time.pause(),
+            // While paused, the fixed clock is fed exactly one step of time.
+            Action::Step => {
+                if c.virtual_time.is_paused() {
+                    let step = c.fixed_time.timestep();
+                    c.fixed_time.accumulate_overstep(step);
+                }
+            }
+            // Each plugin puts back what it owns (see [`ResetScene`]).
+            Action::Reset => commands.trigger(ResetScene),
+            Action::NextIntegrator => *c.integrator = c.integrator.next(),
+            Action::Integrator(integrator) => *c.integrator = integrator,
+            Action::Softer => next.stiffness = scaled(next.stiffness, 0.1, STIFFNESS_RANGE),
+            Action::Stiffer => {
+                next.stiffness =
+                    scaled(next.stiffness.max(STIFFNESS_RANGE.0), 10.0, STIFFNESS_RANGE)
+            }
+            Action::FewerSteps => {
+                next.step_rate_hz = scaled(next.step_rate_hz, 0.5, STEP_RATE_RANGE)
+            }
+            Action::MoreSteps => {
+                next.step_rate_hz = scaled(next.step_rate_hz, 2.0, STEP_RATE_RANGE)
+            }
+            Action::Set(parameter, value) => parameter.set(&mut next, value),
+            Action::Slower | Action::Faster => {
+                let factor = if action == Action::Slower { 0.5 } else { 2.0 };
+                let speed = c.virtual_time.relative_speed_f64();
+                c.virtual_time
+                    .set_relative_speed_f64(scaled(speed, factor, TIME_SCALE_RANGE));
+            }
+            Action::ToggleVectors => c.overlays.vectors = !c.overlays.vectors,
+            Action::ToggleTrail => c.overlays.trail = !c.overlays.trail,
+            Action::ToggleGhosts => c.overlays.ghosts = !c.overlays.ghosts,
+            Action::ToggleHud => c.overlays.hud_hidden = !c.overlays.hud_hidden,
+            // The recorder saves and says where ([`crate::game::replays::recording`]).
+            Action::Save => commands.trigger(SaveReplay),
+            Action::Open => open_replay(&mut c.status),
+            Action::Scene(index) => {
+                if let Some(&name) = Scenario::NAMES.get(index) {
+                    commands.trigger(LoadScene(name));
+                }
+            }
+        }
+        if next != *c.params {
+            match next.validate() {
+                Ok(()) => *c.params = next,
+                Err(error) => {
+                    c.status.0 = Some(format!("refused: {error}; kept the old value"));
+                }
+            }
+        }
+    }
+}
+
+/// In the browser, the file chooser (the playback opens what is chosen); on the desktop,
+/// where dropping a file on the window opens it, the HUD says so.
+fn open_replay(status: &mut StatusMessage) {
+    #[cfg(target_arch = "wasm32")]
+    {
+        let _ = status;
+        crate::game::web::choose_replay_file();
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        status.0 = Some("drop a replay file on the window to play it".to_owned());
+    }
+}

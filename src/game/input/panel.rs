@@ -1,0 +1,536 @@
+//! The on-screen panel: every control a key has, for a mouse or a finger, built from Bevy's
+//! own widgets (`bevy_ui_widgets`: buttons and sliders, reached through picking). Each button
+//! sends the same [`Action`] its key sends and each slider an [`Action::Set`], so the panel
+//! holds no state of its own beyond whether it is open: what it shows is read back from the
+//! resources every frame. It folds to one button, and tells the pointer where it lies so that
+//! a press on it never grabs the box.
+
+use bevy::prelude::*;
+use bevy::ui::UiGlobalTransform;
+use bevy::ui_widgets::{
+    Activate, ActivateOnPress, Button, ButtonPlugin, Slider, SliderPlugin, SliderRange, SliderStep,
+    SliderThumb, SliderValue, TrackClick, ValueChange,
+};
+
+use crate::game::input::controls::{Action, Parameter};
+use crate::game::replays::recording::SceneName;
+use crate::game::schedule::{GameSystems, ScreenSystems};
+use crate::game::shared::{ControlsArea, Overlays};
+use crate::physics::{Integrator, Scenario, SceneParams};
+
+pub struct PanelPlugin;
+
+impl Plugin for PanelPlugin {
+    fn build(&self, app: &mut App) {
+        // `DefaultPlugins` bring them with the widgets feature; the headless game adds them.
+        if !app.is_plugin_added::<ButtonPlugin>() {
+            app.add_plugins(ButtonPlugin);
+        }
+        if !app.is_plugin_added::<SliderPlugin>() {
+            app.add_plugins(SliderPlugin);
+        }
+        // The slider reads it (the UI plugin has it; the headless game does not).
+        app.init_resource::<UiScale>()
+            .init_resource::<PanelOpen>()
+            .init_resource::<ControlsArea>()
+            .add_observer(press_button)
+            .add_observer(move_slider)
+            .add_systems(Startup, spawn_panel)
+            .add_systems(RunFixedMainLoop, tap_buttons.in_set(GameSystems::Input))
+            .add_systems(
+                Update,
+                (show_state, place_thumbs)
+                    .chain()
+                    .in_set(ScreenSystems::Panel),
+            )
+            .add_systems(PostUpdate, publish_area.after(bevy::ui::UiSystems::Layout));
+        #[cfg(target_arch = "wasm32")]
+        app.add_systems(
+            PostUpdate,
+            publish_buttons.after(bevy::ui::UiSystems::Layout),
+        );
+    }
+}
+
+/// Whether the panel is unfolded.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct PanelOpen(pub bool);
+
+/// The panel's root.
+#[derive(Component, Debug)]
+pub struct Panel;
+
+/// The part of the panel that folds away.
+#[derive(Component, Debug)]
+struct PanelBody;
+
+/// What a panel button does.
+#[derive(Component, Debug, Clone, Copy, PartialEq)]
+pub enum PanelButton {
+    /// Fold or unfold the panel.
+    Fold,
+    Send(Action),
+}
+
+/// A slider setting a scene parameter.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PanelSlider(pub Parameter);
+
+/// A text showing a value the panel controls.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+enum Readout {
+    Parameter(Parameter),
+    StepRate,
+    TimeScale,
+}
+
+const TEXT: Color = Color::srgb(0.9, 0.9, 0.9);
+const BUTTON: Color = Color::srgba(0.16, 0.17, 0.2, 0.9);
+const LIT: Color = Color::srgb(0.2, 0.42, 0.7);
+const BORDER: Color = Color::srgb(0.35, 0.36, 0.42);
+const BODY: Color = Color::srgba(0.0, 0.0, 0.0, 0.7);
+const TRACK: Color = Color::srgb(0.25, 0.26, 0.3);
+const THUMB: Color = Color::srgb(0.85, 0.85, 0.9);
+const FONT_SIZE: f32 = 13.0;
+/// Big enough for a fingertip.
+const BUTTON_HEIGHT: f32 = 30.0;
+const SLIDER_WIDTH: f32 = 150.0;
+const THUMB_SIZE: f32 = 18.0;
+
+impl Parameter {
+    /// The slider's range and step: k and the mass on a logarithmic scale (log10 of the
+    /// value), the damping rates on a linear one.
+    fn slider(self) -> (f32, f32, f32) {
+        match self {
+            Self::Stiffness => (-2.0, 12.0, 0.1),
+            Self::Mass => (-3.0, 3.0, 0.1),
+            Self::LinearDamping => (0.0, 50.0, 0.5),
+            Self::AngularDamping => (0.0, 20.0, 0.1),
+        }
+    }
+
+    fn logarithmic(self) -> bool {
+        matches!(self, Self::Stiffness | Self::Mass)
+    }
+
+    fn slider_position(self, value: f64) -> f32 {
+        if self.logarithmic() {
+            value.log10() as f32
+        } else {
+            value as f32
+        }
+    }
+
+    fn value_at(self, position: f32) -> f64 {
+        let position = f64::from(position);
+        if self.logarithmic() {
+            // The slider's steps are tenths of a decade: 1e5, not 99999.99.
+            let value = 10f64.powf(position);
+            let digits = 10f64.powf(value.log10().floor() - 1.0);
+            (value / digits).round() * digits
+        } else {
+            position
+        }
+    }
+}
+
+fn text(value: impl Into<String>) -> impl Bundle {
+    coloured_text(value, TEXT)
+}
+
+fn coloured_text(value: impl Into<String>, colour: Color) -> impl Bundle {
+    (
+        Text::new(value),
+        TextFont::from_font_size(FONT_SIZE),
+        TextColor(colour),
+    )
+}
+
+fn spawn_button(commands: &mut Commands, parent: Entity, label: &str, does: PanelButton) {
+    commands.spawn((
+        Name::new(format!("Panel button {label}")),
+        Button,
+        // On the press, not the release: a quick tap (down and up in one frame) still counts.
+        ActivateOnPress,
+        does,
+        Node {
+            min_height: px(BUTTON_HEIGHT),
+            padding: UiRect::axes(px(8), px(4)),
+            margin: UiRect::all(px(2)),
+            border: UiRect::all(px(1)),
+            justify_content: JustifyContent::Center,
+            align_items: AlignItems::Center,
+            ..default()
+        },
+        BackgroundColor(BUTTON),
+        BorderColor::all(BORDER),
+        ChildOf(parent),
+        children![text(label)],
+    ));
+}
+
+/// A titled row of widgets that wraps on a narrow screen.
+fn spawn_row(commands: &mut Commands, parent: Entity, title: &str) -> Entity {
+    let row = commands
+        .spawn((
+            Node {
+                flex_direction: FlexDirection::Row,
+                flex_wrap: FlexWrap::Wrap,
+                align_items: AlignItems::Center,
+                max_width: px(340),
+                ..default()
+            },
+            ChildOf(parent),
+        ))
+        .id();
+    if !title.is_empty() {
+        commands.spawn((
+            coloured_text(title, Color::srgb(0.6, 0.6, 0.65)),
+            Node {
+                width: px(64),
+                ..default()
+            },
+            ChildOf(row),
+        ));
+    }
+    row
+}
+
+fn spawn_panel(mut commands: Commands) {
+    let panel = commands
+        .spawn((
+            Name::new("Panel"),
+            Panel,
+            // Bottom right, above the help line: the energy graph has the top right. The body
+            // unfolds upward from the button.
+            Node {
+                position_type: PositionType::Absolute,
+                bottom: px(40),
+                right: px(6),
+                flex_direction: FlexDirection::ColumnReverse,
+                align_items: AlignItems::End,
+                max_height: vh(85),
+                ..default()
+            },
+        ))
+        .id();
+    spawn_button(&mut commands, panel, "controls", PanelButton::Fold);
+    let body = commands
+        .spawn((
+            Name::new("Panel body"),
+            PanelBody,
+            Node {
+                display: Display::None,
+                flex_direction: FlexDirection::Column,
+                padding: UiRect::all(px(6)),
+                overflow: Overflow::scroll_y(),
+                ..default()
+            },
+            BackgroundColor(BODY),
+            ChildOf(panel),
+        ))
+        .id();
+
+    let row = spawn_row(&mut commands, body, "");
+    for (label, action) in [
+        ("pause", Action::TogglePause),
+        ("step", Action::Step),
+        ("reset", Action::Reset),
+        ("save", Action::Save),
+        ("open", Action::Open),
+    ] {
+        spawn_button(&mut commands, row, label, PanelButton::Send(action));
+    }
+    let row = spawn_row(&mut commands, body, "method");
+    for integrator in Integrator::ALL {
+        let does = PanelButton::Send(Action::Integrator(integrator));
+        spawn_button(&mut commands, row, integrator.name(), does);
+    }
+    let row = spawn_row(&mut commands, body, "scene");
+    for (index, name) in Scenario::NAMES.iter().enumerate() {
+        spawn_button(
+            &mut commands,
+            row,
+            name,
+            PanelButton::Send(Action::Scene(index)),
+        );
+    }
+    for parameter in Parameter::ALL {
+        let row = spawn_row(&mut commands, body, parameter.name());
+        spawn_slider(&mut commands, row, parameter);
+        commands.spawn((
+            text(""),
+            Readout::Parameter(parameter),
+            Node {
+                margin: UiRect::left(px(8)),
+                ..default()
+            },
+            ChildOf(row),
+        ));
+    }
+    for (title, readout, slower, faster) in [
+        (
+            "rate",
+            Readout::StepRate,
+            Action::FewerSteps,
+            Action::MoreSteps,
+        ),
+        ("time", Readout::TimeScale, Action::Slower, Action::Faster),
+    ] {
+        let row = spawn_row(&mut commands, body, title);
+        spawn_button(&mut commands, row, "/2", PanelButton::Send(slower));
+        commands.spawn((
+            text(""),
+            readout,
+            Node {
+                min_width: px(80),
+                justify_content: JustifyContent::Center,
+                ..default()
+            },
+            ChildOf(row),
+        ));
+        spawn_button(&mut commands, row, "x2", PanelButton::Send(faster));
+    }
+    let row = spawn_row(&mut commands, body, "show");
+    for (label, action) in [
+        ("ghosts", Action::ToggleGhosts),
+        ("vectors", Action::ToggleVectors),
+        ("trail", Action::ToggleTrail),
+        ("HUD", Action::ToggleHud),
+    ] {
+        spawn_button(&mut commands, row, label, PanelButton::Send(action));
+    }
+}
+
+fn spawn_slider(commands: &mut Commands, row: Entity, parameter: Parameter) {
+    let (start, end, step) = parameter.slider();
+    commands.spawn((
+        Name::new(format!("Slider {}", parameter.name())),
+        Slider {
+            track_click: TrackClick::Snap,
+            ..default()
+        },
+        SliderRange::new(start, end),
+        SliderStep(step),
+        PanelSlider(parameter),
+        Node {
+            width: px(SLIDER_WIDTH),
+            height: px(THUMB_SIZE),
+            margin: UiRect::vertical(px(6)),
+            ..default()
+        },
+        BackgroundColor(TRACK),
+        ChildOf(row),
+        children![(
+            SliderThumb,
+            Node {
+                position_type: PositionType::Absolute,
+                width: px(THUMB_SIZE),
+                height: px(THUMB_SIZE),
+                ..default()
+            },
+            BackgroundColor(THUMB),
+        )],
+    ));
+}
+
+/// Where a UI node lies in the window, in logical pixels (what the pointer and the page use):
+/// the node's physical rectangle over the window's scale factor. `ComputedNode`'s inverse
+/// scale factor also divides by the UI scale, which is put back.
+fn window_rect(node: &ComputedNode, transform: &UiGlobalTransform, ui_scale: &UiScale) -> Rect {
+    let scale = node.inverse_scale_factor() * ui_scale.0;
+    Rect::from_center_size(transform.translation * scale, node.size() * scale)
+}
+
+/// What pressing a button does.
+fn press(does: PanelButton, open: &mut PanelOpen, actions: &mut MessageWriter<Action>) {
+    match does {
+        PanelButton::Fold => open.0 = !open.0,
+        PanelButton::Send(action) => {
+            actions.write(action);
+        }
+    }
+}
+
+/// A button pressed (a click, or Enter while focused) sends its action. While a finger is on
+/// the screen, touches are [`tap_buttons`]'s.
+fn press_button(
+    activate: On<Activate>,
+    buttons: Query<&PanelButton>,
+    touches: Res<Touches>,
+    mut open: ResMut<PanelOpen>,
+    mut actions: MessageWriter<Action>,
+) {
+    let fingers = touches.iter().next().is_some() || touches.any_just_released();
+    if let Ok(&does) = buttons.get(activate.entity)
+        && !fingers
+    {
+        press(does, &mut open, &mut actions);
+    }
+}
+
+/// A finger's tap on a button, read from the touches: in the browser, picking misses a new
+/// finger's first press (its pointer has no hover yet when the press is dispatched), so taps
+/// go through here.
+fn tap_buttons(
+    touches: Res<Touches>,
+    ui_scale: Res<UiScale>,
+    buttons: Query<(&PanelButton, &ComputedNode, &UiGlobalTransform)>,
+    mut open: ResMut<PanelOpen>,
+    mut actions: MessageWriter<Action>,
+) {
+    for touch in touches.iter_just_pressed() {
+        let tapped = buttons.iter().find(|(_, node, transform)| {
+            let rect = window_rect(node, transform, &ui_scale);
+            !rect.is_empty() && rect.contains(touch.position())
+        });
+        if let Some((&does, _, _)) = tapped {
+            press(does, &mut open, &mut actions);
+        }
+    }
+}
+
+/// A slider moved sends its parameter's new value; the slider shows the value in force after
+/// the controls have applied (or refused) it.
+fn move_slider(
+    change: On<ValueChange<f32>>,
+    sliders: Query<&PanelSlider>,
+    mut actions: MessageWriter<Action>,
+) {
+    if let Ok(PanelSlider(parameter)) = sliders.get(change.source) {
+        actions.write(Action::Set(*parameter, parameter.value_at(change.value)));
+    }
+}
+
+/// What the resources say, shown: the panel open or folded, which buttons are lit, the values.
+#[allow(clippy::too_many_arguments)]
+fn show_state(
+    mut commands: Commands,
+    open: Res<PanelOpen>,
+    (params, integrator, scene, overlays): (
+        Res<SceneParams>,
+        Res<Integrator>,
+        Res<SceneName>,
+        Res<Overlays>,
+    ),
+    (virtual_time, fixed_time): (Res<Time<Virtual>>, Res<Time<Fixed>>),
+    mut bodies: Query<&mut Node, With<PanelBody>>,
+    mut buttons: Query<(&PanelButton, &mut BackgroundColor, &Children)>,
+    mut texts: Query<&mut Text>,
+    mut readouts: Query<(&Readout, Entity)>,
+    sliders: Query<(Entity, &PanelSlider, &SliderValue)>,
+) {
+    for mut node in &mut bodies {
+        let display = if open.0 { Display::Flex } else { Display::None };
+        if node.display != display {
+            node.display = display;
+        }
+    }
+    let paused = virtual_time.is_paused();
+    for (button, mut background, children) in &mut buttons {
+        let (lit, label) = match *button {
+            PanelButton::Fold => (open.0, None),
+            PanelButton::Send(Action::TogglePause) => {
+                (paused, Some(if paused { "resume" } else { "pause" }))
+            }
+            PanelButton::Send(Action::Integrator(method)) => (method == *integrator, None),
+            PanelButton::Send(Action::Scene(index)) => {
+                (Scenario::NAMES.get(index) == Some(&scene.0.as_str()), None)
+            }
+            PanelButton::Send(Action::ToggleGhosts) => (overlays.ghosts, None),
+            PanelButton::Send(Action::ToggleVectors) => (overlays.vectors, None),
+            PanelButton::Send(Action::ToggleTrail) => (overlays.trail, None),
+            PanelButton::Send(Action::ToggleHud) => (!overlays.hud_hidden, None),
+            PanelButton::Send(_) => (false, None),
+        };
+        background.set_if_neq(BackgroundColor(if lit { LIT } else { BUTTON }));
+        if let Some(label) = label
+            && let Some(&child) = children.first()
+            && let Ok(mut text) = texts.get_mut(child)
+            && text.0 != label
+        {
+            text.0 = label.to_owned();
+        }
+    }
+    for (readout, entity) in &mut readouts {
+        let shown = match readout {
+            Readout::Parameter(parameter) => format!("{:.3e}", parameter.get(&params)),
+            Readout::StepRate => format!("{:.0} Hz", 1.0 / fixed_time.timestep().as_secs_f64()),
+            Readout::TimeScale => format!("x{}", virtual_time.relative_speed_f64()),
+        };
+        if let Ok(mut text) = texts.get_mut(entity)
+            && text.0 != shown
+        {
+            text.0 = shown;
+        }
+    }
+    for (entity, PanelSlider(parameter), value) in &sliders {
+        let (start, end, _) = parameter.slider();
+        let wanted = parameter
+            .slider_position(parameter.get(&params))
+            .clamp(start, end);
+        if (value.0 - wanted).abs() > 1e-4 {
+            commands.entity(entity).insert(SliderValue(wanted));
+        }
+    }
+}
+
+/// Each slider's thumb where its value lies along the track.
+fn place_thumbs(
+    sliders: Query<(&SliderValue, &SliderRange, &Children), Changed<SliderValue>>,
+    mut thumbs: Query<&mut Node, With<SliderThumb>>,
+) {
+    for (value, range, children) in &sliders {
+        for &child in children {
+            if let Ok(mut node) = thumbs.get_mut(child) {
+                let fraction = (value.0 - range.start()) / range.span().max(f32::EPSILON);
+                node.left = px(fraction.clamp(0.0, 1.0) * (SLIDER_WIDTH - THUMB_SIZE));
+            }
+        }
+    }
+}
+
+/// The panel's rectangle on screen, in logical pixels, for the pointer to leave alone.
+fn publish_area(
+    panels: Query<(&ComputedNode, &UiGlobalTransform), With<Panel>>,
+    ui_scale: Res<UiScale>,
+    mut area: ResMut<ControlsArea>,
+) {
+    let rects: Vec<Rect> = panels
+        .iter()
+        .map(|(node, transform)| window_rect(node, transform, &ui_scale))
+        .filter(|rect| !rect.is_empty())
+        .collect();
+    // Nothing laid out (no UI renderer: the headless game) leaves the area as it is.
+    if !rects.is_empty() && area.0 != rects {
+        area.0 = rects;
+    }
+}
+
+/// In the browser: where each button lies, for the page (and the browser test) to read.
+#[cfg(target_arch = "wasm32")]
+fn publish_buttons(
+    buttons: Query<(&ComputedNode, &UiGlobalTransform, &Children), With<PanelButton>>,
+    ui_scale: Res<UiScale>,
+    texts: Query<&Text>,
+    mut published: Local<String>,
+) {
+    let mut places = std::collections::BTreeMap::new();
+    for (node, transform, children) in &buttons {
+        let Some(label) = children.first().and_then(|&child| texts.get(child).ok()) else {
+            continue;
+        };
+        let rect = window_rect(node, transform, &ui_scale);
+        places.entry(label.0.clone()).or_insert([
+            rect.min.x,
+            rect.min.y,
+            rect.width(),
+            rect.height(),
+        ]);
+    }
+    let json = serde_json::to_string(&places).unwrap_or_default();
+    if *published != json {
+        crate::game::web::publish_panel(&json);
+        *published = json;
+    }
+}

@@ -1,0 +1,225 @@
+//! The pointer plugin: the left mouse button, or one finger, holds the band.
+//!
+//! Two systems run before the fixed loop each frame, in [`GameSystems::Input`], so that a
+//! press is felt by the very next fixed step: [`read_pointer`] turns mouse, touch and focus
+//! input into [`PointerAction`]s in world coordinates (through the camera), and [`drive_band`]
+//! spawns, moves and despawns the band entity from them. Tests can drive either end. The
+//! plugin owns the grip (which device holds the band) and lets go on a reset.
+//!
+//! What happens at the edges:
+//! - press and release within one frame (a quick click or tap): the band acts for exactly one
+//!   fixed step, then is removed, so no click is lost;
+//! - the cursor leaves the window while held: the anchor stays where the cursor was last seen
+//!   and follows again when it comes back;
+//! - the window loses focus: the band is released (the button's release may never arrive);
+//! - a second press while a band exists (a missed release, or the mouse taking over from a
+//!   finger): the old band goes and a new one attaches at the corner nearest the new press;
+//!   a second finger while the first holds the band is ignored. There is never more than one band.
+
+use bevy::math::DVec2;
+use bevy::prelude::*;
+use bevy::window::{PrimaryWindow, WindowFocused};
+
+use crate::game::schedule::GameSystems;
+use crate::game::shared::ControlsArea;
+use crate::game::simulation::{Band, ResetScene, RigidBox, Tap, body_state};
+use crate::physics::{AngularState, BandEnds, LinearState, MassProperties};
+
+pub struct PointerPlugin;
+
+impl Plugin for PointerPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<Grip>()
+            .init_resource::<ControlsArea>()
+            .add_message::<PointerAction>()
+            .add_observer(let_go_on_reset)
+            .add_systems(
+                RunFixedMainLoop,
+                (read_pointer, drive_band)
+                    .chain()
+                    .in_set(GameSystems::Input),
+            );
+    }
+}
+
+/// What the pointer did this frame, in world coordinates.
+#[derive(Message, Debug, Clone, Copy, PartialEq)]
+pub enum PointerAction {
+    /// Grab the box's nearest corner with a band anchored here.
+    Press(DVec2),
+    /// Move the held band's anchor here.
+    Move(DVec2),
+    /// Let go of the band.
+    Release,
+}
+
+/// Which device holds the band, if any.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct Grip(pub Option<PointerSource>);
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PointerSource {
+    Mouse,
+    Touch(u64),
+}
+
+/// Mouse, touch and focus input to [`PointerAction`]s.
+pub fn read_pointer(
+    (buttons, touches, controls): (
+        Res<ButtonInput<MouseButton>>,
+        Res<Touches>,
+        Res<ControlsArea>,
+    ),
+    mut focus: MessageReader<WindowFocused>,
+    window: Option<Single<&Window, With<PrimaryWindow>>>,
+    camera: Option<Single<(&Camera, &GlobalTransform), With<Camera2d>>>,
+    mut grip: ResMut<Grip>,
+    mut actions: MessageWriter<PointerAction>,
+) {
+    let to_world = |screen: Vec2| -> Option<DVec2> {
+        let (camera, transform) = *camera.as_deref()?;
+        let world = camera.viewport_to_world_2d(transform, screen).ok()?;
+        world.is_finite().then(|| world.as_dvec2())
+    };
+    if focus.read().any(|event| !event.focused) && grip.0.is_some() {
+        grip.0 = None;
+        actions.write(PointerAction::Release);
+    }
+
+    // The mouse. A press and a release seen in the same frame happened in the order that
+    // leaves the button in its current state.
+    let on_screen = window
+        .as_deref()
+        .and_then(|window| window.cursor_position());
+    let cursor = on_screen.and_then(to_world);
+    // A press on the on-screen controls is theirs.
+    let on_controls = on_screen.is_some_and(|point| controls.contains(point));
+    let (pressed, released, held) = (
+        buttons.just_pressed(MouseButton::Left),
+        buttons.just_released(MouseButton::Left),
+        buttons.pressed(MouseButton::Left),
+    );
+    if released && held {
+        release(&mut grip, &mut actions, PointerSource::Mouse);
+    }
+    if pressed
+        && !on_controls
+        && let Some(at) = cursor
+    {
+        grip.0 = Some(PointerSource::Mouse);
+        actions.write(PointerAction::Press(at));
+    }
+    if grip.0 == Some(PointerSource::Mouse)
+        && !pressed
+        && let Some(at) = cursor
+    {
+        actions.write(PointerAction::Move(at));
+    }
+    if released && !held {
+        release(&mut grip, &mut actions, PointerSource::Mouse);
+    }
+
+    // One finger: the first to touch holds the band until it lifts.
+    for touch in touches.iter_just_pressed() {
+        if grip.0.is_none()
+            && !controls.contains(touch.position())
+            && let Some(at) = to_world(touch.position())
+        {
+            grip.0 = Some(PointerSource::Touch(touch.id()));
+            actions.write(PointerAction::Press(at));
+        }
+    }
+    if let Some(PointerSource::Touch(id)) = grip.0
+        && let Some(touch) = touches.get_pressed(id)
+        && !touches.just_pressed(id)
+        && let Some(at) = to_world(touch.position())
+    {
+        actions.write(PointerAction::Move(at));
+    }
+    for touch in touches
+        .iter_just_released()
+        .chain(touches.iter_just_canceled())
+    {
+        release(&mut grip, &mut actions, PointerSource::Touch(touch.id()));
+    }
+}
+
+/// Lets go of the band if `source` holds it.
+fn release(grip: &mut Grip, actions: &mut MessageWriter<PointerAction>, source: PointerSource) {
+    if grip.0 == Some(source) {
+        grip.0 = None;
+        actions.write(PointerAction::Release);
+    }
+}
+
+/// A reset lets go: no band, and no device holds one (a button still down grabs again only
+/// with a new press).
+fn let_go_on_reset(
+    _reset: On<ResetScene>,
+    mut commands: Commands,
+    bands: Query<Entity, With<Band>>,
+    mut grip: ResMut<Grip>,
+) {
+    for band in &bands {
+        commands.entity(band).despawn();
+    }
+    grip.0 = None;
+}
+
+/// [`PointerAction`]s to the band entity: at most one band exists after this system.
+pub fn drive_band(
+    mut commands: Commands,
+    mut actions: MessageReader<PointerAction>,
+    boxes: Query<(Entity, &LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    mut existing: Query<(Entity, &mut Band)>,
+) {
+    // Play this frame's actions on a small model first, then touch the world once, so that
+    // several actions in one frame never leave two bands behind.
+    let mut existing_band = existing.iter().next().map(|(entity, band)| (entity, *band));
+    let mut remove_existing = false;
+    let mut fresh: Option<Band> = None;
+    let mut tap: Option<Band> = None;
+
+    for action in actions.read() {
+        match *action {
+            PointerAction::Press(at) => {
+                remove_existing |= existing_band.take().is_some();
+                let Ok((body, linear, angular, mass)) = boxes.single() else {
+                    continue;
+                };
+                fresh = Some(Band {
+                    body,
+                    ends: BandEnds::grabbing(mass, &body_state(linear, angular), at),
+                });
+            }
+            PointerAction::Move(to) => {
+                if let Some(band) = fresh.as_mut() {
+                    band.ends.anchor = to;
+                } else if let Some((_, band)) = existing_band.as_mut() {
+                    band.ends.anchor = to;
+                }
+            }
+            PointerAction::Release => {
+                if let Some(band) = fresh.take() {
+                    tap = Some(band);
+                } else {
+                    remove_existing |= existing_band.take().is_some();
+                }
+            }
+        }
+    }
+
+    for (entity, mut band) in &mut existing {
+        match existing_band {
+            Some((kept, updated)) if kept == entity && !remove_existing => {
+                band.set_if_neq(updated);
+            }
+            _ => commands.entity(entity).despawn(),
+        }
+    }
+    if let Some(band) = fresh {
+        commands.spawn((Name::new("Band"), band));
+    } else if let Some(band) = tap {
+        commands.spawn((Name::new("Band (tap)"), band, Tap));
+    }
+}

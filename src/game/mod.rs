@@ -1,0 +1,64 @@
+//! The game: every Bevy plugin, wired here once. [`GameLogicPlugin`] is the game without a
+//! screen (what the headless tests run), [`GamePlugin`] adds the screen.
+//!
+//! Rooms:
+//! - [`schedule`]: the frame's order, every system set declared and ordered in one place;
+//! - [`shared`]: the resources several plugins read (the scene's name, the status line, what
+//!   shows, where the panel lies);
+//! - [`simulation`]: the physics plugin that steps the core in `FixedUpdate`;
+//! - [`input`]: the pointer, the keys and the on-screen panel, which all send actions;
+//! - [`replays`]: the game's side of replays and scenes: recording, playback, the scenes on
+//!   the number keys;
+//! - [`ghosts`]: every integrator and a reference stepping beside the live box;
+//! - [`hud`]: the heads-up display's text, its energy history and the window title;
+//! - [`screen`]: camera, interpolation, drawing and the energy graph (need a window);
+//! - `web`, in the browser only: the page's side (downloads, files opened, what the page
+//!   reads back).
+
+pub mod ghosts;
+pub mod hud;
+pub mod input;
+pub mod replays;
+pub mod schedule;
+pub mod screen;
+pub mod shared;
+pub mod simulation;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
+
+use bevy::prelude::*;
+
+/// The game without a screen: the physics, the pointer, the keys and the HUD's text, in the
+/// frame's order ([`schedule`]). Runs under `MinimalPlugins`.
+pub struct GameLogicPlugin;
+
+impl Plugin for GameLogicPlugin {
+    fn build(&self, app: &mut App) {
+        schedule::order_the_frame(app);
+        app.add_plugins((
+            simulation::SimulationPlugin,
+            input::pointer::PointerPlugin,
+            input::controls::ControlsPlugin,
+            replays::recording::RecordingPlugin,
+            replays::playback::PlaybackPlugin,
+            replays::scenes::ScenesPlugin,
+            ghosts::GhostsPlugin,
+            input::panel::PanelPlugin,
+            hud::HudPlugin,
+        ));
+    }
+}
+
+/// Everything the game needs on top of `DefaultPlugins` and lyon's `ShapePlugin`.
+pub struct GamePlugin;
+
+impl Plugin for GamePlugin {
+    fn build(&self, app: &mut App) {
+        app.add_plugins((
+            GameLogicPlugin,
+            screen::view::ViewPlugin,
+            screen::draw::DrawPlugin,
+            screen::graph::EnergyGraphPlugin,
+        ));
+    }
+}

@@ -1,0 +1,387 @@
+//! Playing a replay back in the game (`play --replay FILE`): before each fixed step the
+//! recorded resets, settings and band are put in place, so that the box moves as it did, to
+//! the bit. A press takes over: the playback ends and the pointer's band replaces the
+//! recorded one. The recorder keeps recording, so a game taken over saves whole.
+//!
+//! A replay can also be opened while the game runs: dropped on the window, or in the browser
+//! chosen with the open control or dropped on the page. The scene is reset to the replay's
+//! start and the recorder starts over with it, so that at the replay's end the two hashes say
+//! whether the game stepped to the recorded bits.
+
+use std::time::Duration;
+
+use bevy::ecs::system::SystemParam;
+use bevy::prelude::*;
+
+use crate::game::input::pointer::{PointerAction, read_pointer};
+use crate::game::replays::recording::{Recorder, SceneName};
+use crate::game::schedule::GameSystems;
+use crate::game::shared::StatusMessage;
+use crate::game::simulation::{Band, PhysicsSystems, ResetScene, RigidBox, rigid_box};
+use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams};
+use crate::replay::{Record, Replay, TrajectoryHash};
+
+pub struct PlaybackPlugin;
+
+impl Plugin for PlaybackPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<Playback>()
+            .add_systems(
+                RunFixedMainLoop,
+                (
+                    take_over_on_press
+                        .after(read_pointer)
+                        .in_set(GameSystems::Input),
+                    // What this frame's steps did, before the HUD shows it.
+                    report_the_end
+                        .run_if(resource_changed::<Playback>)
+                        .in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
+                ),
+            )
+            .add_systems(FixedUpdate, play_step.before(PhysicsSystems::Accumulate));
+        // A replay file opened is input: it acts on the very next step.
+        #[cfg(not(target_arch = "wasm32"))]
+        app.add_systems(
+            RunFixedMainLoop,
+            open_dropped_files.in_set(GameSystems::Input),
+        );
+        #[cfg(target_arch = "wasm32")]
+        app.add_systems(Startup, page::expose_replay_hash)
+            .add_systems(
+                RunFixedMainLoop,
+                page::open_chosen_files.in_set(GameSystems::Input),
+            );
+    }
+}
+
+/// How the latest playback ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlaybackEnd {
+    /// The player pressed at this step.
+    TakenOver { step: u64 },
+    /// Played to the end: the hash of the states the game had, and the recording's.
+    Finished {
+        steps: u64,
+        hash: TrajectoryHash,
+        recorded: TrajectoryHash,
+    },
+}
+
+impl PlaybackEnd {
+    /// What the HUD says.
+    pub fn describe(&self) -> String {
+        match *self {
+            Self::TakenOver { step } => format!("replay taken over at step {step}"),
+            Self::Finished {
+                steps,
+                hash,
+                recorded,
+            } if hash == recorded => {
+                format!("replay over: {steps} steps, the recorded states to the bit (hash {hash})")
+            }
+            Self::Finished {
+                steps,
+                hash,
+                recorded,
+            } => format!(
+                "replay over: {steps} steps, the states DIFFER from the recording (hash {hash}, \
+                 recorded {recorded})"
+            ),
+        }
+    }
+}
+
+/// The replay being played back, if any, and how far it has got.
+#[derive(Resource, Debug, Default)]
+pub struct Playback {
+    replay: Option<Replay>,
+    next: usize,
+    /// Steps played so far.
+    pub played: u64,
+    /// How the latest playback ended.
+    pub ended: Option<PlaybackEnd>,
+}
+
+impl Playback {
+    /// Plays `replay` from its start. Its `auto` settings are put in place with it.
+    pub fn of(replay: Replay) -> Self {
+        Self {
+            replay: Some(replay),
+            ..default()
+        }
+    }
+
+    pub fn is_playing(&self) -> bool {
+        self.replay.is_some()
+    }
+
+    /// (steps played, steps in the replay) while playing.
+    pub fn progress(&self) -> Option<(u64, u64)> {
+        self.replay
+            .as_ref()
+            .map(|replay| (self.played, replay.steps))
+    }
+
+    /// The replay's settings and auto settings, for the game to start with.
+    pub fn start(&self) -> Option<(SceneParams, Integrator, AutoSettings)> {
+        let header = &self.replay.as_ref()?.header;
+        Some((
+            header.settings.params(),
+            header.settings.integrator,
+            header.auto.into(),
+        ))
+    }
+}
+
+/// A press ends the playback: the pointer's band replaces the recorded one.
+fn take_over_on_press(mut actions: MessageReader<PointerAction>, mut playback: ResMut<Playback>) {
+    let pressed = actions
+        .read()
+        .any(|action| matches!(action, PointerAction::Press(_)));
+    if pressed && playback.is_playing() {
+        playback.replay = None;
+        playback.ended = Some(PlaybackEnd::TakenOver {
+            step: playback.played,
+        });
+        info!("playback ended: the player took over");
+    }
+}
+
+/// What a settings record puts in place.
+#[derive(SystemParam)]
+struct RecordedSettings<'w> {
+    params: ResMut<'w, SceneParams>,
+    integrator: ResMut<'w, Integrator>,
+    time: ResMut<'w, Time<Fixed>>,
+}
+
+/// Before the step's forces: the recorded resets and settings up to the next step, and its
+/// band. At the replay's end the playback stops, leaving the box as it is.
+fn play_step(
+    mut commands: Commands,
+    mut playback: ResMut<Playback>,
+    mut settings: RecordedSettings,
+    recorder: Res<Recorder>,
+    boxes: Query<Entity, With<RigidBox>>,
+    mut bands: Query<(Entity, &mut Band)>,
+) {
+    let Ok(body) = boxes.single() else {
+        return;
+    };
+    if playback.next == 0
+        && let Some(replay) = playback.replay.as_ref()
+        && let Ok(mass) = settings.params.mass_properties()
+    {
+        // The recorded start (the game's is the box at rest at the centre).
+        let start = BodyState::from_array(replay.header.initial);
+        commands.entity(body).insert(rigid_box(mass, start));
+    }
+    let mut reset = false;
+    while playback.is_playing() {
+        let next = playback.next;
+        let Some(record) = playback
+            .replay
+            .as_ref()
+            .and_then(|replay| replay.records.get(next))
+            .cloned()
+        else {
+            // The recorder started with the playback (`of` before the game's first step,
+            // `open` restarts it), so its hash is of the states the game had since.
+            let recorded = playback.replay.take().map(|replay| replay.hash);
+            if let (Some(recorded), Some(game)) = (recorded, recorder.replay.as_ref()) {
+                playback.ended = Some(PlaybackEnd::Finished {
+                    steps: game.steps,
+                    hash: game.hash,
+                    recorded,
+                });
+            }
+            return;
+        };
+        playback.next += 1;
+        match record {
+            Record::Reset { .. } => {
+                // Its observers put the box, the books and the bands back before this step.
+                commands.trigger(ResetScene);
+                reset = true;
+            }
+            Record::Settings {
+                settings: recorded, ..
+            } => {
+                let next = recorded.params();
+                let params = &mut settings.params;
+                if next.mass != params.mass || next.size != params.size {
+                    // Checked when the file was read.
+                    if let Ok(mass) = next.mass_properties() {
+                        commands.entity(body).insert(mass);
+                    }
+                }
+                **params = next;
+                *settings.integrator = recorded.integrator;
+                if let Ok(step) = Duration::try_from_secs_f64(recorded.dt) {
+                    settings.time.set_timestep(step);
+                }
+            }
+            Record::Step { band, .. } => {
+                playback.played += 1;
+                place_band(
+                    &mut commands,
+                    body,
+                    band.map(BandEnds::from),
+                    reset,
+                    &mut bands,
+                );
+                return;
+            }
+            Record::End { .. } => {}
+        }
+    }
+}
+
+/// The step's band, and no other. After a reset the old bands are the reset's to remove.
+fn place_band(
+    commands: &mut Commands,
+    body: Entity,
+    ends: Option<BandEnds>,
+    reset: bool,
+    bands: &mut Query<(Entity, &mut Band)>,
+) {
+    let mut kept = false;
+    if !reset {
+        for (entity, mut band) in bands.iter_mut() {
+            match ends {
+                Some(ends) if !kept => {
+                    band.set_if_neq(Band { body, ends });
+                    kept = true;
+                }
+                _ => commands.entity(entity).despawn(),
+            }
+        }
+    }
+    if let (Some(ends), false) = (ends, kept) {
+        commands.spawn((Name::new("Band (replay)"), Band { body, ends }));
+    }
+}
+
+/// Opens `replay` in the running game: the scene reset, the replay's settings in place, the
+/// recorder started over, and the playback from its first step.
+pub fn open(world: &mut World, replay: Replay) {
+    let header = &replay.header;
+    let params = header.settings.params();
+    let integrator = header.settings.integrator;
+    let auto = AutoSettings::from(header.auto);
+    let dt = header.settings.dt;
+    world.trigger(ResetScene);
+    world.insert_resource(params);
+    world.insert_resource(integrator);
+    world.insert_resource(auto);
+    if let Ok(step) = Duration::try_from_secs_f64(dt) {
+        world.resource_mut::<Time<Fixed>>().set_timestep(step);
+    }
+    world.resource_mut::<Recorder>().restart();
+    world.insert_resource(SceneName(replay.header.scene.clone()));
+    world.insert_resource(Playback::of(replay));
+}
+
+/// A replay file's text opened by the player, or why it cannot be played.
+fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, String>) {
+    match read {
+        Ok(replay) => {
+            let message = format!("playing {name} ({} steps)", replay.steps);
+            commands.queue(move |world: &mut World| {
+                open(world, replay);
+                world.resource_mut::<StatusMessage>().0 = Some(message);
+            });
+        }
+        Err(error) => {
+            let message = format!("cannot play {name}: {error}");
+            commands.queue(move |world: &mut World| {
+                world.resource_mut::<StatusMessage>().0 = Some(message);
+            });
+        }
+    }
+}
+
+/// The end of a playback, said once: in the HUD's status and the log, and in the browser to
+/// the page too.
+fn report_the_end(
+    playback: Res<Playback>,
+    mut status: ResMut<StatusMessage>,
+    mut said: Local<Option<PlaybackEnd>>,
+) {
+    let Some(end) = playback.ended else {
+        return;
+    };
+    if *said == Some(end) {
+        return;
+    }
+    *said = Some(end);
+    let said = end.describe();
+    info!("{said}");
+    status.0 = Some(said);
+    #[cfg(target_arch = "wasm32")]
+    if let PlaybackEnd::Finished {
+        steps,
+        hash,
+        recorded,
+    } = end
+    {
+        crate::game::web::publish_playback(
+            steps as f64,
+            &hash.to_string(),
+            &recorded.to_string(),
+            hash == recorded,
+        );
+    }
+}
+
+/// A file dropped on the window is played as a replay.
+#[cfg(not(target_arch = "wasm32"))]
+fn open_dropped_files(
+    mut commands: Commands,
+    mut drops: MessageReader<bevy::window::FileDragAndDrop>,
+) {
+    for drop in drops.read() {
+        if let bevy::window::FileDragAndDrop::DroppedFile { path_buf, .. } = drop {
+            let name = path_buf.display().to_string();
+            open_or_refuse(&mut commands, &name, Replay::read_file(path_buf));
+        }
+    }
+}
+
+/// The browser's side: files chosen or dropped on the page, and the hash the page can ask for.
+#[cfg(target_arch = "wasm32")]
+mod page {
+    use bevy::prelude::*;
+    use wasm_bindgen::closure::Closure;
+
+    use crate::game::web;
+    use crate::replay::Replay;
+    use crate::replay::run::ReplayRun;
+
+    pub fn open_chosen_files(mut commands: Commands) {
+        let name = web::take_opened_name().unwrap_or_else(|| "the file".to_owned());
+        if let Some(text) = web::take_opened_text() {
+            let read = Replay::from_bytes(text.as_bytes()).map_err(|error| error.to_string());
+            super::open_or_refuse(&mut commands, &name, read);
+        }
+    }
+
+    /// `window.rubberBandBox.replayHash(text)`: the replay stepped with its recorded
+    /// integrators, as `simulate --replay FILE --hash` does natively.
+    pub fn expose_replay_hash() {
+        let hash = Closure::<dyn Fn(String) -> String>::new(|text: String| {
+            Replay::from_bytes(text.as_bytes())
+                .map_err(|error| error.to_string())
+                .and_then(|replay| {
+                    ReplayRun::new(&replay, None)
+                        .map(|mut run| run.finish().to_string())
+                        .map_err(|error| error.to_string())
+                })
+                .unwrap_or_else(|error| format!("error: {error}"))
+        });
+        web::expose_replay_hash(&hash);
+        // The page keeps it for the life of the game.
+        hash.forget();
+        web::accept_dropped_files();
+    }
+}

@@ -1,0 +1,245 @@
+//! The recorder: what reached the physics at each fixed step (the band the integrator used,
+//! the settings in force, the resets), kept as a [`Replay`] from the first step on, so that a
+//! game can be saved at any moment and stepped again to the bit (`simulate --replay`).
+//!
+//! It reads the step's inputs after the forces are accumulated and before the integration,
+//! and the state after it, so it sees exactly what the integrator saw; it never writes
+//! anything the physics reads. Saving writes a new file beside the target and renames it into
+//! place ([`crate::replay::save`]). `play --record FILE` saves to FILE when the game ends (the
+//! window closed, Ctrl-C, or SIGTERM); the save control saves the game so far at any time.
+
+#[cfg(not(target_arch = "wasm32"))]
+use std::path::{Path, PathBuf};
+
+use bevy::prelude::*;
+
+use crate::game::shared::StatusMessage;
+use crate::game::simulation::{ForceAccumulator, PhysicsSystems, ResetScene, RigidBox, body_state};
+use crate::physics::{AngularState, AutoSettings, BandEnds, Integrator, LinearState, SceneParams};
+use crate::replay::{Replay, Settings};
+
+pub struct RecordingPlugin;
+
+impl Plugin for RecordingPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<Recorder>()
+            .init_resource::<StatusMessage>()
+            .init_resource::<SceneName>()
+            .add_observer(note_reset)
+            .add_observer(save_on_request)
+            .add_systems(
+                FixedUpdate,
+                (
+                    note_step_inputs
+                        .after(PhysicsSystems::Accumulate)
+                        .before(PhysicsSystems::Integrate),
+                    note_step_result.after(PhysicsSystems::Integrate),
+                ),
+            );
+        // After the window plugin's exit systems: closing the last window asks to exit there.
+        #[cfg(not(target_arch = "wasm32"))]
+        app.add_systems(Last, save_on_exit.after(bevy::window::ExitSystems));
+    }
+}
+
+/// The scene the game plays (a recording's header names it): the tutorial's, a named scene
+/// loaded, or the one a replay opened was recorded in.
+#[derive(Resource, Debug, Clone, PartialEq, Eq)]
+pub struct SceneName(pub String);
+
+impl Default for SceneName {
+    fn default() -> Self {
+        Self("tutorial".to_owned())
+    }
+}
+
+/// The game so far, and where `play --record` saves it.
+#[derive(Resource, Debug, Default)]
+pub struct Recorder {
+    /// None until the first step.
+    pub replay: Option<Replay>,
+    /// `play --record FILE`: saved there when the game ends.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub target: Option<PathBuf>,
+    /// A reset happened since the latest step.
+    reset_pending: bool,
+    /// The band of the step being taken, between its two systems.
+    band: Option<BandEnds>,
+    step_noted: bool,
+    #[cfg(not(target_arch = "wasm32"))]
+    saved_at_exit: bool,
+}
+
+impl Recorder {
+    /// Records to `target` (saved when the game ends).
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn to_file(target: PathBuf) -> Self {
+        Self {
+            target: Some(target),
+            ..default()
+        }
+    }
+
+    /// A new recording from the next step on (a replay opened in the game), to the same
+    /// target.
+    pub fn restart(&mut self) {
+        *self = Self {
+            #[cfg(not(target_arch = "wasm32"))]
+            target: self.target.take(),
+            ..default()
+        };
+    }
+
+    pub fn steps(&self) -> u64 {
+        self.replay.as_ref().map_or(0, |replay| replay.steps)
+    }
+}
+
+/// Save the game so far (the save control).
+#[derive(Event, Debug, Clone, Copy, Default)]
+pub struct SaveReplay;
+
+fn note_reset(_reset: On<ResetScene>, mut recorder: ResMut<Recorder>) {
+    recorder.reset_pending = true;
+}
+
+/// Before the integration: the settings in force and the band the integrator will use.
+fn note_step_inputs(
+    mut recorder: ResMut<Recorder>,
+    time: Res<Time<Fixed>>,
+    params: Res<SceneParams>,
+    integrator: Res<Integrator>,
+    auto: Res<AutoSettings>,
+    scene: Res<SceneName>,
+    boxes: Query<(&LinearState, &AngularState, &ForceAccumulator), With<RigidBox>>,
+) {
+    let Ok((linear, angular, accumulator)) = boxes.single() else {
+        return;
+    };
+    let settings = Settings::new(&params, time.timestep().as_secs_f64(), *integrator);
+    let recorder = &mut *recorder;
+    let replay = recorder.replay.get_or_insert_with(|| {
+        Replay::start(&scene.0, settings, *auto, body_state(linear, angular))
+    });
+    if replay.is_full() {
+        warn_once!("the recording is full: later steps are not recorded");
+        return;
+    }
+    if std::mem::take(&mut recorder.reset_pending) {
+        replay.push_reset();
+    }
+    replay.push_settings(settings);
+    recorder.band = accumulator.band;
+    recorder.step_noted = true;
+}
+
+/// After the integration: the state the step left (refused steps included, as the game kept it).
+fn note_step_result(
+    mut recorder: ResMut<Recorder>,
+    boxes: Query<(&LinearState, &AngularState), With<RigidBox>>,
+) {
+    let recorder = &mut *recorder;
+    if !std::mem::take(&mut recorder.step_noted) {
+        return;
+    }
+    let band = recorder.band.take();
+    if let (Some(replay), Ok((linear, angular))) = (recorder.replay.as_mut(), boxes.single()) {
+        replay.push_step(band, &body_state(linear, angular));
+    }
+}
+
+/// The save control: to `--record`'s file if there is one, else to a new file named by the
+/// time, in the working folder.
+fn save_on_request(
+    _save: On<SaveReplay>,
+    recorder: Res<Recorder>,
+    mut status: ResMut<StatusMessage>,
+) {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let path = recorder.target.clone().unwrap_or_else(timestamped_name);
+        status.0 = Some(save(&recorder, &path).unwrap_or_else(|message| message));
+    }
+    // In the browser: offered as a download.
+    #[cfg(target_arch = "wasm32")]
+    {
+        status.0 = Some(match recorder.replay.as_ref() {
+            None => "nothing to save yet: no step has run".to_owned(),
+            Some(replay) => {
+                let text = String::from_utf8_lossy(&replay.to_bytes()).into_owned();
+                let name = crate::game::web::download_replay(&text);
+                format!("saved {} steps as the download {name}", replay.steps)
+            }
+        });
+    }
+}
+
+/// `replay-<seconds since 1970>.jsonl`.
+#[cfg(not(target_arch = "wasm32"))]
+fn timestamped_name() -> PathBuf {
+    let seconds = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |since| since.as_secs());
+    PathBuf::from(format!("replay-{seconds}.jsonl"))
+}
+
+/// Saves the game so far to `path`: what to tell the player either way.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn save(recorder: &Recorder, path: &Path) -> Result<String, String> {
+    let Some(replay) = recorder.replay.as_ref() else {
+        return Err("nothing to save yet: no step has run".to_owned());
+    };
+    crate::replay::save::write_atomically(path, |file| replay.write(file))
+        .map(|()| format!("saved {} steps to {}", replay.steps, path.display()))
+        .map_err(|error| error.to_string())
+}
+
+/// When the game ends (the window closed, Ctrl-C, SIGTERM), `--record`'s file is saved.
+#[cfg(not(target_arch = "wasm32"))]
+fn save_on_exit(mut exits: MessageReader<AppExit>, mut recorder: ResMut<Recorder>) {
+    if exits.read().last().is_none() || recorder.saved_at_exit {
+        return;
+    }
+    recorder.saved_at_exit = true;
+    let Some(target) = recorder.target.clone() else {
+        return;
+    };
+    match save(&recorder, &target) {
+        Ok(message) => info!("{message}"),
+        Err(message) => error!("{message}"),
+    }
+}
+
+/// SIGTERM ends the game as Ctrl-C does (Bevy handles SIGINT): with an [`AppExit`], so that
+/// the recording is saved.
+#[cfg(all(unix, not(target_arch = "wasm32")))]
+pub mod sigterm {
+    use std::sync::atomic::{AtomicBool, Ordering};
+
+    use bevy::prelude::*;
+
+    static RECEIVED: AtomicBool = AtomicBool::new(false);
+
+    extern "C" fn on_sigterm(_signal: libc::c_int) {
+        // Only an atomic store: all a signal handler may safely do.
+        RECEIVED.store(true, Ordering::SeqCst);
+    }
+
+    /// Installs the handler and the system that turns it into an [`AppExit`].
+    pub fn exit_on_sigterm(app: &mut App) {
+        let handler = on_sigterm as extern "C" fn(libc::c_int);
+        // SAFETY: the handler only stores to an atomic, which is async-signal-safe.
+        let previous = unsafe { libc::signal(libc::SIGTERM, handler as libc::sighandler_t) };
+        if previous == libc::SIG_ERR {
+            warn!("cannot handle SIGTERM: the recording is saved on Ctrl-C or closing only");
+            return;
+        }
+        app.add_systems(Update, write_exit);
+    }
+
+    fn write_exit(mut exits: MessageWriter<AppExit>) {
+        if RECEIVED.load(Ordering::SeqCst) {
+            exits.write(AppExit::from_code(143));
+        }
+    }
+}

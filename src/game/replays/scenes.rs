@@ -1,0 +1,46 @@
+//! The named scenes in the game: the core's table ([`Scenario::NAMES`]), loaded by number
+//! keys (and the panel) as a replay of their scripted pull (`replay::script`), which the
+//! playback plays until the player presses. The player's step rate and integrator stay.
+
+use bevy::prelude::*;
+
+use crate::game::replays::playback;
+use crate::game::shared::StatusMessage;
+use crate::physics::{AutoSettings, Integrator, Scenario, SceneParams};
+use crate::replay::script::scene_replay;
+
+pub struct ScenesPlugin;
+
+impl Plugin for ScenesPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_observer(load);
+    }
+}
+
+/// Load the named scene (one of [`Scenario::NAMES`]).
+#[derive(Event, Debug, Clone, Copy)]
+pub struct LoadScene(pub &'static str);
+
+fn load(load: On<LoadScene>, mut commands: Commands) {
+    let name = load.0;
+    commands.queue(move |world: &mut World| load_scene(world, name));
+}
+
+/// The scene's parameters at the player's step rate, its start, and its script playing.
+pub fn load_scene(world: &mut World, name: &str) {
+    let loaded = Scenario::named(name)
+        .map_err(|unknown| unknown.to_string())
+        .and_then(|mut scenario| {
+            scenario.params.step_rate_hz = world.resource::<SceneParams>().step_rate_hz;
+            let dt = world.resource::<Time<Fixed>>().timestep().as_secs_f64();
+            let integrator = *world.resource::<Integrator>();
+            let auto = *world.resource::<AutoSettings>();
+            scene_replay(&scenario, dt, integrator, auto).map_err(|error| error.to_string())
+        });
+    match loaded {
+        Ok(replay) => playback::open(world, replay),
+        Err(error) => {
+            world.resource_mut::<StatusMessage>().0 = Some(format!("cannot load {name}: {error}"))
+        }
+    }
+}

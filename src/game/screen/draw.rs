@@ -1,0 +1,310 @@
+//! What the player sees: lyon fills the box and the band's pin; gizmos draw the box's outline,
+//! its centre, the band (red, turning magenta as it stretches, as in the tutorial), the
+//! tutorial's 640 x 480 screen, and the overlays the controls switch on (force and velocity
+//! arrows, the pulled corner's trail, which this module owns and a reset clears). Needs a
+//! window; reads the physics' render snapshots, never the other way round.
+
+use std::collections::VecDeque;
+
+use bevy::math::DVec2;
+use bevy::prelude::*;
+use bevy_prototype_lyon::prelude::*;
+
+use crate::game::ghosts::{GhostKind, Ghosts};
+use crate::game::screen::view::interpolated_state;
+use crate::game::shared::Overlays;
+use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox};
+use crate::physics::{Integrator, MassProperties, SCENE_SIZE, SceneParams};
+
+pub const BOX_FILL: Color = Color::srgb(0.16, 0.42, 0.72);
+pub const BOX_OUTLINE: Color = Color::WHITE;
+pub const PIN_FILL: Color = Color::srgb(1.0, 0.85, 0.2);
+const SCENE_BORDER: Color = Color::srgb(0.25, 0.25, 0.3);
+const PIN_RADIUS: f32 = 5.0;
+/// The tutorial's band colour is [255, 0, min(length / 2, 255)]: fully magenta at this length.
+const BAND_MAGENTA_LENGTH: f64 = 510.0;
+
+pub struct DrawPlugin;
+
+impl Plugin for DrawPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_observer(fill_box)
+            .add_observer(pin_band)
+            .add_observer(clear_trail_on_reset)
+            .init_resource::<Trail>()
+            .add_systems(Startup, thicken_lines)
+            .add_systems(
+                Update,
+                (
+                    draw_scene_border,
+                    draw_boxes,
+                    draw_bands,
+                    draw_vectors.run_if(|overlays: Res<Overlays>| overlays.vectors),
+                    (record_trail, draw_trail).chain(),
+                    draw_ghosts,
+                ),
+            );
+    }
+}
+
+fn thicken_lines(mut store: ResMut<GizmoConfigStore>) {
+    let (config, _) = store.config_mut::<DefaultGizmoConfigGroup>();
+    config.line.width = 2.0;
+}
+
+/// Gives a new box its filled body.
+fn fill_box(add: On<Add, RigidBox>, boxes: Query<&MassProperties>, mut commands: Commands) {
+    let Ok(mass) = boxes.get(add.entity) else {
+        return;
+    };
+    let rectangle = shapes::Rectangle {
+        extents: mass.size().as_vec2(),
+        origin: RectangleOrigin::Center,
+        radii: None,
+    };
+    commands
+        .entity(add.entity)
+        .insert(ShapeBuilder::with(&rectangle).fill(BOX_FILL).build());
+}
+
+/// Gives a new band a pin at its anchor.
+fn pin_band(add: On<Add, Band>, bands: Query<&Band>, mut commands: Commands) {
+    let Ok(band) = bands.get(add.entity) else {
+        return;
+    };
+    let circle = shapes::Circle {
+        radius: PIN_RADIUS,
+        center: Vec2::ZERO,
+    };
+    commands.entity(add.entity).insert((
+        ShapeBuilder::with(&circle).fill(PIN_FILL).build(),
+        Transform::from_translation(band.ends.anchor.as_vec2().extend(1.0)),
+    ));
+}
+
+fn draw_scene_border(mut gizmos: Gizmos) {
+    gizmos.rect_2d(Isometry2d::IDENTITY, SCENE_SIZE.as_vec2(), SCENE_BORDER);
+}
+
+fn draw_boxes(
+    mut gizmos: Gizmos,
+    fixed_time: Res<Time<Fixed>>,
+    boxes: Query<(&RenderSnapshots, &MassProperties)>,
+) {
+    for (snapshots, mass) in &boxes {
+        let state = interpolated_state(snapshots, &fixed_time);
+        let centre = state.linear.position.as_vec2();
+        let rotation = Rot2::radians(state.angular.orientation as f32);
+        gizmos.rect_2d(
+            Isometry2d::new(centre, rotation),
+            mass.size().as_vec2(),
+            BOX_OUTLINE,
+        );
+        gizmos.cross_2d(Isometry2d::new(centre, rotation), 4.0, BOX_OUTLINE);
+    }
+}
+
+fn draw_bands(
+    mut gizmos: Gizmos,
+    fixed_time: Res<Time<Fixed>>,
+    bands: Query<&Band>,
+    bodies: Query<&RenderSnapshots>,
+) {
+    for band in &bands {
+        let Ok(snapshots) = bodies.get(band.body) else {
+            continue;
+        };
+        let state = interpolated_state(snapshots, &fixed_time);
+        let corner = band.ends.attachment(&state);
+        gizmos.line_2d(
+            corner.as_vec2(),
+            band.ends.anchor.as_vec2(),
+            band_colour(corner.distance(band.ends.anchor)),
+        );
+    }
+}
+
+/// Red when slack, toward magenta as the band stretches.
+pub fn band_colour(length: f64) -> Color {
+    Color::srgb(1.0, 0.0, (length / BAND_MAGENTA_LENGTH).min(1.0) as f32)
+}
+
+const VELOCITY_COLOUR: Color = Color::srgb(0.3, 0.9, 0.4);
+const FORCE_COLOUR: Color = Color::srgb(1.0, 0.55, 0.1);
+/// The velocity arrow shows where the centre will be in this many seconds.
+const VELOCITY_ARROW_SECONDS: f32 = 0.25;
+/// The force arrow grows with the logarithm of the force, so that k = 20 and k = 1e9 both fit.
+fn force_arrow_length(force: f64) -> f64 {
+    (30.0 * (1.0 + force / 10.0).log10()).min(300.0)
+}
+
+/// Velocity at the centre; the band's force at its corner.
+fn draw_vectors(
+    mut gizmos: Gizmos,
+    params: Res<SceneParams>,
+    fixed_time: Res<Time<Fixed>>,
+    bodies: Query<&RenderSnapshots>,
+    bands: Query<&Band>,
+) {
+    for snapshots in &bodies {
+        let state = interpolated_state(snapshots, &fixed_time);
+        let centre = state.linear.position.as_vec2();
+        let velocity = state.linear.velocity.as_vec2() * VELOCITY_ARROW_SECONDS;
+        gizmos.arrow_2d(centre, centre + velocity, VELOCITY_COLOUR);
+    }
+    for band in &bands {
+        let Ok(snapshots) = bodies.get(band.body) else {
+            continue;
+        };
+        let state = interpolated_state(snapshots, &fixed_time);
+        let corner = band.ends.attachment(&state);
+        let force = band.ends.wrench(&state, params.stiffness).force;
+        let arrow = force.normalize_or_zero() * force_arrow_length(force.length());
+        gizmos.arrow_2d(corner.as_vec2(), (corner + arrow).as_vec2(), FORCE_COLOUR);
+    }
+}
+
+/// Where the pulled corner has been, newest last; the corner is the last one a band held.
+#[derive(Resource, Default)]
+struct Trail {
+    corner: Option<DVec2>,
+    points: VecDeque<Vec2>,
+}
+
+const TRAIL_LENGTH: usize = 240;
+
+fn record_trail(
+    overlays: Res<Overlays>,
+    fixed_time: Res<Time<Fixed>>,
+    bodies: Query<&RenderSnapshots, With<RigidBox>>,
+    bands: Query<&Band>,
+    mut trail: ResMut<Trail>,
+) {
+    if !overlays.trail {
+        trail.points.clear();
+        return;
+    }
+    if let Some(band) = bands.iter().next() {
+        trail.corner = Some(band.ends.local_point);
+    }
+    let (Some(corner), Some(snapshots)) = (trail.corner, bodies.iter().next()) else {
+        return;
+    };
+    let point = interpolated_state(snapshots, &fixed_time).local_to_world(corner);
+    trail.points.push_back(point.as_vec2());
+    while trail.points.len() > TRAIL_LENGTH {
+        trail.points.pop_front();
+    }
+}
+
+fn clear_trail_on_reset(_reset: On<ResetScene>, mut trail: ResMut<Trail>) {
+    *trail = Trail::default();
+}
+
+/// Older points fade out.
+fn draw_trail(mut gizmos: Gizmos, trail: Res<Trail>) {
+    let n = trail.points.len().max(1) as f32;
+    gizmos.linestrip_gradient_2d(
+        trail
+            .points
+            .iter()
+            .enumerate()
+            .map(|(i, &p)| (p, PIN_FILL.with_alpha(i as f32 / n))),
+    );
+}
+
+/// A ghost's name, drawn above its outline.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+struct GhostLabel(GhostKind);
+
+const GHOST_LABEL_SIZE: f32 = 11.0;
+
+/// Each ghost as a thin outline in its colour with its band and its name, between its last
+/// two steps as the live box is drawn; a diverged one crossed out where it froze, with the
+/// step. The ghost of the live box's own integrator is not drawn (it lies under the box).
+fn draw_ghosts(
+    mut commands: Commands,
+    mut gizmos: Gizmos,
+    fixed_time: Res<Time<Fixed>>,
+    ghosts: Res<Ghosts>,
+    integrator: Res<Integrator>,
+    mut labels: Query<(
+        Entity,
+        &GhostLabel,
+        &mut Text2d,
+        &mut Transform,
+        &mut Visibility,
+    )>,
+) {
+    let alpha = fixed_time.overstep_fraction_f64().clamp(0.0, 1.0);
+    let mut unlabelled: Vec<GhostKind> = ghosts.ghosts.iter().map(|g| g.kind).collect();
+    for (entity, label, mut text, mut transform, mut visibility) in &mut labels {
+        let Some(ghost) = ghosts.ghosts.iter().find(|g| g.kind == label.0) else {
+            commands.entity(entity).despawn();
+            continue;
+        };
+        unlabelled.retain(|&kind| kind != label.0);
+        let hidden = ghost.kind == GhostKind::Method(*integrator);
+        visibility.set_if_neq(if hidden {
+            Visibility::Hidden
+        } else {
+            Visibility::Inherited
+        });
+        if hidden {
+            continue;
+        }
+        let state = RenderSnapshots {
+            previous: ghost.previous,
+            current: ghost.stepper.state,
+        }
+        .interpolate(if ghost.diverged_at.is_some() {
+            1.0
+        } else {
+            alpha
+        });
+        let colour = ghost.kind.colour().with_alpha(0.8);
+        let centre = state.linear.position.as_vec2();
+        let rotation = Rot2::radians(state.angular.orientation as f32);
+        let size = ghost.stepper.mass.size().as_vec2();
+        gizmos.rect_2d(Isometry2d::new(centre, rotation), size, colour);
+        if let Some(band) = ghost.stepper.band {
+            let corner = band.attachment(&state).as_vec2();
+            gizmos.line_2d(corner, band.anchor.as_vec2(), colour.with_alpha(0.35));
+        }
+        let name = match ghost.diverged_at {
+            Some(step) => {
+                let half = size / 2.0;
+                for corner in [half, Vec2::new(half.x, -half.y)] {
+                    let a = centre + rotation * corner;
+                    let b = centre - rotation * corner;
+                    gizmos.line_2d(a, b, colour);
+                }
+                format!("{} diverged @{step}", ghost.kind.name())
+            }
+            None => ghost.kind.name().to_owned(),
+        };
+        if text.0 != name {
+            text.0 = name;
+        }
+        // Stacked by the ghost's place in the list, so that ghosts that coincide (most of
+        // them, on a soft band) keep their names apart.
+        let place = ghosts
+            .ghosts
+            .iter()
+            .position(|g| g.kind == ghost.kind)
+            .unwrap_or(0);
+        let above = size.y.max(size.x) * 0.75 + place as f32 * (GHOST_LABEL_SIZE + 2.0);
+        transform.translation = (centre + Vec2::new(0.0, above)).extend(2.0);
+    }
+    for kind in unlabelled {
+        commands.spawn((
+            Name::new("Ghost label"),
+            GhostLabel(kind),
+            Text2d::new(kind.name()),
+            TextFont::from_font_size(GHOST_LABEL_SIZE),
+            TextColor(kind.colour()),
+            Transform::default(),
+            Visibility::Hidden,
+        ));
+    }
+}

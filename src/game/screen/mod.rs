@@ -1,0 +1,7 @@
+//! The screen: the camera and the interpolation between fixed steps ([`view`]), the box, the
+//! band and the overlays drawn ([`draw`]), and the HUD's energy graph ([`graph`]). Needs
+//! rendering; reads the game's state, never the other way round.
+
+pub mod draw;
+pub mod graph;
+pub mod view;

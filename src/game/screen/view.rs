@@ -1,0 +1,85 @@
+//! The camera that keeps the tutorial's 640 x 480 scene in view at any window size, and the
+//! interpolation that draws the box between fixed steps so that motion is smooth at any
+//! display rate (as Bevy's `physics_in_fixed_timestep` example does).
+
+use bevy::camera::ScalingMode;
+use bevy::prelude::*;
+
+use crate::game::simulation::{Band, RenderSnapshots};
+use crate::physics::{BodyState, SCENE_SIZE};
+
+pub struct ViewPlugin;
+
+impl Plugin for ViewPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_systems(Startup, spawn_camera)
+            .add_systems(
+                RunFixedMainLoop,
+                (interpolate_body_transforms, place_band_pins)
+                    .in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
+            )
+            .add_systems(Update, scale_ui_to_window);
+    }
+}
+
+/// An orthographic projection that always shows the whole scene, centred, aspect kept: the
+/// window's extra width or height shows more of the world around it.
+pub fn scene_projection() -> Projection {
+    Projection::Orthographic(OrthographicProjection {
+        scaling_mode: ScalingMode::AutoMin {
+            min_width: SCENE_SIZE.x as f32,
+            min_height: SCENE_SIZE.y as f32,
+        },
+        ..OrthographicProjection::default_2d()
+    })
+}
+
+/// The game's window is 960 x 720; in a smaller one (a phone) the HUD and the panel shrink with
+/// it, to no less than 0.6, so that they leave the scene readable.
+pub fn ui_scale_for(size: Vec2) -> f32 {
+    (size.x / 960.0).min(size.y / 720.0).clamp(0.6, 1.0)
+}
+
+fn scale_ui_to_window(
+    windows: Query<&Window, With<bevy::window::PrimaryWindow>>,
+    mut scale: ResMut<UiScale>,
+) {
+    for window in &windows {
+        let fit = ui_scale_for(window.size());
+        if scale.0 != fit {
+            scale.0 = fit;
+        }
+    }
+}
+
+fn spawn_camera(mut commands: Commands) {
+    commands.spawn((Name::new("Camera"), Camera2d, scene_projection()));
+}
+
+/// The state to draw this frame: between the last two fixed steps, by how far the clock has
+/// run past the last one.
+pub fn interpolated_state(snapshots: &RenderSnapshots, fixed_time: &Time<Fixed>) -> BodyState {
+    snapshots.interpolate(fixed_time.overstep_fraction_f64().clamp(0.0, 1.0))
+}
+
+/// `Transform` is written from the physics state for rendering only; physics never reads it.
+fn interpolate_body_transforms(
+    fixed_time: Res<Time<Fixed>>,
+    mut bodies: Query<(&RenderSnapshots, &mut Transform)>,
+) {
+    for (snapshots, mut transform) in &mut bodies {
+        let state = interpolated_state(snapshots, &fixed_time);
+        transform.translation = state
+            .linear
+            .position
+            .as_vec2()
+            .extend(transform.translation.z);
+        transform.rotation = Quat::from_rotation_z(state.angular.orientation as f32);
+    }
+}
+
+fn place_band_pins(mut bands: Query<(&Band, &mut Transform)>) {
+    for (band, mut transform) in &mut bands {
+        transform.translation = band.ends.anchor.as_vec2().extend(transform.translation.z);
+    }
+}

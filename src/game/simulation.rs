@@ -1,0 +1,419 @@
+//! The physics plugin: the box's state as components, the band as an entity, and the fixed
+//! step as three chained system sets: accumulate forces and torques (and book the hand's
+//! work), integrate (and book what damping took out), publish (render snapshots, the energy
+//! books' settlement, taps ended, the step counted). It owns the body, the energy books and
+//! the step statistics, and puts them back on [`ResetScene`].
+//!
+//! Headless, and usable alone (the benchmarks and the side-by-side with the peers run it
+//! without the rest of the game). Every system is a thin loop over the numerical core in
+//! [`crate::physics`].
+
+use std::time::Duration;
+
+use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
+use bevy::ecs::system::SystemParam;
+use bevy::math::DVec2;
+use bevy::prelude::*;
+
+use crate::game::schedule::GameSystems;
+use crate::physics::{
+    AngularState, AutoSettings, BandEnds, BodyState, Energies, EnergyLedger, Forces, Integrator,
+    LinearState, MassProperties, SceneParams, damping_wrench,
+};
+
+pub struct SimulationPlugin;
+
+impl Plugin for SimulationPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<SceneParams>()
+            .init_resource::<Integrator>()
+            .init_resource::<AutoSettings>()
+            .init_resource::<StepStats>()
+            .init_resource::<StepCount>()
+            .init_resource::<EnergyBooks>()
+            .configure_sets(
+                FixedUpdate,
+                (
+                    PhysicsSystems::Accumulate,
+                    PhysicsSystems::Integrate,
+                    PhysicsSystems::Publish,
+                )
+                    .chain(),
+            )
+            .add_systems(Startup, spawn_box)
+            .add_observer(reset_bodies_and_books)
+            // The step rate can change during play (a control); apply it before the loop. The
+            // game orders this set after its input and controls (`schedule`); placed before the
+            // loop here too, because the plugin also runs without the game.
+            .configure_sets(
+                RunFixedMainLoop,
+                GameSystems::ApplySettings.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+            )
+            .add_systems(
+                RunFixedMainLoop,
+                apply_step_rate
+                    .run_if(resource_changed::<SceneParams>)
+                    .in_set(GameSystems::ApplySettings),
+            )
+            .add_systems(
+                FixedUpdate,
+                (
+                    (book_hand_work, accumulate_band_force, accumulate_damping)
+                        .chain()
+                        .in_set(PhysicsSystems::Accumulate),
+                    integrate.in_set(PhysicsSystems::Integrate),
+                    (publish_snapshots, settle_books, end_taps, count_step)
+                        .chain()
+                        .in_set(PhysicsSystems::Publish),
+                ),
+            );
+    }
+}
+
+/// The fixed step, in order: the tutorial's total reaction split into ECS stages.
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PhysicsSystems {
+    /// Book the hand's work since the last step in the energy ledger, then sum every force
+    /// and torque on each body into its [`ForceAccumulator`].
+    Accumulate,
+    /// Advance each body by one fixed step with the [`Integrator`] resource, from its
+    /// accumulated forces, then clear the accumulator.
+    Integrate,
+    /// Hand the new state to the rest of the app: the render snapshots, the energy books
+    /// settled (energies by kind, the ledger's residual), taps' bands removed after their one
+    /// step, the step counted.
+    Publish,
+}
+
+/// The scene back at its start: the box at rest at the centre, no band, the books, the
+/// statistics, the graph and the trail started over. Triggered by the reset control; each
+/// plugin observes it for the state it owns.
+#[derive(Event, Debug, Clone, Copy, Default)]
+pub struct ResetScene;
+
+/// Marks the pulled box.
+#[derive(Component, Debug, Default)]
+#[require(LinearState, AngularState, ForceAccumulator, RenderSnapshots)]
+pub struct RigidBox;
+
+/// What acts on a body during the current step: the summed forces and torques, and the band
+/// whose force the integrator evaluates again at its intermediate states. Empty between steps.
+#[derive(Component, Debug, Default, Clone, Copy, PartialEq)]
+pub struct ForceAccumulator {
+    pub forces: Forces,
+    pub band: Option<BandEnds>,
+}
+
+/// The band: pulls `ends.local_point` on `body` toward the world point `ends.anchor`.
+#[derive(Component, Debug, Clone, Copy, PartialEq)]
+pub struct Band {
+    pub body: Entity,
+    pub ends: BandEnds,
+}
+
+/// A band that was pressed and released within one frame: it acts for exactly one fixed step,
+/// so that a quick click is never lost, and is then removed.
+#[derive(Component, Debug, Default)]
+pub struct Tap;
+
+/// The state before and after the latest fixed step, for drawing in between.
+#[derive(Component, Debug, Default, Clone, Copy)]
+pub struct RenderSnapshots {
+    pub previous: BodyState,
+    pub current: BodyState,
+}
+
+impl RenderSnapshots {
+    pub fn at_rest(state: BodyState) -> Self {
+        Self {
+            previous: state,
+            current: state,
+        }
+    }
+
+    /// The state a fraction `alpha` (0 to 1) of the way from the previous step to the current.
+    pub fn interpolate(&self, alpha: f64) -> BodyState {
+        let (a, b) = (self.previous.to_array(), self.current.to_array());
+        BodyState::from_array(std::array::from_fn(|i| a[i] + (b[i] - a[i]) * alpha))
+    }
+}
+
+/// What the integrator did: the latest step's substeps (most over the bodies) and whether it
+/// fell back (`auto`, over its budget, took one `implicit` step), the fall-backs since
+/// start-up, and the latest step refused because it would have left the state non-finite
+/// (which integrator, which step).
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct StepStats {
+    pub substeps: u32,
+    pub fell_back: bool,
+    pub fallbacks: u64,
+    pub divergence: Option<(Integrator, u64)>,
+}
+
+/// The energy ledger of the game. Between two steps only the player changes the energy
+/// (attaching, moving or releasing the band, changing k, resetting), so whatever the energy
+/// did between the end of one step and the start of the next is booked as the hand's work;
+/// damping's share comes from the integrator. The residual after each step is the
+/// integrator's error.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
+pub struct EnergyBooks {
+    pub ledger: EnergyLedger,
+    /// Mechanical energy right after the latest step; None before the first.
+    pub settled: Option<f64>,
+    /// The ledger's residual after the latest step.
+    pub residual: f64,
+    /// The energies by kind right after the latest step.
+    pub energies: Energies,
+}
+
+/// Kinetic and band energy of every body, with the bands as they are now.
+pub fn mechanical_energies(
+    params: &SceneParams,
+    bodies: &Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    bands: &Query<&Band>,
+) -> Energies {
+    let kinetic: Energies = bodies
+        .iter()
+        .map(|(linear, angular, mass)| {
+            Energies::of(&body_state(linear, angular), mass, None, params.stiffness)
+        })
+        .sum();
+    let band = bands
+        .iter()
+        .filter_map(|band| {
+            let (linear, angular, _) = bodies.get(band.body).ok()?;
+            Some(
+                band.ends
+                    .potential_energy(&body_state(linear, angular), params.stiffness),
+            )
+        })
+        .sum();
+    Energies { band, ..kinetic }
+}
+
+fn book_hand_work(
+    params: Res<SceneParams>,
+    bodies: Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    bands: Query<&Band>,
+    mut books: ResMut<EnergyBooks>,
+) {
+    let now = mechanical_energies(&params, &bodies, &bands).total();
+    let settled = books.settled;
+    books.ledger.open_step(settled, now);
+}
+
+fn settle_books(
+    params: Res<SceneParams>,
+    bodies: Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    bands: Query<&Band>,
+    mut books: ResMut<EnergyBooks>,
+) {
+    let energies = mechanical_energies(&params, &bodies, &bands);
+    books.energies = energies;
+    books.settled = Some(energies.total());
+    books.residual = books.ledger.residual(energies.total());
+}
+
+/// Puts every schedule the app has now on the single-threaded executor: for one box the
+/// multi-threaded one costs many times more per tick (README, "Benchmarks"). The benchmarks
+/// and the side-by-side with the peers measure with it.
+pub fn run_single_threaded(app: &mut App) {
+    let mut schedules = app.world_mut().resource_mut::<Schedules>();
+    for (_, schedule) in schedules.iter_mut() {
+        schedule.set_executor(SingleThreadedExecutor::new());
+    }
+}
+
+/// Fixed steps run since start-up.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct StepCount(pub u64);
+
+/// Joins a body's two state components into the core's state.
+pub fn body_state(linear: &LinearState, angular: &AngularState) -> BodyState {
+    BodyState {
+        linear: *linear,
+        angular: *angular,
+    }
+}
+
+/// Bevy's fixed clock counts whole nanoseconds and panics on a zero step: a rate it cannot
+/// represent is refused with a message, and the clock keeps its step.
+pub fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {
+    let step = params
+        .validate()
+        .map_err(|error| error.to_string())
+        .and_then(|()| Duration::try_from_secs_f64(params.dt()).map_err(|e| e.to_string()))
+        .and_then(|step| {
+            (!step.is_zero())
+                .then_some(step)
+                .ok_or_else(|| "the step is shorter than a nanosecond".to_owned())
+        });
+    match step {
+        Ok(step) => time.set_timestep(step),
+        Err(error) => error!(
+            "refusing the step rate {} Hz ({error}); keeping {:?}",
+            params.step_rate_hz,
+            time.timestep()
+        ),
+    }
+}
+
+/// The box as components, in `state`, with nothing acting on it yet: the one way every box
+/// is made or put back (the game, reset, the benchmarks, the side-by-side). Its render
+/// snapshots both hold `state`, so the first frame drawn never jumps.
+pub fn rigid_box(mass: MassProperties, state: BodyState) -> impl Bundle {
+    (
+        RigidBox,
+        mass,
+        state.linear,
+        state.angular,
+        ForceAccumulator::default(),
+        RenderSnapshots::at_rest(state),
+    )
+}
+
+/// Spawns the box at rest at the centre of the scene.
+pub fn spawn_box(mut commands: Commands, params: Res<SceneParams>) {
+    match params.mass_properties() {
+        Ok(mass) => {
+            let rest = BodyState::at_rest(DVec2::ZERO);
+            commands.spawn((Name::new("Box"), rigid_box(mass, rest)));
+        }
+        Err(error) => error!("cannot spawn the box: {error}"),
+    }
+}
+
+/// Every box back at rest at the centre (its mass kept), and the books and statistics of the
+/// run started over.
+fn reset_bodies_and_books(
+    _reset: On<ResetScene>,
+    mut commands: Commands,
+    boxes: Query<(Entity, &MassProperties), With<RigidBox>>,
+    mut stats: ResMut<StepStats>,
+    mut books: ResMut<EnergyBooks>,
+) {
+    for (entity, mass) in &boxes {
+        let rest = BodyState::at_rest(DVec2::ZERO);
+        commands.entity(entity).insert(rigid_box(*mass, rest));
+    }
+    *stats = StepStats::default();
+    *books = EnergyBooks::default();
+}
+
+/// Band force k·(anchor − corner) at the corner, and its torque r × F.
+fn accumulate_band_force(
+    params: Res<SceneParams>,
+    bands: Query<&Band>,
+    mut bodies: Query<(&LinearState, &AngularState, &mut ForceAccumulator)>,
+) {
+    for band in &bands {
+        let Ok((linear, angular, mut accumulator)) = bodies.get_mut(band.body) else {
+            continue;
+        };
+        if accumulator.band.is_some() {
+            // The scene has one band per body; the pointer never makes a second.
+            warn_once!("a second band on one body is ignored");
+            continue;
+        }
+        accumulator.forces.applied += band
+            .ends
+            .wrench(&body_state(linear, angular), params.stiffness);
+        accumulator.band = Some(band.ends);
+    }
+}
+
+/// Damping force −b·v and damping torque −c·I·ω.
+fn accumulate_damping(
+    params: Res<SceneParams>,
+    mut bodies: Query<(
+        &LinearState,
+        &AngularState,
+        &MassProperties,
+        &mut ForceAccumulator,
+    )>,
+) {
+    for (linear, angular, mass, mut accumulator) in &mut bodies {
+        accumulator.forces.damping += damping_wrench(
+            &body_state(linear, angular),
+            mass,
+            params.linear_damping,
+            params.angular_damping,
+        );
+    }
+}
+
+/// Everything that says how to take a step.
+#[derive(SystemParam)]
+struct StepSettings<'w> {
+    time: Res<'w, Time<Fixed>>,
+    params: Res<'w, SceneParams>,
+    integrator: Res<'w, Integrator>,
+    auto: Res<'w, AutoSettings>,
+}
+
+fn integrate(
+    settings: StepSettings,
+    steps: Res<StepCount>,
+    mut stats: ResMut<StepStats>,
+    mut books: ResMut<EnergyBooks>,
+    mut bodies: Query<(
+        &mut LinearState,
+        &mut AngularState,
+        &MassProperties,
+        &mut ForceAccumulator,
+    )>,
+) {
+    let StepSettings {
+        time,
+        params,
+        integrator,
+        auto,
+    } = settings;
+    let dt = time.timestep().as_secs_f64();
+    stats.substeps = 0;
+    stats.fell_back = false;
+    for (mut linear, mut angular, mass, mut accumulator) in &mut bodies {
+        let model = params.force_model(*mass, accumulator.band);
+        let mut state = body_state(&linear, &angular);
+        let info = integrator.step_with(&mut state, &model, accumulator.forces, dt, &auto);
+        stats.substeps = stats.substeps.max(info.substeps);
+        stats.fell_back |= info.fell_back;
+        stats.fallbacks += u64::from(info.fell_back);
+        // A divergent explicit method (a stiff band) must not put NaN, infinity or an absurd
+        // value into a component: refuse the step, keep the last sane state, and say so.
+        if !state.is_sane() {
+            let step = steps.0 + 1;
+            if stats.divergence.is_none() {
+                warn!(
+                    "integrator {} diverged at step {step}: step refused",
+                    *integrator
+                );
+            }
+            stats.divergence = Some((*integrator, step));
+            *accumulator = ForceAccumulator::default();
+            continue;
+        }
+        books.ledger.dissipated += info.dissipated;
+        *linear = state.linear;
+        *angular = state.angular;
+        *accumulator = ForceAccumulator::default();
+    }
+}
+
+fn publish_snapshots(mut bodies: Query<(&LinearState, &AngularState, &mut RenderSnapshots)>) {
+    for (linear, angular, mut snapshots) in &mut bodies {
+        snapshots.previous = snapshots.current;
+        snapshots.current = body_state(linear, angular);
+    }
+}
+
+/// A tap's band has had its one step: remove it.
+fn end_taps(mut commands: Commands, taps: Query<Entity, (With<Band>, With<Tap>)>) {
+    for band in &taps {
+        commands.entity(band).despawn();
+    }
+}
+
+fn count_step(mut steps: ResMut<StepCount>) {
+    steps.0 += 1;
+}

@@ -1,0 +1,8 @@
+//! The measuring tools, native only: the report of speed against error, the side-by-side
+//! with the peers (feature `peers`), the references both measure against, and timing.
+
+#[cfg(feature = "peers")]
+pub mod peers;
+pub mod references;
+pub mod report;
+pub mod timing;

@@ -1,0 +1,227 @@
+//! The side-by-side measurement: every contender on the same scripted pulls, in one process,
+//! each tick a full headless `App` update on the single-threaded executor.
+
+use std::time::{Duration, Instant};
+
+use super::avian::Avian;
+use super::ours::Ours;
+use super::rapier::Rapier;
+use super::{Contender, PeerRun, headless_app, start};
+use crate::measure::references::{StiffCase, WorkScene, work_reference, work_scenes};
+use crate::measure::timing::median;
+use crate::physics::{BodyState, Scenario};
+
+/// The contenders' names, ours first (the ratios are to ours).
+pub const NAMES: [&str; 3] = [Ours::NAME, Avian::NAME, Rapier::NAME];
+
+/// The rates of the comparison: Bevy's default fixed rate and the tutorial's.
+pub const RATES: [f64; 2] = [64.0, 100.0];
+
+/// Timed repetitions: the median is reported.
+fn reps(quick: bool) -> usize {
+    if quick { 1 } else { 5 }
+}
+
+/// One contender on one scene at one rate.
+#[derive(Clone, Debug)]
+pub struct PeerPoint {
+    pub contender: &'static str,
+    pub scene: &'static str,
+    pub rate: f64,
+    pub steps: u64,
+    /// Final pose error against the report's reference (px); None if the state went
+    /// non-finite.
+    pub error: Option<f64>,
+    /// Largest |E − E0| / E0 over the run, on scenes where energy is an invariant.
+    pub energy_drift: Option<f64>,
+    /// Wall time of one `App` update (one fixed step), in ns: the median over repetitions of
+    /// the mean over the scored ticks but the first.
+    pub ns_per_tick: f64,
+}
+
+/// How a scripted run ended: its final state, the largest relative change of the energy, and
+/// its largest relative growth (both None when the run starts with no energy to compare with).
+struct Accuracy {
+    state: BodyState,
+    drift: Option<f64>,
+    growth: Option<f64>,
+}
+
+fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> Accuracy {
+    let mut run = PeerRun::<C>::of(scenario, rate);
+    let energy = |run: &mut PeerRun<C>| {
+        let state = run.state();
+        scenario
+            .params
+            .force_model(run.mass, run.band)
+            .energy(&state)
+    };
+    let e0 = energy(&mut run);
+    let mut drift: f64 = 0.0;
+    let mut growth = f64::NEG_INFINITY;
+    for _ in 0..steps {
+        run.advance();
+        let change = energy(&mut run) - e0;
+        drift = drift.max(change.abs());
+        growth = growth.max(change);
+    }
+    let relative = |v: f64| (e0 > 0.0).then_some(v / e0);
+    Accuracy {
+        state: run.state(),
+        drift: relative(drift),
+        growth: relative(growth),
+    }
+}
+
+/// Ticks timed at least per repetition: a short scene is run again from the start until
+/// this many of its ticks have been timed.
+const TIMED_TICKS: u64 = 100;
+
+/// The time per tick over `timed` ticks of fresh runs after each run's first tick, where
+/// every contender builds its own structures (how long: README, "Side by side with avian2d
+/// and bevy_rapier2d"): a game pays that once, not every tick. The `App`'s construction is untimed, and
+/// one untimed run warms caches and allocators first.
+fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, timed: u64, reps: usize) -> f64 {
+    let timed = timed.max(1);
+    PeerRun::<C>::of(scenario, rate).advance_by(timed + 1);
+    let runs = TIMED_TICKS.div_ceil(timed);
+    let times = (0..reps)
+        .map(|_| {
+            let mut total = Duration::ZERO;
+            for _ in 0..runs {
+                let mut run = PeerRun::<C>::of(scenario, rate);
+                run.advance();
+                let start = Instant::now();
+                run.advance_by(timed);
+                total += start.elapsed();
+                std::hint::black_box(run.state());
+            }
+            total.as_nanos() as f64 / (runs * timed) as f64
+        })
+        .collect();
+    median(times)
+}
+
+/// `scenario` with every pull one fixed step later: the box rests through the first tick (the
+/// contenders' set-up, untimed), so that the ticks timed are exactly those of the original run.
+fn one_tick_later(scenario: &Scenario, rate: f64) -> Scenario {
+    let mut later = scenario.clone();
+    for pull in &mut later.pulls {
+        pull.0 += 1.0 / rate;
+        pull.1 += 1.0 / rate;
+    }
+    later
+}
+
+fn point<C: Contender>(
+    scene: &WorkScene,
+    rate: f64,
+    reference: &BodyState,
+    reps: usize,
+) -> PeerPoint {
+    let scenario = &scene.scenario;
+    let steps = (scene.horizon * rate).round() as u64;
+    let Accuracy { state, drift, .. } = accuracy::<C>(scenario, rate, steps);
+    let mass = scenario.params.mass_properties().expect("valid");
+    PeerPoint {
+        contender: C::NAME,
+        scene: scenario.name,
+        rate,
+        steps,
+        error: state
+            .is_finite()
+            .then(|| state.pose_error(reference, &mass)),
+        energy_drift: drift.filter(|_| scene.energy_invariant),
+        ns_per_tick: ns_per_tick::<C>(scenario, rate, steps.saturating_sub(1), reps),
+    }
+}
+
+/// Every contender on every scene of the work-precision sweep, at 64 and 100 Hz.
+pub fn side_by_side(quick: bool) -> Vec<PeerPoint> {
+    let reps = reps(quick);
+    let mut points = Vec::new();
+    for scene in work_scenes() {
+        for rate in RATES {
+            let steps = (scene.horizon * rate).round() as u64;
+            let reference = work_reference(&scene, steps as f64 / rate);
+            points.push(point::<Ours>(&scene, rate, &reference, reps));
+            points.push(point::<Avian>(&scene, rate, &reference, reps));
+            points.push(point::<Rapier>(&scene, rate, &reference, reps));
+        }
+    }
+    points
+}
+
+/// One contender on one case of the stiffness sweep.
+#[derive(Clone, Debug)]
+pub struct PeerStiffPoint {
+    pub contender: &'static str,
+    pub k: f64,
+    pub rate: f64,
+    pub ns_per_tick: f64,
+    /// At the case's horizon, against its reference; None if non-finite or beyond any
+    /// horizon.
+    pub error: Option<f64>,
+    /// Beyond any horizon: the largest (E − E0) / E0 of the undamped run; None if non-finite.
+    pub energy_growth: Option<f64>,
+    /// Whether every state of the run stayed finite.
+    pub bounded: bool,
+}
+
+fn stiff_point<C: Contender>(case: &StiffCase, reps: usize) -> PeerStiffPoint {
+    let Accuracy { state, growth, .. } = accuracy::<C>(&case.scenario, case.rate, case.ticks);
+    let mass = case.scenario.params.mass_properties().expect("valid");
+    let bounded = state.is_finite() && growth.is_none_or(f64::is_finite);
+    PeerStiffPoint {
+        contender: C::NAME,
+        k: case.k,
+        rate: case.rate,
+        // Short horizons (one or two ticks at k = 1e7) leave no tick to time after the first:
+        // time the case's own ticks one tick later instead.
+        ns_per_tick: ns_per_tick::<C>(
+            &one_tick_later(&case.scenario, case.rate),
+            case.rate,
+            case.ticks,
+            reps,
+        ),
+        error: case
+            .reference
+            .filter(|_| bounded)
+            .map(|r| state.pose_error(&r.state, &mass)),
+        energy_growth: growth.filter(|_| case.reference.is_none() && bounded),
+        bounded,
+    }
+}
+
+/// The contenders across the stiffness sweep's cases.
+pub fn stiffness(cases: &[StiffCase], quick: bool) -> Vec<PeerStiffPoint> {
+    let reps = reps(quick);
+    cases
+        .iter()
+        .flat_map(|case| {
+            [
+                stiff_point::<Ours>(case, reps),
+                stiff_point::<Avian>(case, reps),
+                stiff_point::<Rapier>(case, reps),
+            ]
+        })
+        .collect()
+}
+
+/// The floor under every contender's tick: an `App` with the same plugins and clock as theirs
+/// but no physics at all, timed as they are.
+pub fn empty_app_ns_per_tick(rate: f64, quick: bool) -> f64 {
+    let times = (0..reps(quick))
+        .map(|_| {
+            let mut app = headless_app(rate);
+            start(&mut app);
+            app.update();
+            let begin = Instant::now();
+            for _ in 0..TIMED_TICKS {
+                app.update();
+            }
+            begin.elapsed().as_nanos() as f64 / TIMED_TICKS as f64
+        })
+        .collect();
+    median(times)
+}

@@ -1,0 +1,332 @@
+//! The stiffness sweep: every integrator on the stiff pulls from k = 20 to 1e12, judged at the
+//! horizon its references resolve; beside it the invariants of the undamped stiff band and the
+//! comparison of the engines `auto` could step with. `run` makes their tables
+//! (`stiffness.csv`, `engines.csv`); the plots draw the sweep (`stiffness.svg`) and the
+//! side-by-side (`super::peers`) runs the same cases.
+
+use crate::measure::references::{Engine, StiffCase, UNRESOLVABLE_SECONDS, run_engine};
+use crate::measure::timing::median_ns;
+use crate::physics::scenario::TUTORIAL_PULL_TARGET;
+use crate::physics::{Integrator, Run, Scenario, angular_momentum_about};
+
+use super::table::{Cell, Column, Table, diverged, or_empty};
+
+/// One integrator on one [`StiffCase`].
+#[derive(Clone, Debug)]
+pub struct StiffPoint {
+    pub k: f64,
+    pub rate: f64,
+    pub integrator: Integrator,
+    pub ns_per_tick: f64,
+    /// Pose error at the horizon against the RK4 reference; None if diverged or beyond any
+    /// horizon.
+    pub error: Option<f64>,
+    /// Beyond any horizon: the largest (E − E0) / E0 of the undamped run (positive: it grew).
+    pub energy_growth: Option<f64>,
+    pub diverged_at: Option<u64>,
+    pub mean_substeps: f64,
+    pub mean_evaluations: f64,
+    pub fallbacks: u64,
+}
+
+/// The k swept, 20 to 1e12.
+pub fn ks_swept(quick: bool) -> &'static [f64] {
+    if quick {
+        &[20.0, 1e5, 1e9]
+    } else {
+        &[20.0, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e12]
+    }
+}
+
+/// The rates of the stiffness sweep.
+pub const SWEEP_RATES: [f64; 2] = [100.0, 64.0];
+
+/// Every case of the stiffness sweep, references computed once.
+pub fn stiff_cases(quick: bool) -> Vec<StiffCase> {
+    SWEEP_RATES
+        .iter()
+        .flat_map(|&rate| {
+            ks_swept(quick)
+                .iter()
+                .map(move |&k| StiffCase::new(k, rate))
+        })
+        .collect()
+}
+
+/// Every integrator on every case, in the cases' order.
+pub(super) fn sweep(cases: &[StiffCase], quick: bool) -> Vec<StiffPoint> {
+    let mut points = Vec::new();
+    for case in cases {
+        let scenario = &case.scenario;
+        let mass = scenario.params.mass_properties().expect("valid");
+        let dt = 1.0 / case.rate;
+        for integrator in Integrator::ALL {
+            let fresh = || Run::of(scenario, integrator, dt).expect("valid");
+            let mut run = fresh();
+            let e0 = run.stepper.energy();
+            let (mut substeps, mut evaluations) = (0u64, 0u64);
+            let mut growth = f64::NEG_INFINITY;
+            let mut outcome = Ok(());
+            for _ in 0..case.ticks {
+                outcome = run.advance();
+                if outcome.is_err() {
+                    break;
+                }
+                substeps += u64::from(run.last_step.substeps);
+                evaluations += u64::from(run.last_step.evaluations);
+                growth = growth.max((run.stepper.energy() - e0) / e0);
+            }
+            let diverged_at = outcome.err().map(|d| d.step);
+            let ns = median_ns(if quick { 3 } else { 15 }, || {
+                let mut run = fresh();
+                let _ = std::hint::black_box(run.advance_by(case.ticks));
+            });
+            let steps = run.step.max(1) as f64;
+            points.push(StiffPoint {
+                k: case.k,
+                rate: case.rate,
+                integrator,
+                ns_per_tick: ns / case.ticks as f64,
+                error: case
+                    .reference
+                    .filter(|_| diverged_at.is_none())
+                    .map(|r| run.stepper.state.pose_error(&r.state, &mass)),
+                energy_growth: (case.reference.is_none() && diverged_at.is_none())
+                    .then_some(growth),
+                diverged_at,
+                mean_substeps: substeps as f64 / steps,
+                mean_evaluations: evaluations as f64 / steps,
+                fallbacks: run.fallbacks,
+            });
+        }
+    }
+    points
+}
+
+/// The horizon and the references' agreement of a case: the first two cells after k and the
+/// rate in the stiffness tables, ours and the side-by-side's.
+pub(super) fn horizon_cells(case: &StiffCase) -> [Cell; 2] {
+    let seconds = case.seconds();
+    let agreement = case.reference.map(|r| r.agreement);
+    match agreement {
+        Some(agreement) => [
+            Cell::same(seconds),
+            Cell::new(format!("{agreement:.0e}"), agreement.to_string()),
+        ],
+        None => [
+            Cell::new(format!("{seconds} undamped"), seconds.to_string()),
+            Cell::new("-", ""),
+        ],
+    }
+}
+
+/// k and the rate, the first cells of the stiffness tables.
+pub(super) fn case_cells(k: f64, rate: f64) -> [Cell; 2] {
+    [
+        Cell::new(format!("{k:e}"), k.to_string()),
+        Cell::new(format!("{rate} Hz"), rate.to_string()),
+    ]
+}
+
+/// A line per case, one column per integrator; the CSV a row per case and integrator.
+pub(super) fn table(cases: &[StiffCase], points: &[StiffPoint]) -> Table {
+    let mut table = Table::new(
+        format!(
+            "Stiffness sweep: stiff pulls from rest, each k judged at the horizon its \
+             references resolve (error in px against the RK4 reference / ns per step; auto: \
+             mean substeps and force evaluations per step, fall-backs). Beyond k = 1e7 no \
+             horizon resolves a state: undamped for {UNRESOLVABLE_SECONDS} s, bounded or not, \
+             and the largest energy growth (E - E0) / E0"
+        ),
+        Some("stiffness.csv"),
+        vec![
+            Column::new("k", "k"),
+            Column::new("rate", "rate_hz"),
+            Column::new("horizon (s)", "horizon_s"),
+            Column::new("refs agree (px)", "references_agree_px"),
+            Column::csv("integrator"),
+            Column::csv("ns_per_tick"),
+            Column::csv("error_px"),
+            Column::csv("energy_growth"),
+            Column::csv("diverged_at_step"),
+            Column::csv("mean_substeps"),
+            Column::csv("mean_evaluations"),
+            Column::csv("fallbacks"),
+            Column::markdown("{}").each(),
+        ],
+    )
+    .across(4);
+    for (case, chunk) in cases
+        .iter()
+        .zip(points.chunk_by(|a, b| a.k == b.k && a.rate == b.rate))
+    {
+        for p in chunk {
+            let auto = if p.integrator == Integrator::Auto {
+                format!(
+                    " ({:.0}, {:.0}, {})",
+                    p.mean_substeps, p.mean_evaluations, p.fallbacks
+                )
+            } else {
+                String::new()
+            };
+            let outcome = match (p.error, p.energy_growth, p.diverged_at) {
+                (Some(e), _, _) => format!("{e:.1e} / {:.0}{auto}", p.ns_per_tick),
+                (None, Some(g), _) => format!("dE {g:+.0e} / {:.0}{auto}", p.ns_per_tick),
+                (_, _, Some(s)) => diverged(s),
+                _ => "?".to_owned(),
+            };
+            let mut cells = Vec::from(case_cells(p.k, p.rate));
+            cells.extend(horizon_cells(case));
+            cells.extend([
+                Cell::same(p.integrator),
+                Cell::csv(p.ns_per_tick),
+                Cell::csv_option(p.error),
+                Cell::csv_option(p.energy_growth),
+                Cell::csv_option(p.diverged_at),
+                Cell::csv(p.mean_substeps),
+                Cell::csv(p.mean_evaluations),
+                Cell::csv(p.fallbacks),
+                Cell::markdown(outcome),
+            ]);
+            table.row(cells);
+        }
+    }
+    table
+}
+
+/// The engine comparison: each candidate at several settings on the stiff pulls at 100 Hz,
+/// error at the horizon against the reference, cost per fixed step of the core alone.
+pub struct EnginePoint {
+    pub k: f64,
+    pub engine: Engine,
+    pub error: Option<f64>,
+    pub ns_per_tick: f64,
+    pub evaluations_per_tick: f64,
+}
+
+fn engines_compared(cases: &[StiffCase], quick: bool) -> Vec<EnginePoint> {
+    let engines: Vec<Engine> = if quick {
+        vec![
+            Engine::Rk4(100),
+            Engine::Dop853(1e-9),
+            Engine::Taylor(20, 1e-9),
+        ]
+    } else {
+        let mut all: Vec<Engine> = [25, 100, 400, 1600].map(Engine::Rk4).to_vec();
+        all.extend([1e-8, 1e-9, 1e-10, 1e-11].map(Engine::Dop853));
+        for order in [12, 16, 20, 24] {
+            all.extend([1e-8, 1e-9, 3e-10, 1e-10].map(|t| Engine::Taylor(order, t)));
+        }
+        all
+    };
+    let mut points = Vec::new();
+    for case in cases.iter().filter(|c| c.rate == 100.0 && c.k >= 1e3) {
+        let Some(reference) = case.reference else {
+            continue;
+        };
+        let mass = case.scenario.params.mass_properties().expect("valid");
+        for &engine in &engines {
+            let outcome = run_engine(&case.scenario, case.rate, case.ticks, engine);
+            let ns = median_ns(if quick { 1 } else { 5 }, || {
+                std::hint::black_box(run_engine(&case.scenario, case.rate, case.ticks, engine));
+            });
+            points.push(EnginePoint {
+                k: case.k,
+                engine,
+                error: outcome.map(|(state, _)| state.pose_error(&reference.state, &mass)),
+                ns_per_tick: ns / case.ticks as f64,
+                evaluations_per_tick: outcome.map_or(0.0, |o| o.1),
+            });
+        }
+    }
+    points
+}
+
+/// A line per case and engine.
+pub(super) fn engines_table(cases: &[StiffCase], quick: bool) -> Table {
+    let mut table = Table::new(
+        "Engines for auto: candidates on the stiff pulls at 100 Hz, restarted every fixed \
+         step (error in px at the horizon against the reference; ns per fixed step of the core \
+         alone; force evaluations per fixed step, for Taylor series coefficient orders)",
+        Some("engines.csv"),
+        vec![
+            Column::new("k", "k"),
+            Column::new("engine", "engine"),
+            Column::new("error", "error_px"),
+            Column::new("ns per step", "ns_per_tick"),
+            Column::new("evaluations", "evaluations_per_tick"),
+        ],
+    );
+    for p in engines_compared(cases, quick) {
+        table.row(vec![
+            Cell::new(format!("{:e}", p.k), p.k.to_string()),
+            Cell::same(p.engine.name()),
+            Cell::new(
+                p.error.map_or("gave up".to_owned(), |e| format!("{e:.1e}")),
+                or_empty(p.error),
+            ),
+            Cell::new(format!("{:.0}", p.ns_per_tick), p.ns_per_tick.to_string()),
+            Cell::new(
+                format!("{:.0}", p.evaluations_per_tick),
+                p.evaluations_per_tick.to_string(),
+            ),
+        ]);
+    }
+    table
+}
+
+/// Largest energy error and angular momentum change, or the step where the run diverged.
+type InvariantDrift = Result<(f64, f64), u64>;
+
+/// The undamped stiff band (k = 1e5, 100 Hz, 10 s): the largest energy error relative to the
+/// energy the band put in, and the largest change of the angular momentum about the anchor.
+fn stiff_invariants(quick: bool) -> Vec<(Integrator, InvariantDrift)> {
+    let mut scenario = Scenario::named("undamped").expect("built-in");
+    scenario.params.stiffness = 1e5;
+    let steps = if quick { 100 } else { 1000 };
+    Integrator::ALL
+        .iter()
+        .map(|&integrator| {
+            let mut run = Run::of(&scenario, integrator, 0.01).expect("valid");
+            let mass = run.stepper.mass;
+            let e0 = run.stepper.energy();
+            let l0 = angular_momentum_about(&run.stepper.state, &mass, TUTORIAL_PULL_TARGET);
+            let (mut energy, mut momentum) = (0.0_f64, 0.0_f64);
+            for _ in 0..steps {
+                if let Err(d) = run.advance() {
+                    return (integrator, Err(d.step));
+                }
+                energy = energy.max((run.stepper.energy() - e0).abs() / e0);
+                let l = angular_momentum_about(&run.stepper.state, &mass, TUTORIAL_PULL_TARGET);
+                momentum = momentum.max((l - l0).abs());
+            }
+            (integrator, Ok((energy, momentum)))
+        })
+        .collect()
+}
+
+/// A line per integrator, in the Markdown only.
+pub(super) fn invariants_table(quick: bool) -> Table {
+    let mut table = Table::new(
+        "Undamped stiff band (k = 1e5, 100 Hz, 10 s): largest energy error relative to the \
+         energy put in, and largest change of angular momentum about the anchor",
+        None,
+        vec![
+            Column::markdown("integrator"),
+            Column::markdown("energy"),
+            Column::markdown("angular momentum"),
+        ],
+    );
+    for (integrator, outcome) in stiff_invariants(quick) {
+        let [energy, momentum] = match outcome {
+            Ok((energy, momentum)) => [format!("{energy:.1e}"), format!("{momentum:.1e}")],
+            Err(step) => [diverged(step), String::new()],
+        };
+        table.row(vec![
+            Cell::same(integrator),
+            Cell::markdown(energy),
+            Cell::markdown(momentum),
+        ]);
+    }
+    table
+}
