@@ -1,0 +1,326 @@
+//! The replay file's contents: the header, the records after it, the hash of a trajectory,
+//! and a whole replay as the recorder keeps and writes it (JSON Lines, one value a line).
+
+use std::fmt;
+use std::io::{self, Write};
+
+use bevy::math::DVec2;
+use serde::{Deserialize, Serialize};
+
+use crate::physics::{
+    AutoSettings, BandEnds, BodyState, Integrator, ParamError, SceneParams, Stepper,
+};
+
+/// The header's `format` field: what the file is.
+pub const FORMAT: &str = "rubber-band-box replay";
+/// The format version this build writes and reads.
+pub const VERSION: u32 = 1;
+/// The most steps a replay holds: 3 million is 8 hours at 100 Hz, 12 minutes at 4096 Hz,
+/// under 150 MB in memory (a record is 48 bytes). A recording stops there.
+pub const MAX_STEPS: u64 = 3_000_000;
+/// The longest line a reader accepts (a header is about 400 bytes, a step at most about 120).
+pub const MAX_LINE_BYTES: usize = 4096;
+/// The range of `auto`'s series order a replay may ask for (as `simulate --auto-order`).
+pub const AUTO_ORDERS: (usize, usize) = (2, 24);
+
+/// The first line: what the recording started with.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Header {
+    pub format: String,
+    pub version: u32,
+    /// The version of the crate that recorded it (for a reader's information only).
+    pub crate_version: String,
+    /// The scene played.
+    pub scene: String,
+    pub settings: Settings,
+    pub auto: AutoRecord,
+    /// The box at the scene's start, and after each reset: x, y, θ, vx, vy, ω.
+    pub initial: [f64; 6],
+}
+
+/// Everything a step is taken with, as the physics saw it.
+#[derive(Serialize, Deserialize, Clone, Copy, Debug, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Settings {
+    pub mass: f64,
+    pub width: f64,
+    pub height: f64,
+    pub stiffness: f64,
+    pub linear_damping: f64,
+    pub angular_damping: f64,
+    /// The step rate the player chose.
+    pub step_rate_hz: f64,
+    /// The step the fixed clock took for it, in seconds (the clock counts whole nanoseconds,
+    /// so 60 Hz steps 0.016666667 s).
+    pub dt: f64,
+    #[serde(with = "integrator_name")]
+    pub integrator: Integrator,
+}
+
+impl Settings {
+    pub fn new(params: &SceneParams, dt: f64, integrator: Integrator) -> Self {
+        Self {
+            mass: params.mass,
+            width: params.size.x,
+            height: params.size.y,
+            stiffness: params.stiffness,
+            linear_damping: params.linear_damping,
+            angular_damping: params.angular_damping,
+            step_rate_hz: params.step_rate_hz,
+            dt,
+            integrator,
+        }
+    }
+
+    pub fn params(&self) -> SceneParams {
+        SceneParams {
+            mass: self.mass,
+            size: DVec2::new(self.width, self.height),
+            stiffness: self.stiffness,
+            linear_damping: self.linear_damping,
+            angular_damping: self.angular_damping,
+            step_rate_hz: self.step_rate_hz,
+        }
+    }
+
+    /// Every field in its domain (as `SceneParams::validate`), and a step with a finite rate.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        self.params().validate()?;
+        ParamError::check_positive("dt", self.dt)?;
+        ParamError::check_positive("1/dt", 1.0 / self.dt)
+    }
+}
+
+/// `auto`'s settings (the game never changes them, a replay may ask for others).
+#[derive(Serialize, Deserialize, Clone, Copy, Debug, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct AutoRecord {
+    pub tolerance: f64,
+    pub order: usize,
+    pub max_substeps: u32,
+}
+
+impl From<AutoSettings> for AutoRecord {
+    fn from(auto: AutoSettings) -> Self {
+        Self {
+            tolerance: auto.tolerance,
+            order: auto.order,
+            max_substeps: auto.max_substeps,
+        }
+    }
+}
+
+impl From<AutoRecord> for AutoSettings {
+    fn from(auto: AutoRecord) -> Self {
+        Self {
+            tolerance: auto.tolerance,
+            order: auto.order,
+            max_substeps: auto.max_substeps,
+        }
+    }
+}
+
+/// One line after the header.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum Record {
+    /// Before step `step`: the scene back at its start, no band (the reset control).
+    Reset { step: u64 },
+    /// From step `step` on, these settings (a control changed one of them). Boxed: rare, and
+    /// larger than a step, which would otherwise pay for it in memory.
+    Settings { step: u64, settings: Box<Settings> },
+    /// Step `step` (counted from 1) ran with this band, or none.
+    Step {
+        step: u64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        band: Option<BandRecord>,
+    },
+    /// The last line: how many steps the file holds and the hash of the states the game had
+    /// after each ([`TrajectoryHash`], 16 hex digits).
+    End { steps: u64, hash: String },
+}
+
+/// The band during a step: the body point (body coordinates) pulled toward the anchor (world).
+#[derive(Serialize, Deserialize, Clone, Copy, Debug, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct BandRecord {
+    pub point: [f64; 2],
+    pub anchor: [f64; 2],
+}
+
+impl From<BandEnds> for BandRecord {
+    fn from(band: BandEnds) -> Self {
+        Self {
+            point: band.local_point.to_array(),
+            anchor: band.anchor.to_array(),
+        }
+    }
+}
+
+impl From<BandRecord> for BandEnds {
+    fn from(band: BandRecord) -> Self {
+        Self {
+            local_point: DVec2::from_array(band.point),
+            anchor: DVec2::from_array(band.anchor),
+        }
+    }
+}
+
+/// FNV-1a over the bits of every step's state, in order: equal hashes mean, but for a
+/// collision, equal trajectories to the last bit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TrajectoryHash(pub u64);
+
+impl Default for TrajectoryHash {
+    fn default() -> Self {
+        Self(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl TrajectoryHash {
+    pub fn add(&mut self, state: &BodyState) {
+        for value in state.to_array() {
+            for byte in value.to_bits().to_le_bytes() {
+                self.0 = (self.0 ^ u64::from(byte)).wrapping_mul(0x0000_0100_0000_01b3);
+            }
+        }
+    }
+}
+
+impl fmt::Display for TrajectoryHash {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{:016x}", self.0)
+    }
+}
+
+/// A whole recording: the header, the records (no end record), the steps and their hash.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Replay {
+    pub header: Header,
+    pub records: Vec<Record>,
+    pub steps: u64,
+    /// The hash of the states after each step, as the recorder saw them.
+    pub hash: TrajectoryHash,
+    /// The settings after every record so far: kept, not searched for, because the recorder
+    /// asks at every step.
+    pub(super) in_force: Settings,
+}
+
+impl Replay {
+    /// An empty recording of a game starting with these settings.
+    pub fn start(scene: &str, settings: Settings, auto: AutoSettings, initial: BodyState) -> Self {
+        Self::with_header(Header {
+            format: FORMAT.to_owned(),
+            version: VERSION,
+            crate_version: env!("CARGO_PKG_VERSION").to_owned(),
+            scene: scene.to_owned(),
+            settings,
+            auto: auto.into(),
+            initial: initial.to_array(),
+        })
+    }
+
+    /// No records yet.
+    pub(super) fn with_header(header: Header) -> Self {
+        Self {
+            in_force: header.settings,
+            header,
+            records: Vec::new(),
+            steps: 0,
+            hash: TrajectoryHash::default(),
+        }
+    }
+
+    /// Whether another step fits ([`MAX_STEPS`]).
+    pub fn is_full(&self) -> bool {
+        self.steps >= MAX_STEPS
+    }
+
+    /// The settings in force after every record so far.
+    pub fn current_settings(&self) -> Settings {
+        self.in_force
+    }
+
+    /// Before the next step: the scene was reset.
+    pub fn push_reset(&mut self) {
+        self.records.push(Record::Reset {
+            step: self.steps + 1,
+        });
+    }
+
+    /// Before the next step: these settings, if they differ from those in force.
+    pub fn push_settings(&mut self, settings: Settings) {
+        if settings != self.in_force {
+            self.in_force = settings;
+            self.records.push(Record::Settings {
+                step: self.steps + 1,
+                settings: Box::new(settings),
+            });
+        }
+    }
+
+    /// The next step ran with `band` and left the body in `after`.
+    pub fn push_step(&mut self, band: Option<BandEnds>, after: &BodyState) {
+        self.steps += 1;
+        self.records.push(Record::Step {
+            step: self.steps,
+            band: band.map(BandRecord::from),
+        });
+        self.hash.add(after);
+    }
+
+    /// Writes the file: the header, the records, the end record.
+    pub fn write(&self, out: impl Write) -> io::Result<()> {
+        let mut out = io::BufWriter::new(out);
+        writeln!(out, "{}", json_line(&self.header))?;
+        for record in &self.records {
+            writeln!(out, "{}", json_line(record))?;
+        }
+        let end = Record::End {
+            steps: self.steps,
+            hash: self.hash.to_string(),
+        };
+        writeln!(out, "{}", json_line(&end))?;
+        out.flush()
+    }
+
+    /// The file as bytes.
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut bytes = Vec::new();
+        // Writing to memory cannot fail.
+        let _ = self.write(&mut bytes);
+        bytes
+    }
+
+    /// A stepper at the start of the replay: its settings, its initial state, no band.
+    pub fn stepper(&self) -> Result<Stepper, ParamError> {
+        let settings = self.header.settings;
+        let mut stepper = Stepper::new(settings.params())?;
+        stepper.state = BodyState::from_array(self.header.initial);
+        stepper.integrator = settings.integrator;
+        stepper.auto = self.header.auto.into();
+        Ok(stepper)
+    }
+}
+
+/// One record as a line of JSON: serialising these plain structs cannot fail.
+pub(super) fn json_line(value: &impl Serialize) -> String {
+    serde_json::to_string(value).unwrap_or_default()
+}
+
+/// The integrator by its name, as the command line spells it.
+mod integrator_name {
+    use serde::{Deserialize, Deserializer, Serializer, de};
+
+    use crate::physics::Integrator;
+
+    pub fn serialize<S: Serializer>(integrator: &Integrator, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(integrator.name())
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Integrator, D::Error> {
+        let name = String::deserialize(d)?;
+        name.parse().map_err(de::Error::custom)
+    }
+}
