@@ -14,6 +14,7 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 
 use rubber_band_box::game::ghosts::GhostsPlugin;
 use rubber_band_box::game::shared::Overlays;
+use rubber_band_box::game::shared::SharedPlugin;
 use rubber_band_box::game::simulation::{
     Band, PhysicsSystems, RigidBox, SimulationPlugin, rigid_box, run_single_threaded,
 };
@@ -149,7 +150,7 @@ fn ghost_app(scene: &str, stiffness: Option<f64>, ghosts_on: bool) -> App {
             ghosts: ghosts_on,
             ..default()
         })
-        .add_plugins((SimulationPlugin, GhostsPlugin))
+        .add_plugins((SharedPlugin, SimulationPlugin, GhostsPlugin))
         .add_systems(
             FixedUpdate,
             circle_the_anchor.before(PhysicsSystems::Accumulate),

@@ -101,7 +101,7 @@ fn play(args: PlayArgs) -> ExitCode {
                 return ExitCode::from(2);
             }
         };
-        app.insert_resource(rubber_band_box::game::replays::recording::SceneName(
+        app.insert_resource(rubber_band_box::game::shared::SceneName(
             replay.header.scene.clone(),
         ));
         let playback = rubber_band_box::game::replays::playback::Playback::of(replay);

@@ -9,7 +9,7 @@ use rubber_band_box::game::input::controls::{
     CYCLE_INTEGRATOR, GHOSTS, RESET, SCENE_KEYS, STIFFER,
 };
 use rubber_band_box::game::replays::playback::{Playback, PlaybackEnd};
-use rubber_band_box::game::replays::recording::SceneName;
+use rubber_band_box::game::shared::SceneName;
 use rubber_band_box::physics::{BodyState, Integrator, Scenario};
 
 fn lab() -> Game {

@@ -14,7 +14,7 @@ use bevy::ui_widgets::{SetSliderValue, SliderValueChange};
 use common::*;
 use rubber_band_box::game::input::controls::{Action, CONTROLS, Parameter};
 use rubber_band_box::game::input::panel::{PanelButton, PanelOpen, PanelSlider};
-use rubber_band_box::game::replays::recording::SceneName;
+use rubber_band_box::game::shared::SceneName;
 use rubber_band_box::game::shared::{ControlsArea, Overlays, StatusMessage};
 use rubber_band_box::physics::Integrator;
 

@@ -24,7 +24,6 @@ pub struct GhostsPlugin;
 impl Plugin for GhostsPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Ghosts>()
-            .init_resource::<Overlays>()
             .add_observer(restart_on_reset)
             .add_systems(
                 FixedUpdate,

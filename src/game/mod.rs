@@ -36,6 +36,7 @@ impl Plugin for GameLogicPlugin {
     fn build(&self, app: &mut App) {
         schedule::order_the_frame(app);
         app.add_plugins((
+            shared::SharedPlugin,
             simulation::SimulationPlugin,
             input::pointer::PointerPlugin,
             input::controls::ControlsPlugin,

@@ -1,7 +1,33 @@
-//! What the screen shows besides the box and the band: written by the controls, read by the
-//! HUD and the drawing. A leaf, so that neither of those imports the other.
+//! The resources several plugins of the game read, each initialised once, here
+//! ([`SharedPlugin`], added first by the game): the scene's name, the status line, what shows,
+//! and where the panel lies. A leaf: it imports no plugin, so none of its readers imports
+//! another for them.
 
 use bevy::prelude::*;
+
+/// Initialises the shared resources (a replay given to `play` may have put `SceneName` in
+/// place already: it is kept).
+pub struct SharedPlugin;
+
+impl Plugin for SharedPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<SceneName>()
+            .init_resource::<StatusMessage>()
+            .init_resource::<Overlays>()
+            .init_resource::<ControlsArea>();
+    }
+}
+
+/// The scene the game plays (a recording's header names it): the tutorial's, a named scene
+/// loaded, or the one a replay opened was recorded in.
+#[derive(Resource, Debug, Clone, PartialEq, Eq)]
+pub struct SceneName(pub String);
+
+impl Default for SceneName {
+    fn default() -> Self {
+        Self("tutorial".to_owned())
+    }
+}
 
 /// Which overlays show.
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]

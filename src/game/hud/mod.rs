@@ -17,9 +17,10 @@ use bevy::prelude::*;
 use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::input::controls::help_line;
 use crate::game::replays::playback::Playback;
-use crate::game::replays::recording::{Recorder, SceneName};
+use crate::game::replays::recording::Recorder;
 use crate::game::schedule::ScreenSystems;
 use crate::game::shared::Overlays;
+use crate::game::shared::SceneName;
 use crate::game::shared::StatusMessage;
 use crate::game::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
 use crate::physics::{

@@ -19,15 +19,12 @@ pub struct ControlsPlugin;
 
 impl Plugin for ControlsPlugin {
     fn build(&self, app: &mut App) {
-        app.init_resource::<Overlays>()
-            .init_resource::<StatusMessage>()
-            .add_message::<Action>()
-            .add_systems(
-                RunFixedMainLoop,
-                (keys_to_actions, apply_actions)
-                    .chain()
-                    .in_set(GameSystems::Controls),
-            );
+        app.add_message::<Action>().add_systems(
+            RunFixedMainLoop,
+            (keys_to_actions, apply_actions)
+                .chain()
+                .in_set(GameSystems::Controls),
+        );
     }
 }
 

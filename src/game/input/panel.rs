@@ -13,8 +13,8 @@ use bevy::ui_widgets::{
 };
 
 use crate::game::input::controls::{Action, Parameter};
-use crate::game::replays::recording::SceneName;
 use crate::game::schedule::{GameSystems, ScreenSystems};
+use crate::game::shared::SceneName;
 use crate::game::shared::{ControlsArea, Overlays};
 use crate::physics::{Integrator, Scenario, SceneParams};
 
@@ -32,7 +32,6 @@ impl Plugin for PanelPlugin {
         // The slider reads it (the UI plugin has it; the headless game does not).
         app.init_resource::<UiScale>()
             .init_resource::<PanelOpen>()
-            .init_resource::<ControlsArea>()
             .add_observer(press_button)
             .add_observer(move_slider)
             .add_systems(Startup, spawn_panel)

@@ -30,7 +30,6 @@ pub struct PointerPlugin;
 impl Plugin for PointerPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Grip>()
-            .init_resource::<ControlsArea>()
             .add_message::<PointerAction>()
             .add_observer(let_go_on_reset)
             .add_systems(

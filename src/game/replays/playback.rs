@@ -14,8 +14,9 @@ use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
 use crate::game::input::pointer::{PointerAction, read_pointer};
-use crate::game::replays::recording::{Recorder, SceneName};
+use crate::game::replays::recording::Recorder;
 use crate::game::schedule::GameSystems;
+use crate::game::shared::SceneName;
 use crate::game::shared::StatusMessage;
 use crate::game::simulation::{Band, PhysicsSystems, ResetScene, RigidBox, rigid_box};
 use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams};

@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 
 use bevy::prelude::*;
 
-use crate::game::shared::StatusMessage;
+use crate::game::shared::{SceneName, StatusMessage};
 use crate::game::simulation::{ForceAccumulator, PhysicsSystems, ResetScene, RigidBox, body_state};
 use crate::physics::{AngularState, AutoSettings, BandEnds, Integrator, LinearState, SceneParams};
 use crate::replay::{Replay, Settings};
@@ -23,8 +23,6 @@ pub struct RecordingPlugin;
 impl Plugin for RecordingPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Recorder>()
-            .init_resource::<StatusMessage>()
-            .init_resource::<SceneName>()
             .add_observer(note_reset)
             .add_observer(save_on_request)
             .add_systems(
@@ -39,17 +37,6 @@ impl Plugin for RecordingPlugin {
         // After the window plugin's exit systems: closing the last window asks to exit there.
         #[cfg(not(target_arch = "wasm32"))]
         app.add_systems(Last, save_on_exit.after(bevy::window::ExitSystems));
-    }
-}
-
-/// The scene the game plays (a recording's header names it): the tutorial's, a named scene
-/// loaded, or the one a replay opened was recorded in.
-#[derive(Resource, Debug, Clone, PartialEq, Eq)]
-pub struct SceneName(pub String);
-
-impl Default for SceneName {
-    fn default() -> Self {
-        Self("tutorial".to_owned())
     }
 }
 
