@@ -13,10 +13,11 @@ use bevy::time::TimeUpdateStrategy;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 use rubber_band_box::game::ghosts::GhostsPlugin;
+use rubber_band_box::game::schedule::PhysicsSystems;
 use rubber_band_box::game::shared::Overlays;
 use rubber_band_box::game::shared::SharedPlugin;
 use rubber_band_box::game::simulation::{
-    Band, PhysicsSystems, RigidBox, SimulationPlugin, rigid_box, run_single_threaded,
+    Band, RigidBox, SimulationPlugin, rigid_box, run_single_threaded,
 };
 use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
 use rubber_band_box::physics::{BandEnds, BodyState, Integrator, Scenario, SceneParams, Stepper};

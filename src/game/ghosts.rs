@@ -12,8 +12,9 @@
 use bevy::platform::time::Instant;
 use bevy::prelude::*;
 
+use crate::game::schedule::PhysicsSystems;
 use crate::game::shared::Overlays;
-use crate::game::simulation::{ForceAccumulator, PhysicsSystems, ResetScene, RigidBox, body_state};
+use crate::game::simulation::{ForceAccumulator, ResetScene, RigidBox, body_state};
 use crate::physics::{
     AutoSettings, BandEnds, BodyState, EnergyLedger, Integrator, MassProperties, SceneParams,
     StepInfo, Stepper,
@@ -28,9 +29,7 @@ impl Plugin for GhostsPlugin {
             .add_systems(
                 FixedUpdate,
                 // The step's band is in the accumulator between these two.
-                step_ghosts
-                    .after(PhysicsSystems::Accumulate)
-                    .before(PhysicsSystems::Integrate),
+                step_ghosts.in_set(PhysicsSystems::Observe),
             );
     }
 }

@@ -1,51 +1,149 @@
-//! The order of the game's frame, written once: the sets the game's plugins put their
-//! pre-physics systems in. [`crate::game::GameLogicPlugin`] chains them; a plugin only says which
-//! set a system belongs to.
+//! The order of the game's frame, in code, in one place: every system set of the game is
+//! declared here and ordered here. A plugin only says which set each of its systems belongs
+//! to; none orders itself against another module's system.
 //!
 //! A frame, in order:
-//! 1. `RunFixedMainLoop`, before the fixed loop: [`GameSystems::Input`] (mouse, touch and
-//!    focus to the band entity; a replay file opened), then [`GameSystems::Controls`] (keys: pause, step, reset,
-//!    integrator, parameters, overlays), then [`GameSystems::ApplySettings`] (the fixed
-//!    clock's step from the scene's step rate), so that all of it acts on the very next step;
-//! 2. `FixedUpdate`, zero or more times: the physics' own chain, accumulate, integrate,
-//!    publish (`simulation::PhysicsSystems`), then the HUD's energy history;
-//! 3. `RunFixedMainLoop`, after the fixed loop: the drawn state interpolated between the last
-//!    two steps (`view`), and the end of a playback said (`playback`);
-//! 4. `Update`: the HUD's text and the window title, then the panel ([`ScreenSystems`]),
-//!    and the drawing.
+//! 1. `RunFixedMainLoop`, before the fixed loop, [`GameSystems`] in this order, so that all
+//!    of it acts on the very next step: the pointer read, the input acted on, the controls
+//!    applied, the settings' consequences derived;
+//! 2. `FixedUpdate`, zero or more times, [`PhysicsSystems`]: a playback's recorded inputs,
+//!    accumulate, the observers of the step's inputs (the recorder, the ghosts), integrate,
+//!    publish, then the readers of the step's results (the recorder, the HUD's history);
+//! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
+//!    interpolated between the last two steps, the end of a playback said;
+//! 4. `Update`, [`ScreenSystems`]: the UI's scale from the window, the HUD's text and the
+//!    window title, the panel, then the drawing;
+//! 5. `PostUpdate` and `Last`, [`AfterBevySystems`]: after Bevy's UI layout the panel says
+//!    where it lies; after Bevy's window exit systems the recorder saves a game that ends.
+//!
+//! [`order_the_frame`] chains these for the game; [`order_the_physics`] the fixed step's
+//! chain alone, which the physics plugin calls itself because it also runs without the game
+//! (the benchmarks, the side-by-side with the peers).
 
 use bevy::prelude::*;
 
-/// The game's work before the fixed loop, in this order each frame.
+/// Before the fixed loop, in this order each frame.
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum GameSystems {
-    /// The pointer: mouse, touch and focus input to the band entity; replay files opened.
+    /// Mouse, touch and focus read into pointer actions (in world coordinates).
+    ReadPointer,
+    /// What acts on this frame's input: the band driven, a playback taken over by a press,
+    /// the panel's taps, replay files opened.
     Input,
-    /// The keys: each writes the resource it controls, or triggers a reset.
+    /// The controls: each action writes the resource it controls, or triggers a reset.
     Controls,
     /// What derives from the settings the controls wrote (the fixed clock's step).
     ApplySettings,
 }
 
-/// The text on screen, each frame in this order (both write `Text`).
+/// The fixed step, in this order.
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum ScreenSystems {
-    Hud,
-    Panel,
+pub enum PhysicsSystems {
+    /// A playback puts the step's recorded resets, settings and band in place.
+    Playback,
+    /// Book the hand's work since the last step in the energy ledger, then sum every force
+    /// and torque on each body into its `ForceAccumulator`.
+    Accumulate,
+    /// Read the step's inputs as the integrator will see them (the recorder, the ghosts);
+    /// write nothing the physics reads.
+    Observe,
+    /// Advance each body by one fixed step with the `Integrator` resource, from its
+    /// accumulated forces, then clear the accumulator.
+    Integrate,
+    /// Hand the new state to the rest of the app: the render snapshots, the energy books
+    /// settled (energies by kind, the ledger's residual), taps' bands removed after their one
+    /// step, the step counted.
+    Publish,
+    /// Read the step's results (the recorder's state after the step, the HUD's energy
+    /// history); write nothing the physics reads.
+    AfterStep,
 }
 
-/// Chains [`GameSystems`] inside `BeforeFixedMainLoop`: a press and a key in one frame always
-/// act in the same order (the press first, so a reset in that frame also lets go).
+/// After the fixed loop, each frame.
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum AfterStepsSystems {
+    /// What this frame's steps did, made ready for the screen: the drawn state interpolated
+    /// between the last two steps, the end of a playback said before the HUD shows it.
+    Conclude,
+}
+
+/// The screen's work in `Update`, in this order (the HUD and the panel both write `Text`).
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ScreenSystems {
+    /// The UI's scale from the window's size (the HUD and the panel shrink on a phone).
+    Scale,
+    /// The HUD's text and the window title.
+    Hud,
+    /// The panel's values and thumbs, read back from the resources.
+    Panel,
+    /// The box, the band, the overlays and the energy graph drawn.
+    Draw,
+}
+
+/// Work that waits for Bevy's own systems.
+#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum AfterBevySystems {
+    /// In `PostUpdate`, after the UI's layout: where the panel's controls lie.
+    AfterLayout,
+    /// In `Last`, after the window's exit systems asked to exit: a game that ends saved.
+    AfterExit,
+}
+
+/// The fixed step's chain, and the settings applied before the loop: what the physics plugin
+/// needs to run alone.
+pub fn order_the_physics(app: &mut App) {
+    app.configure_sets(
+        FixedUpdate,
+        (
+            PhysicsSystems::Playback,
+            PhysicsSystems::Accumulate,
+            PhysicsSystems::Observe,
+            PhysicsSystems::Integrate,
+            PhysicsSystems::Publish,
+            PhysicsSystems::AfterStep,
+        )
+            .chain(),
+    )
+    .configure_sets(
+        RunFixedMainLoop,
+        GameSystems::ApplySettings.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+    );
+}
+
+/// The whole frame: a press and a key in one frame always act in the same order (the press
+/// first, so a reset in that frame also lets go).
 pub fn order_the_frame(app: &mut App) {
+    order_the_physics(app);
     app.configure_sets(
         RunFixedMainLoop,
         (
-            GameSystems::Input,
-            GameSystems::Controls,
-            GameSystems::ApplySettings,
-        )
-            .chain()
-            .in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+            (
+                GameSystems::ReadPointer,
+                GameSystems::Input,
+                GameSystems::Controls,
+                GameSystems::ApplySettings,
+            )
+                .chain()
+                .in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
+            AfterStepsSystems::Conclude.in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
+        ),
     )
-    .configure_sets(Update, (ScreenSystems::Hud, ScreenSystems::Panel).chain());
+    .configure_sets(
+        Update,
+        (
+            ScreenSystems::Scale,
+            ScreenSystems::Hud,
+            ScreenSystems::Panel,
+            ScreenSystems::Draw,
+        )
+            .chain(),
+    )
+    .configure_sets(
+        PostUpdate,
+        AfterBevySystems::AfterLayout.after(bevy::ui::UiSystems::Layout),
+    )
+    .configure_sets(
+        Last,
+        AfterBevySystems::AfterExit.after(bevy::window::ExitSystems),
+    );
 }

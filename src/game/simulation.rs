@@ -1,5 +1,5 @@
 //! The physics plugin: the box's state as components, the band as an entity, and the fixed
-//! step as three chained system sets: accumulate forces and torques (and book the hand's
+//! step in three of the frame's sets (`schedule::PhysicsSystems`): accumulate forces and torques (and book the hand's
 //! work), integrate (and book what damping took out), publish (render snapshots, the energy
 //! books' settlement, taps ended, the step counted). It owns the body, the energy books and
 //! the step statistics, and puts them back on [`ResetScene`].
@@ -15,7 +15,7 @@ use bevy::ecs::system::SystemParam;
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
-use crate::game::schedule::GameSystems;
+use crate::game::schedule::{self, GameSystems, PhysicsSystems};
 use crate::physics::{
     AngularState, AutoSettings, BandEnds, BodyState, Energies, EnergyLedger, Forces, Integrator,
     LinearState, MassProperties, SceneParams, damping_wrench,
@@ -25,30 +25,18 @@ pub struct SimulationPlugin;
 
 impl Plugin for SimulationPlugin {
     fn build(&self, app: &mut App) {
+        // Ordered here as well as by the game: the plugin also runs alone (the benchmarks,
+        // the side-by-side with the peers).
+        schedule::order_the_physics(app);
         app.init_resource::<SceneParams>()
             .init_resource::<Integrator>()
             .init_resource::<AutoSettings>()
             .init_resource::<StepStats>()
             .init_resource::<StepCount>()
             .init_resource::<EnergyBooks>()
-            .configure_sets(
-                FixedUpdate,
-                (
-                    PhysicsSystems::Accumulate,
-                    PhysicsSystems::Integrate,
-                    PhysicsSystems::Publish,
-                )
-                    .chain(),
-            )
             .add_systems(Startup, spawn_box)
             .add_observer(reset_bodies_and_books)
-            // The step rate can change during play (a control); apply it before the loop. The
-            // game orders this set after its input and controls (`schedule`); placed before the
-            // loop here too, because the plugin also runs without the game.
-            .configure_sets(
-                RunFixedMainLoop,
-                GameSystems::ApplySettings.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
-            )
+            // The step rate can change during play (a control): applied before the loop.
             .add_systems(
                 RunFixedMainLoop,
                 apply_step_rate
@@ -68,21 +56,6 @@ impl Plugin for SimulationPlugin {
                 ),
             );
     }
-}
-
-/// The fixed step, in order: the tutorial's total reaction split into ECS stages.
-#[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum PhysicsSystems {
-    /// Book the hand's work since the last step in the energy ledger, then sum every force
-    /// and torque on each body into its [`ForceAccumulator`].
-    Accumulate,
-    /// Advance each body by one fixed step with the [`Integrator`] resource, from its
-    /// accumulated forces, then clear the accumulator.
-    Integrate,
-    /// Hand the new state to the rest of the app: the render snapshots, the energy books
-    /// settled (energies by kind, the ledger's residual), taps' bands removed after their one
-    /// step, the step counted.
-    Publish,
 }
 
 /// The scene back at its start: the box at rest at the centre, no band, the books, the

@@ -25,10 +25,10 @@ pub use rubber_band_box::game::GameLogicPlugin;
 pub use rubber_band_box::game::hud::{EnergyHistory, Hud, HudLine};
 pub use rubber_band_box::game::input::controls::CYCLE_INTEGRATOR;
 pub use rubber_band_box::game::input::pointer::{Grip, PointerPlugin, PointerSource};
+pub use rubber_band_box::game::schedule::PhysicsSystems;
 pub use rubber_band_box::game::screen::view::scene_projection;
 pub use rubber_band_box::game::simulation::{
-    Band, EnergyBooks, ForceAccumulator, PhysicsSystems, RigidBox, SimulationPlugin, StepCount,
-    StepStats,
+    Band, EnergyBooks, ForceAccumulator, RigidBox, SimulationPlugin, StepCount, StepStats,
 };
 pub use rubber_band_box::physics::{
     AngularState, Integrator, LinearState, SceneParams, Stepper, Wrench,

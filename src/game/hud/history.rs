@@ -5,7 +5,8 @@ use std::collections::VecDeque;
 
 use bevy::prelude::*;
 
-use crate::game::simulation::{EnergyBooks, PhysicsSystems, ResetScene};
+use crate::game::schedule::PhysicsSystems;
+use crate::game::simulation::{EnergyBooks, ResetScene};
 use crate::physics::Energies;
 
 pub struct EnergyHistoryPlugin;
@@ -16,7 +17,7 @@ impl Plugin for EnergyHistoryPlugin {
             .add_observer(restart_on_reset)
             .add_systems(
                 FixedUpdate,
-                record_energy_history.after(PhysicsSystems::Publish),
+                record_energy_history.in_set(PhysicsSystems::AfterStep),
             );
     }
 }

@@ -13,7 +13,7 @@ use bevy::ui_widgets::{
 };
 
 use crate::game::input::controls::{Action, Parameter};
-use crate::game::schedule::{GameSystems, ScreenSystems};
+use crate::game::schedule::{AfterBevySystems, GameSystems, ScreenSystems};
 use crate::game::shared::SceneName;
 use crate::game::shared::{ControlsArea, Overlays};
 use crate::physics::{Integrator, Scenario, SceneParams};
@@ -42,11 +42,14 @@ impl Plugin for PanelPlugin {
                     .chain()
                     .in_set(ScreenSystems::Panel),
             )
-            .add_systems(PostUpdate, publish_area.after(bevy::ui::UiSystems::Layout));
+            .add_systems(
+                PostUpdate,
+                publish_area.in_set(AfterBevySystems::AfterLayout),
+            );
         #[cfg(target_arch = "wasm32")]
         app.add_systems(
             PostUpdate,
-            publish_buttons.after(bevy::ui::UiSystems::Layout),
+            publish_buttons.in_set(AfterBevySystems::AfterLayout),
         );
     }
 }

@@ -34,9 +34,10 @@ impl Plugin for PointerPlugin {
             .add_observer(let_go_on_reset)
             .add_systems(
                 RunFixedMainLoop,
-                (read_pointer, drive_band)
-                    .chain()
-                    .in_set(GameSystems::Input),
+                (
+                    read_pointer.in_set(GameSystems::ReadPointer),
+                    drive_band.in_set(GameSystems::Input),
+                ),
             );
     }
 }

@@ -13,12 +13,12 @@ use std::time::Duration;
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
-use crate::game::input::pointer::{PointerAction, read_pointer};
+use crate::game::input::pointer::PointerAction;
 use crate::game::replays::recording::Recorder;
-use crate::game::schedule::GameSystems;
+use crate::game::schedule::{AfterStepsSystems, GameSystems, PhysicsSystems};
 use crate::game::shared::SceneName;
 use crate::game::shared::StatusMessage;
-use crate::game::simulation::{Band, PhysicsSystems, ResetScene, RigidBox, rigid_box};
+use crate::game::simulation::{Band, ResetScene, RigidBox, rigid_box};
 use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams};
 use crate::replay::{Record, Replay, TrajectoryHash};
 
@@ -30,16 +30,14 @@ impl Plugin for PlaybackPlugin {
             .add_systems(
                 RunFixedMainLoop,
                 (
-                    take_over_on_press
-                        .after(read_pointer)
-                        .in_set(GameSystems::Input),
+                    take_over_on_press.in_set(GameSystems::Input),
                     // What this frame's steps did, before the HUD shows it.
                     report_the_end
                         .run_if(resource_changed::<Playback>)
-                        .in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
+                        .in_set(AfterStepsSystems::Conclude),
                 ),
             )
-            .add_systems(FixedUpdate, play_step.before(PhysicsSystems::Accumulate));
+            .add_systems(FixedUpdate, play_step.in_set(PhysicsSystems::Playback));
         // A replay file opened is input: it acts on the very next step.
         #[cfg(not(target_arch = "wasm32"))]
         app.add_systems(

@@ -13,8 +13,9 @@ use std::path::{Path, PathBuf};
 
 use bevy::prelude::*;
 
+use crate::game::schedule::PhysicsSystems;
 use crate::game::shared::{SceneName, StatusMessage};
-use crate::game::simulation::{ForceAccumulator, PhysicsSystems, ResetScene, RigidBox, body_state};
+use crate::game::simulation::{ForceAccumulator, ResetScene, RigidBox, body_state};
 use crate::physics::{AngularState, AutoSettings, BandEnds, Integrator, LinearState, SceneParams};
 use crate::replay::{Replay, Settings};
 
@@ -28,15 +29,16 @@ impl Plugin for RecordingPlugin {
             .add_systems(
                 FixedUpdate,
                 (
-                    note_step_inputs
-                        .after(PhysicsSystems::Accumulate)
-                        .before(PhysicsSystems::Integrate),
-                    note_step_result.after(PhysicsSystems::Integrate),
+                    note_step_inputs.in_set(PhysicsSystems::Observe),
+                    note_step_result.in_set(PhysicsSystems::AfterStep),
                 ),
             );
         // After the window plugin's exit systems: closing the last window asks to exit there.
         #[cfg(not(target_arch = "wasm32"))]
-        app.add_systems(Last, save_on_exit.after(bevy::window::ExitSystems));
+        app.add_systems(
+            Last,
+            save_on_exit.in_set(crate::game::schedule::AfterBevySystems::AfterExit),
+        );
     }
 }
 

@@ -11,6 +11,7 @@ use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
 use crate::game::ghosts::{GhostKind, Ghosts};
+use crate::game::schedule::ScreenSystems;
 use crate::game::screen::view::interpolated_state;
 use crate::game::shared::Overlays;
 use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox};
@@ -42,7 +43,8 @@ impl Plugin for DrawPlugin {
                     draw_vectors.run_if(|overlays: Res<Overlays>| overlays.vectors),
                     (record_trail, draw_trail).chain(),
                     draw_ghosts,
-                ),
+                )
+                    .in_set(ScreenSystems::Draw),
             );
     }
 }

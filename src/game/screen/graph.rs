@@ -6,6 +6,7 @@ use bevy::prelude::*;
 
 use crate::game::hud::history::EnergyHistory;
 use crate::game::hud::{BAND_ENERGY_COLOUR, KINETIC_COLOUR, TOTAL_COLOUR};
+use crate::game::schedule::ScreenSystems;
 use crate::game::shared::Overlays;
 use crate::physics::{Energies, SCENE_SIZE};
 
@@ -13,7 +14,12 @@ pub struct EnergyGraphPlugin;
 
 impl Plugin for EnergyGraphPlugin {
     fn build(&self, app: &mut App) {
-        app.add_systems(Update, draw_energy_graph.run_if(hud_shown));
+        app.add_systems(
+            Update,
+            draw_energy_graph
+                .run_if(hud_shown)
+                .in_set(ScreenSystems::Draw),
+        );
     }
 }
 

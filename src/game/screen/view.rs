@@ -5,6 +5,7 @@
 use bevy::camera::ScalingMode;
 use bevy::prelude::*;
 
+use crate::game::schedule::{AfterStepsSystems, ScreenSystems};
 use crate::game::simulation::{Band, RenderSnapshots};
 use crate::physics::{BodyState, SCENE_SIZE};
 
@@ -15,10 +16,9 @@ impl Plugin for ViewPlugin {
         app.add_systems(Startup, spawn_camera)
             .add_systems(
                 RunFixedMainLoop,
-                (interpolate_body_transforms, place_band_pins)
-                    .in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
+                (interpolate_body_transforms, place_band_pins).in_set(AfterStepsSystems::Conclude),
             )
-            .add_systems(Update, scale_ui_to_window);
+            .add_systems(Update, scale_ui_to_window.in_set(ScreenSystems::Scale));
     }
 }
 
@@ -78,7 +78,9 @@ fn interpolate_body_transforms(
     }
 }
 
-fn place_band_pins(mut bands: Query<(&Band, &mut Transform)>) {
+/// Bands and bodies are never the same entity: said, so the two writers of `Transform` need
+/// no order between them.
+fn place_band_pins(mut bands: Query<(&Band, &mut Transform), Without<RenderSnapshots>>) {
     for (band, mut transform) in &mut bands {
         transform.translation = band.ends.anchor.as_vec2().extend(transform.translation.z);
     }
