@@ -5,10 +5,13 @@
 
 use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
+use std::process::ExitCode;
 
 use bevy::math::DVec2;
 use clap::{Args, Parser, Subcommand};
 
+use crate::game;
+use crate::game::play::PlayOptions;
 use crate::physics::{
     AutoSettings, BodyState, Diverged, Integrator, Pull, Run, Scenario, SceneParams,
 };
@@ -422,4 +425,63 @@ fn parse_pull(text: &str) -> Result<Pull, String> {
 
 fn parse_init(text: &str) -> Result<BodyState, String> {
     parse_numbers::<6>(text, "X,Y,THETA,VX,VY,OMEGA").map(BodyState::from_array)
+}
+
+/// Runs a parsed command line: the exit status README promises (2 for a bad argument or
+/// file, 3 for a diverged run, 4 for a replay that stepped to other states).
+pub fn run(cli: Cli) -> ExitCode {
+    match cli.command {
+        None => play(&PlayOptions::default()),
+        Some(Command::Play(args)) => play(&PlayOptions {
+            integrator: args.integrator,
+            step_rate: args.step_rate,
+            record: args.record,
+            replay: args.replay,
+        }),
+        Some(Command::Simulate(args)) => match simulate(&args, io::stdout().lock()) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(SimulateError::Arguments(message)) => {
+                eprintln!("error: {message}");
+                ExitCode::from(2)
+            }
+            Err(SimulateError::Diverged(diverged)) => {
+                eprintln!("error: {diverged}");
+                ExitCode::from(3)
+            }
+            Err(SimulateError::Mismatch(message)) => {
+                eprintln!("error: {message}");
+                ExitCode::from(4)
+            }
+            // A closed pipe (`| head`) is not an error worth a message.
+            Err(SimulateError::Output(error)) if error.kind() == io::ErrorKind::BrokenPipe => {
+                ExitCode::SUCCESS
+            }
+            Err(SimulateError::Output(error)) => {
+                eprintln!("error: cannot write the trajectory: {error}");
+                ExitCode::FAILURE
+            }
+        },
+        Some(Command::Report(args)) => match crate::measure::report::run(&args) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(error) => {
+                eprintln!("error: {error}");
+                if error.is::<crate::measure::report::BadInput>() {
+                    ExitCode::from(2)
+                } else {
+                    ExitCode::FAILURE
+                }
+            }
+        },
+    }
+}
+
+/// Plays; a bad option exits 2 before any window opens.
+fn play(options: &PlayOptions) -> ExitCode {
+    match game::play::play(options) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::from(2)
+        }
+    }
 }

@@ -2,6 +2,7 @@
 //! screen (what the headless tests run), [`GamePlugin`] adds the screen.
 //!
 //! Rooms:
+//! - [`play`]: the play command's set-up, the window, and the run;
 //! - [`schedule`]: the frame's order, every system set declared and ordered in one place;
 //! - [`shared`]: the resources several plugins read (the scene's name, the status line, what
 //!   shows, where the panel lies);
@@ -18,6 +19,7 @@
 pub mod ghosts;
 pub mod hud;
 pub mod input;
+pub mod play;
 pub mod replays;
 pub mod schedule;
 pub mod screen;

@@ -1,8 +1,8 @@
 //! The physics plugin: the box's state as components, the band as an entity, and the fixed
-//! step in three of the frame's sets (`schedule::PhysicsSystems`): accumulate forces and torques (and book the hand's
-//! work), integrate (and book what damping took out), publish (render snapshots, the energy
-//! books' settlement, taps ended, the step counted). It owns the body, the energy books and
-//! the step statistics, and puts them back on [`ResetScene`].
+//! step in three of the frame's sets (`schedule::PhysicsSystems`): accumulate forces and
+//! torques (and book the hand's work), integrate (and book what damping took out), publish
+//! (render snapshots, the energy books' settlement, taps ended, the step counted). It owns the
+//! body, the energy books and the step statistics, and puts them back on [`ResetScene`].
 //!
 //! Headless, and usable alone (the benchmarks and the side-by-side with the peers run it
 //! without the rest of the game). Every system is a thin loop over the numerical core in

@@ -34,10 +34,15 @@ pub fn scene_projection() -> Projection {
     })
 }
 
-/// The game's window is 960 x 720; in a smaller one (a phone) the HUD and the panel shrink with
-/// it, to no less than 0.6, so that they leave the scene readable.
+/// The window's size when the game opens, in logical pixels: the tutorial's 640 x 480 scene
+/// with room around it for the HUD and the panel.
+pub const WINDOW_SIZE: UVec2 = UVec2::new(960, 720);
+
+/// In a window smaller than [`WINDOW_SIZE`] (a phone) the HUD and the panel shrink with it, to
+/// no less than 0.6, so that they leave the scene readable.
 pub fn ui_scale_for(size: Vec2) -> f32 {
-    (size.x / 960.0).min(size.y / 720.0).clamp(0.6, 1.0)
+    let full = WINDOW_SIZE.as_vec2();
+    (size.x / full.x).min(size.y / full.y).clamp(0.6, 1.0)
 }
 
 fn scale_ui_to_window(

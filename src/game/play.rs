@@ -1,0 +1,117 @@
+//! Starting the game: the play command's options checked and put in place (the step rate
+//! and integrator, a replay to play back, a file to record to), then Bevy's plugins, the
+//! window and the game's. [`prepare`] is the part a test can call: it needs no window.
+
+#[cfg(not(target_arch = "wasm32"))]
+use std::path::{Path, PathBuf};
+
+use bevy::prelude::*;
+use bevy_prototype_lyon::prelude::ShapePlugin;
+
+use super::GamePlugin;
+use super::screen::view::WINDOW_SIZE;
+use crate::physics::{Integrator, SceneParams};
+
+/// How to start the game: `play`'s options on the command line, the defaults on the web.
+#[derive(Debug, Default, Clone)]
+pub struct PlayOptions {
+    pub integrator: Option<Integrator>,
+    pub step_rate: Option<f64>,
+    /// Save the game to this file when it ends.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub record: Option<PathBuf>,
+    /// Play this replay back; a press takes over.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub replay: Option<PathBuf>,
+}
+
+/// The game's starting resources from `options`, inserted into `app` before its plugins: the
+/// scene's parameters, the integrator, a replay to play back, a recorder and its file. Every
+/// option is checked first: a bad one is refused with a message and `app` is left untouched.
+pub fn prepare(app: &mut App, options: &PlayOptions) -> Result<(), String> {
+    let mut params = SceneParams::tutorial();
+    if let Some(rate) = options.step_rate {
+        params.step_rate_hz = rate;
+    }
+    params.validate().map_err(|error| error.to_string())?;
+    // A replay (native only) may start with others.
+    #[cfg_attr(target_arch = "wasm32", allow(unused_mut))]
+    let mut integrator = options.integrator.unwrap_or_default();
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        use super::replays::{playback::Playback, recording::Recorder};
+        use super::shared::SceneName;
+        let playback = match &options.replay {
+            Some(path) => Some(crate::replay::Replay::read_file(path)?),
+            None => None,
+        };
+        if let Some(target) = &options.record {
+            check_folder(target)?;
+        }
+        if let Some(replay) = playback {
+            app.insert_resource(SceneName(replay.header.scene.clone()));
+            let playback = Playback::of(replay);
+            if let Some((start, recorded, auto)) = playback.start() {
+                (params, integrator) = (start, recorded);
+                app.insert_resource(auto);
+            }
+            app.insert_resource(playback);
+        }
+        if let Some(target) = &options.record {
+            app.insert_resource(Recorder::to_file(target.clone()));
+        }
+    }
+    app.insert_resource(params).insert_resource(integrator);
+    Ok(())
+}
+
+/// A file to record to must be in a folder that exists: said now, not when the game ends.
+#[cfg(not(target_arch = "wasm32"))]
+fn check_folder(target: &Path) -> Result<(), String> {
+    let folder = match target.parent() {
+        Some(folder) if !folder.as_os_str().is_empty() => folder,
+        _ => Path::new("."),
+    };
+    if folder.is_dir() {
+        Ok(())
+    } else {
+        Err(format!(
+            "cannot record to {}: {} is not a folder",
+            target.display(),
+            folder.display()
+        ))
+    }
+}
+
+/// The window the game opens.
+pub fn window() -> Window {
+    Window {
+        title: "Rubber Band Box".into(),
+        resolution: WINDOW_SIZE.into(),
+        // On the web: draw into the page's canvas, fill its parent, keep the browser's own
+        // gestures (scroll, zoom) off the canvas.
+        canvas: Some("#bevy".into()),
+        fit_canvas_to_parent: true,
+        prevent_default_event_handling: true,
+        ..default()
+    }
+}
+
+/// Plays until the window closes; a bad option is refused before any window opens.
+pub fn play(options: &PlayOptions) -> Result<(), String> {
+    let mut app = App::new();
+    prepare(&mut app, options)?;
+    #[cfg(all(unix, not(target_arch = "wasm32")))]
+    if options.record.is_some() {
+        // A process-wide signal handler: installed by the game that plays, not by `prepare`.
+        super::replays::recording::sigterm::exit_on_sigterm(&mut app);
+    }
+    app.insert_resource(ClearColor(Color::BLACK))
+        .add_plugins(DefaultPlugins.set(WindowPlugin {
+            primary_window: Some(window()),
+            ..default()
+        }))
+        .add_plugins((ShapePlugin, GamePlugin))
+        .run();
+    Ok(())
+}
