@@ -2,7 +2,7 @@
 //! bad line named with what is wrong in it. Nothing in a file can make it panic.
 
 use std::fmt;
-use std::io::{self, BufRead, Read};
+use std::io::{BufRead, Read};
 
 use super::format::{
     AUTO_ORDERS, BandRecord, FORMAT, Header, MAX_LINE_BYTES, MAX_STEPS, Record, Replay,
@@ -54,7 +54,7 @@ impl Replay {
         let in_file = |message: String| format!("{}: {message}", path.display());
         let file =
             std::fs::File::open(path).map_err(|error| in_file(format!("cannot open: {error}")))?;
-        Self::read(io::BufReader::new(file)).map_err(|error| in_file(error.to_string()))
+        Self::read(std::io::BufReader::new(file)).map_err(|error| in_file(error.to_string()))
     }
 }
 
