@@ -3,7 +3,7 @@
 //! Every value is checked before anything runs: a bad argument gets a message naming it and
 //! exit status 2, never a panic.
 
-use std::io::{self, BufWriter, Write};
+use std::io::{self, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -12,11 +12,9 @@ use clap::{Args, Parser, Subcommand};
 
 use crate::game;
 use crate::game::play::PlayOptions;
-use crate::physics::{
-    AutoSettings, BodyState, Diverged, Integrator, Pull, Run, Scenario, SceneParams,
-};
-use crate::replay::run::ReplayRun;
-use crate::replay::{Replay, TrajectoryHash};
+use crate::measure::simulate::{ReplayJob, SimulateError, write_replay, write_run};
+use crate::physics::{AutoSettings, BodyState, Integrator, Pull, Run, Scenario, SceneParams};
+use crate::replay::Replay;
 
 #[derive(Parser, Debug)]
 #[command(
@@ -183,163 +181,23 @@ impl SimulateArgs {
     }
 }
 
-pub const CSV_HEADER: &str =
-    "step,t,x,y,theta,vx,vy,omega,energy,band,substeps,fallbacks,ledger_residual";
-
-/// One CSV row: a state and what the step that led to it did.
-struct Row {
-    step: u64,
-    time: f64,
-    state: BodyState,
-    energy: f64,
-    band: bool,
-    substeps: u32,
-    fallbacks: u64,
-    residual: f64,
-}
-
-impl Row {
-    fn of_run(run: &Run) -> Self {
-        Self {
-            step: run.step,
-            time: run.time(),
-            state: run.stepper.state,
-            energy: run.stepper.energy(),
-            band: run.stepper.band.is_some(),
-            substeps: run.last_step.substeps,
-            fallbacks: run.fallbacks,
-            residual: run.ledger.residual(run.stepper.energy()),
-        }
-    }
-
-    fn of_replay(run: &ReplayRun) -> Self {
-        Self {
-            step: run.step,
-            time: run.time,
-            state: run.stepper.state,
-            energy: run.stepper.energy(),
-            band: run.stepper.band.is_some(),
-            substeps: run.last_step.substeps,
-            fallbacks: run.fallbacks,
-            residual: run.residual(),
-        }
-    }
-}
-
-impl std::fmt::Display for Row {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let [x, y, theta, vx, vy, omega] = self.state.to_array();
-        write!(
-            f,
-            "{},{},{x},{y},{theta},{vx},{vy},{omega},{},{},{},{},{}",
-            self.step,
-            self.time,
-            self.energy,
-            u8::from(self.band),
-            self.substeps,
-            self.fallbacks,
-            self.residual,
-        )
-    }
-}
-
-/// Why `simulate` stopped early.
-#[derive(Debug)]
-pub enum SimulateError {
-    Arguments(String),
-    Diverged(Diverged),
-    Output(io::Error),
-    /// A replay run with its recorded integrators did not give the recorded states.
-    Mismatch(String),
-}
-
-/// Where `simulate` writes: the CSV (the header, row 0 for the initial state, a row per step),
-/// or with `--hash` only the hash of the states after each step.
-struct Output<W: Write> {
-    out: BufWriter<W>,
-    hash: Option<TrajectoryHash>,
-}
-
-impl<W: Write> Output<W> {
-    fn new(out: W, hash: bool, initial: &Row) -> io::Result<Self> {
-        let mut output = Self {
-            out: BufWriter::new(out),
-            hash: hash.then(TrajectoryHash::default),
-        };
-        if !hash {
-            writeln!(output.out, "{CSV_HEADER}\n{initial}")?;
-        }
-        Ok(output)
-    }
-
-    /// The state after a step; its row is made only for the CSV.
-    fn step(&mut self, state: &BodyState, row: impl FnOnce() -> Row) -> io::Result<()> {
-        match self.hash.as_mut() {
-            Some(hash) => {
-                hash.add(state);
-                Ok(())
-            }
-            None => writeln!(self.out, "{}", row()),
-        }
-    }
-
-    fn finish(mut self) -> io::Result<()> {
-        if let Some(hash) = self.hash {
-            writeln!(self.out, "{hash}")?;
-        }
-        self.out.flush()
-    }
-}
-
-/// Writes the trajectory to `out` (see [`Output`]).
+/// `simulate`: the scene or the replay the arguments name, stepped, its trajectory written
+/// to `out` (`measure::simulate`).
 pub fn simulate(args: &SimulateArgs, out: impl Write) -> Result<(), SimulateError> {
     if let Some(path) = &args.replay {
-        return simulate_replay(args, path, out);
+        let replay = Replay::read_file(path).map_err(SimulateError::Arguments)?;
+        let as_recorded = args.integrator.is_none() && !args.overrides_auto();
+        let job = ReplayJob {
+            replay: &replay,
+            path,
+            integrator: args.integrator,
+            auto: &|auto| args.auto(auto),
+            check_hash: as_recorded,
+        };
+        return write_replay(&job, args.hash, out);
     }
-    let mut run = args.run().map_err(SimulateError::Arguments)?;
-    let mut output =
-        Output::new(out, args.hash, &Row::of_run(&run)).map_err(SimulateError::Output)?;
-    for _ in 0..args.steps {
-        if let Err(diverged) = run.advance() {
-            output.out.flush().map_err(SimulateError::Output)?;
-            return Err(SimulateError::Diverged(diverged));
-        }
-        output
-            .step(&run.stepper.state, || Row::of_run(&run))
-            .map_err(SimulateError::Output)?;
-    }
-    output.finish().map_err(SimulateError::Output)
-}
-
-/// `simulate --replay FILE`: the recorded game stepped again.
-fn simulate_replay(
-    args: &SimulateArgs,
-    path: &std::path::Path,
-    out: impl Write,
-) -> Result<(), SimulateError> {
-    let replay = Replay::read_file(path).map_err(SimulateError::Arguments)?;
-    let mut run = ReplayRun::new(&replay, args.integrator)
-        .map_err(|error| SimulateError::Arguments(format!("{}: {error}", path.display())))?;
-    run.stepper.auto = args.auto(run.stepper.auto);
-    let mut output =
-        Output::new(out, args.hash, &Row::of_replay(&run)).map_err(SimulateError::Output)?;
-    while run.advance().is_some() {
-        output
-            .step(&run.stepper.state, || Row::of_replay(&run))
-            .map_err(SimulateError::Output)?;
-    }
-    output.finish().map_err(SimulateError::Output)?;
-    let as_recorded = args.integrator.is_none() && !args.overrides_auto();
-    if as_recorded && run.hash != replay.hash {
-        return Err(SimulateError::Mismatch(format!(
-            "{}: the states differ from the recorded game's (hash {}, recorded {}): this build \
-             or machine computes the steps differently",
-            path.display(),
-            run.hash,
-            replay.hash
-        )));
-    }
-    Ok(())
+    let run = args.run().map_err(SimulateError::Arguments)?;
+    write_run(run, args.steps, args.hash, out)
 }
 
 fn parse_number(text: &str) -> Result<f64, String> {
@@ -427,7 +285,7 @@ fn parse_init(text: &str) -> Result<BodyState, String> {
     parse_numbers::<6>(text, "X,Y,THETA,VX,VY,OMEGA").map(BodyState::from_array)
 }
 
-/// Runs a parsed command line: the exit status README promises (2 for a bad argument or
+/// Runs a parsed command line: the exit status docs/simulate.md gives (2 for a bad argument or
 /// file, 3 for a diverged run, 4 for a replay that stepped to other states).
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
