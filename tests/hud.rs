@@ -1,4 +1,4 @@
-//! The HUD, headless: its lines follow the simulation and the controls, and its energy panel
+//! The HUD, headless: its lines follow the simulation and the controls, and its energy lines
 //! and history agree with the physics.
 
 mod common;
@@ -53,7 +53,7 @@ fn lines_say_what_the_readings_hold() {
     );
     assert!(!HudLine::Clock.text(&r).contains("PAUSED"));
     assert!(HudLine::Total.text(&r).ends_with("6.00"));
-    assert!(HudLine::Scene.text(&r).contains("k 20"));
+    assert!(HudLine::Parameters.text(&r).contains("k 20"));
     assert_eq!(HudLine::Replay.text(&r), "recorded 150 steps");
     let playing = HudReadings {
         playback: Some((40, 1125)),

@@ -51,7 +51,7 @@ pub const TOTAL_COLOUR: Color = Color::srgb(1.0, 0.85, 0.2);
 const TEXT_COLOUR: Color = Color::srgb(0.9, 0.9, 0.9);
 const DIM_COLOUR: Color = Color::srgb(0.6, 0.6, 0.65);
 const WARNING_COLOUR: Color = Color::srgb(1.0, 0.4, 0.3);
-const PANEL_COLOUR: Color = Color::srgba(0.0, 0.0, 0.0, 0.55);
+const BACKDROP_COLOUR: Color = Color::srgba(0.0, 0.0, 0.0, 0.55);
 const FONT_SIZE: f32 = 13.0;
 const HELP_FONT_SIZE: f32 = 12.0;
 
@@ -61,7 +61,7 @@ pub enum HudLine {
     SceneName,
     Integrator,
     Clock,
-    Scene,
+    Parameters,
     EnergyHeading,
     KineticLinear,
     KineticRotational,
@@ -75,13 +75,13 @@ pub enum HudLine {
 }
 
 impl HudLine {
-    /// The panel's lines, top to bottom (the ghosts' list and the help line sit apart, at
+    /// The column's lines, top to bottom (the ghosts' list and the help line sit apart, at
     /// the bottom).
-    pub const PANEL: [HudLine; 12] = [
+    pub const COLUMN: [HudLine; 12] = [
         HudLine::SceneName,
         HudLine::Integrator,
         HudLine::Clock,
-        HudLine::Scene,
+        HudLine::Parameters,
         HudLine::EnergyHeading,
         HudLine::KineticLinear,
         HudLine::KineticRotational,
@@ -151,7 +151,7 @@ impl HudLine {
                 }
                 line
             }
-            HudLine::Scene => format!(
+            HudLine::Parameters => format!(
                 "m {}  k {}  damping: linear {:.3} /s, angular {:.3} /s",
                 r.mass, r.stiffness, r.linear_rate, r.angular_rate
             ),
@@ -382,9 +382,9 @@ fn spawn_hud(mut commands: Commands) {
             TextColor(TEXT_COLOUR),
         )
     };
-    let panel = commands
+    let column = commands
         .spawn((
-            Name::new("HUD panel"),
+            Name::new("HUD column"),
             Hud,
             Node {
                 position_type: PositionType::Absolute,
@@ -394,13 +394,13 @@ fn spawn_hud(mut commands: Commands) {
                 padding: UiRect::all(px(6)),
                 ..default()
             },
-            BackgroundColor(PANEL_COLOUR),
+            BackgroundColor(BACKDROP_COLOUR),
         ))
         .id();
-    for line in HudLine::PANEL {
-        commands.spawn((text(line, FONT_SIZE), ChildOf(panel)));
+    for line in HudLine::COLUMN {
+        commands.spawn((text(line, FONT_SIZE), ChildOf(column)));
     }
-    // Bottom left, above the help line: on a short screen (a phone turned) the panel's column
+    // Bottom left, above the help line: on a short screen (a phone turned) the HUD's column
     // and this list together would reach down over the box's start.
     commands.spawn((
         Name::new("HUD ghosts"),
@@ -412,7 +412,7 @@ fn spawn_hud(mut commands: Commands) {
             left: px(6),
             ..default()
         },
-        BackgroundColor(PANEL_COLOUR),
+        BackgroundColor(BACKDROP_COLOUR),
     ));
     commands.spawn((
         Name::new("HUD help"),
