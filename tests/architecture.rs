@@ -195,3 +195,92 @@ fn the_reader_finds_a_circle_when_there_is_one() {
     assert_eq!(circle_from("c", &graph), None);
     assert!(graph["a::d"].is_empty(), "a visibility is not an import");
 }
+
+/// The rooms from the bottom up: a module may import its own room and those under it.
+const LAYERS: [&str; 5] = ["physics", "replay", "game", "measure", "cli"];
+
+/// The room a module lives in (its first segment), and that room's height in [`LAYERS`].
+fn layer(module: &str) -> Option<usize> {
+    let room = module.split("::").next().unwrap_or("");
+    LAYERS.iter().position(|layer| *layer == room)
+}
+
+/// Every import that reaches up a layer, as "module -> target".
+fn upward_imports(graph: &BTreeMap<String, BTreeSet<String>>) -> Vec<String> {
+    graph
+        .iter()
+        .filter(|(module, _)| !module.is_empty())
+        .flat_map(|(module, imported)| {
+            imported.iter().filter_map(move |target| {
+                let (Some(from), Some(to)) = (layer(module), layer(target)) else {
+                    return Some(format!("{module} -> {target} (a room outside {LAYERS:?})"));
+                };
+                (to > from).then(|| format!("{module} -> {target}"))
+            })
+        })
+        .collect()
+}
+
+#[test]
+fn each_room_imports_only_the_rooms_under_it() {
+    let graph = graph();
+    // Every module lives in a known room: a new top-level module must be placed first.
+    for module in graph.keys().filter(|module| !module.is_empty()) {
+        assert!(
+            layer(module).is_some(),
+            "{module} is in no room of {LAYERS:?}"
+        );
+    }
+    // The reader sees the edges the layers allow, so a check that saw none would not pass.
+    assert!(graph["replay::format"].contains("physics"));
+    assert!(graph["game::simulation"].contains("physics"));
+    assert!(graph["measure::references"].contains("physics"));
+    let upward = upward_imports(&graph);
+    assert!(
+        upward.is_empty(),
+        "imports up a layer:\n{}",
+        upward.join("\n")
+    );
+}
+
+#[test]
+fn nothing_imports_the_command_line_and_the_shared_leaves_import_no_plugin() {
+    let graph = graph();
+    for (module, imported) in &graph {
+        if !module.is_empty() && !module.starts_with("cli") {
+            assert!(
+                !imported.contains("cli"),
+                "{module} imports the binary's cli"
+            );
+        }
+    }
+    // The frame's order and the shared resources sit under every plugin of the game.
+    for leaf in ["game::schedule", "game::shared"] {
+        let game: Vec<_> = graph[leaf]
+            .iter()
+            .filter(|target| target.starts_with("game"))
+            .collect();
+        assert!(game.is_empty(), "{leaf} imports {game:?}");
+    }
+}
+
+#[test]
+fn the_layer_check_finds_an_import_up_a_layer() {
+    let mut graph = BTreeMap::new();
+    graph.insert(
+        "physics::body".to_owned(),
+        BTreeSet::from(["game::simulation".to_owned()]),
+    );
+    graph.insert("replay".to_owned(), BTreeSet::from(["physics".to_owned()]));
+    graph.insert(
+        "game::hud".to_owned(),
+        BTreeSet::from(["measure::report".to_owned(), "replay".to_owned()]),
+    );
+    assert_eq!(
+        upward_imports(&graph),
+        [
+            "game::hud -> measure::report",
+            "physics::body -> game::simulation"
+        ]
+    );
+}
