@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The mutation score of the numerical core (README, "Robustness"): cargo-mutants changes
+# The mutation score of the numerical core (docs/testing.md, "Robustness"): cargo-mutants changes
 # src/physics/ one operator at a time and runs the core's tests against each change. Not part
 # of CI (all of src/physics takes about an hour and a half on two cores). Needs
 # `cargo install --locked cargo-mutants --version '^27'`.

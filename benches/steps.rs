@@ -50,7 +50,7 @@ fn core_step(c: &mut Criterion) {
 
 /// A headless app whose every `update()` runs one 10 ms fixed step, every schedule on the
 /// single-threaded executor (on two cores the multi-threaded one costs far more per update for
-/// a scene this small: README, "Benchmarks").
+/// a scene this small: docs/benchmarks.md).
 fn headless_app(physics: bool, boxes: usize, single_threaded: bool) -> App {
     let mut app = App::new();
     app.add_plugins(MinimalPlugins)
@@ -119,7 +119,7 @@ fn many_boxes(c: &mut Criterion) {
 
 /// One fixed step of a scene's box and band in a headless `App`, the anchor circling as a hand
 /// would (so the band never settles), with every ghost stepping beside it and without: what
-/// the ghosts cost a frame (README, "The lab").
+/// the ghosts cost a frame (docs/lab.md).
 fn ghosts(c: &mut Criterion) {
     let mut group = c.benchmark_group("ghosts");
     // The tutorial's band, the stiff scene's (k = 1e5), and the stiffest the game allows,

@@ -195,17 +195,17 @@ fn the_report_says_when_it_cannot_write_its_files() {
     );
 }
 
-/// The named scenes live once, in the core (`Scenario::NAMES`): README's `--scene` row and the
+/// The named scenes live once, in the core (`Scenario::NAMES`): docs/simulate.md's `--scene` row and the
 /// CLI's help name each of them, and the CLI accepts each.
 #[test]
-fn readme_and_the_help_name_every_scene_the_core_has() {
+fn the_docs_and_the_help_name_every_scene_the_core_has() {
     use rubber_band_box::physics::Scenario;
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
-        .expect("README.md");
-    let row = readme
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/simulate.md"))
+        .expect("docs/simulate.md");
+    let row = page
         .lines()
         .find(|line| line.starts_with("| `--scene NAME` |"))
-        .expect("README documents --scene");
+        .expect("docs/simulate.md documents --scene");
     let listed = row.matches("`").count() / 2 - 1;
     assert_eq!(listed, Scenario::NAMES.len(), "{row}");
     let help = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
@@ -214,7 +214,10 @@ fn readme_and_the_help_name_every_scene_the_core_has() {
         .expect("the binary runs");
     let help = String::from_utf8_lossy(&help.stdout).replace('\n', " ");
     for name in Scenario::NAMES {
-        assert!(row.contains(&format!("`{name}`")), "README lacks {name}");
+        assert!(
+            row.contains(&format!("`{name}`")),
+            "docs/simulate.md lacks {name}"
+        );
         assert!(help.contains(name), "--help lacks {name}");
         assert!(
             simulate(&["--scene", name, "--steps", "1"])
@@ -323,16 +326,16 @@ fn the_auto_overrides_change_autos_steps() {
     assert_eq!(column(&with(&["--auto-max-substeps", "1"]), fallbacks), 5.0);
 }
 
-/// README's table of `simulate`'s options and `simulate --help` name the same options.
+/// docs/simulate.md's table of `simulate`'s options and `simulate --help` name the same options.
 #[test]
-fn readme_documents_exactly_the_options_simulate_has() {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
-        .expect("README.md");
-    let section = readme
+fn the_docs_document_exactly_the_options_simulate_has() {
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/simulate.md"))
+        .expect("docs/simulate.md");
+    let section = page
         .split("\n## Simulate\n")
         .nth(1)
         .and_then(|rest| rest.split("\n## ").next())
-        .expect("README has a Simulate section");
+        .expect("docs/simulate.md has a Simulate section");
     let flags = |text: &str| -> std::collections::BTreeSet<String> {
         text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
             .filter(|word| word.starts_with("--") && word.len() > 2)

@@ -150,7 +150,7 @@ fn explicit_euler_gains_energy_rk4_and_implicit_lose_it() {
     // Neither is symplectic: the angular momentum about the anchor (zero at the start, kept
     // to round-off by the symplectic methods above) wanders, RK4's by a hair of its scale
     // m·|x − a|·|v| ~ 1e6, backward Euler's more as it damps the swing. Bounded, both, well
-    // under that scale (README, "Integrators", has the figures).
+    // under that scale (docs/integrators.md has the figures).
     assert!(rk4.momentum_error < 1e-2, "rk4: {}", rk4.momentum_error);
     assert!(
         implicit.momentum_error < 1e4,
@@ -627,7 +627,7 @@ fn auto_meets_the_stiff_targets_at_each_horizon_without_falling_back() {
         let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
         run.advance_by(ticks).unwrap();
         let error = run.stepper.state.pose_error(&reference, &mass);
-        // The targets of README's stiffness table; the fixture's two solutions agree to well
+        // The targets of the stiffness table (docs/report.md); the fixture's two solutions agree to well
         // within them.
         let target = if k <= 1e6 { 1e-5 } else { 1e-4 };
         assert!(agreement < target / 2.0, "k {k:e}: references {agreement}");
@@ -703,7 +703,7 @@ fn a_tighter_budget_makes_auto_fall_back_sooner() {
 /// The soak: 1e7 steps (28 simulated hours) of the default integrator on the undamped
 /// tutorial scene with the band held, part of `cargo test` (a few seconds). Its figures:
 /// `cargo test --test integrators soak -- --nocapture`. The bounds leave a wide margin over
-/// the figures measured (README, "Robustness"), far below what a slow drift would reach;
+/// the figures measured (docs/testing.md, "Robustness"), far below what a slow drift would reach;
 /// `auto` must never fall back here.
 #[test]
 fn soak_ten_million_undamped_steps() {

@@ -601,7 +601,7 @@ fn a_press_takes_over_a_playback() {
 }
 
 /// A record in memory is small: a long game at a high step rate stays well under the memory
-/// a replay's longest allowed length implies (README, "Replays").
+/// a replay's longest allowed length implies (docs/replays.md).
 #[test]
 fn a_record_takes_at_most_48_bytes() {
     assert!(std::mem::size_of::<rubber_band_box::replay::Record>() <= 48);

@@ -111,7 +111,7 @@ fn quick_report(tag: &str) -> (Vec<Vec<String>>, Vec<Vec<String>>, String) {
     files
 }
 
-/// What README says the report shows, as orderings and bounds the report could break: on the
+/// What docs/report.md says the report shows, as orderings and bounds the report could break: on the
 /// tutorial scene `auto` beats `rk4` beats `verlet` beats the first-order methods at every
 /// step, `rk4` and `verlet` converge at their orders, the stability table orders the methods
 /// as their stability regions do, and `auto`'s energy books balance to 1e-6.

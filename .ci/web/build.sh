@@ -24,7 +24,7 @@ wasm-bindgen --target web --out-dir "$site/pkg" --no-typescript \
     "$CARGO_TARGET_DIR/wasm32-unknown-unknown/wasm-release/rubber_band_box.wasm"
 cp assets/web/index.html "$site/"
 wasm="$site/pkg/rubber_band_box_bg.wasm"
-# The pre-compressed copies a static server can send instead (README, "Web").
+# The pre-compressed copies a static server can send instead (docs/web.md).
 if command -v node >/dev/null; then
     node .ci/web/compress.mjs "$wasm" "$site/pkg/rubber_band_box.js"
 else

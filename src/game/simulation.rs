@@ -188,7 +188,7 @@ fn settle_books(
 }
 
 /// Puts every schedule the app has now on the single-threaded executor: for one box the
-/// multi-threaded one costs many times more per tick (README, "Benchmarks"). The benchmarks
+/// multi-threaded one costs many times more per tick (docs/benchmarks.md). The benchmarks
 /// and the side-by-side with the peers measure with it.
 pub fn run_single_threaded(app: &mut App) {
     let mut schedules = app.world_mut().resource_mut::<Schedules>();

@@ -98,7 +98,7 @@ pub fn reference_state(scenario: &Scenario, t: f64, step: f64) -> BodyState {
 
 /// How long after a stiff pull from rest two tight references still agree well enough to
 /// judge an integrator by its state: the stiffer the band, the sooner its chaotic motion
-/// parts them (README, "Horizons"; the report prints how far its two references agree).
+/// parts them (docs/report.md, "Horizons"; the report prints how far its two references agree).
 /// None beyond k = 1e7, where no state can be compared and only boundedness and energy can.
 pub fn resolvable_horizon(k: f64) -> Option<f64> {
     if k <= 1e5 {

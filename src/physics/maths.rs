@@ -1,7 +1,7 @@
 //! The transcendental functions the core calls, from one portable implementation (the `libm`
 //! crate, pure Rust), so that a step computes the same bits on every platform. std's own are
 //! the platform's: glibc's natively, a port of musl's on wasm32, and the two disagree in the
-//! last bit on some arguments (README, "Replays"), which a stiff band grows into a different
+//! last bit on some arguments (docs/replays.md), which a stiff band grows into a different
 //! trajectory. The avian and rapier crates do the same with their `enhanced-determinism`.
 //! `sqrt` needs no such care: IEEE 754 rounds it exactly everywhere.
 

@@ -1,5 +1,5 @@
 //! The scene's parameters, their units, their defaults (the tutorial's Rubber Band Box) and
-//! their validation. One source of truth: the game, the tests and README read them from here.
+//! their validation. One source of truth: the game, the CLI and the tests read them from here.
 
 use bevy::math::DVec2;
 use bevy::prelude::Resource;

@@ -78,9 +78,9 @@ fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> Accurac
 const TIMED_TICKS: u64 = 100;
 
 /// The time per tick over `timed` ticks of fresh runs after each run's first tick, where
-/// every contender builds its own structures (how long: README, "Side by side with avian2d
-/// and bevy_rapier2d"): a game pays that once, not every tick. The `App`'s construction is untimed, and
-/// one untimed run warms caches and allocators first.
+/// every contender builds its own structures (how long: docs/peers.md): a game pays that
+/// once, not every tick. The `App`'s construction is untimed, and one untimed run warms caches
+/// and allocators first.
 fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, timed: u64, reps: usize) -> f64 {
     let timed = timed.max(1);
     PeerRun::<C>::of(scenario, rate).advance_by(timed + 1);

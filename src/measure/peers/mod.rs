@@ -50,7 +50,7 @@ pub fn headless_app(rate_hz: f64) -> App {
 /// Finishes the app, runs its first update (which only starts the clock and runs `Startup`)
 /// and puts every schedule on the single-threaded executor, so that all contenders pay the
 /// same, smallest, scheduling cost (on two cores the multi-threaded one costs far more for a
-/// scene this small: README, "Benchmarks").
+/// scene this small: docs/benchmarks.md).
 pub fn start(app: &mut App) {
     app.finish();
     app.cleanup();

@@ -13,7 +13,7 @@ use crate::physics::body::BodyState;
 use crate::physics::forces::ForceModel;
 
 /// The settings of `auto`; defaults from the report's engine comparison and stiffness sweep
-/// (see README).
+/// (docs/integrators.md).
 #[derive(Resource, Clone, Copy, Debug, PartialEq)]
 pub struct AutoSettings {
     /// Target error per Taylor step, in world units (px) of corner displacement.

@@ -2,7 +2,7 @@
 //! Wanner's "Solving Ordinary Differential Equations I", and SciPy), with its step-size
 //! control, run inside one fixed step: the best explicit Runge-Kutta candidate for `auto`'s
 //! engine on the stiff pulls, kept for the report's comparison of engines and as a second,
-//! independent reference (README, "Integrators").
+//! independent reference (docs/integrators.md).
 //!
 //! The orientation is carried as a unit vector (cos θ, sin θ), whose rate of change is ω times
 //! its perpendicular, so no stage calls `sin` or `cos`; θ is integrated beside it, so turns are

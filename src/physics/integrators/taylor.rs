@@ -7,7 +7,7 @@
 //! linear in the corner's position, its torque k·(R r) × (a − x) bilinear, the damping linear.
 //! So every Taylor coefficient costs a handful of running products, and a high order lets a
 //! step cover a large share of the band's oscillation and the spin. The report's comparison of
-//! engines (README, "Integrators") measured it against classical RK4 substeps
+//! engines (docs/integrators.md) measured it against classical RK4 substeps
 //! and Dormand and Prince's 8(5,3) pair at the same error on the stiff pulls.
 //!
 //! Everything is counted, nothing timed: the steps taken depend only on the state, the model,

@@ -1,0 +1,124 @@
+//! The way in stays walkable: every relative link in README.md and docs/ points at a file of
+//! the repository that exists, none leaves the repository, and README stays an entrance.
+
+use std::fs;
+use std::path::{Component, Path, PathBuf};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// README.md and every Markdown file under docs/.
+fn pages() -> Vec<PathBuf> {
+    let mut pages = vec![root().join("README.md")];
+    let mut docs: Vec<PathBuf> = fs::read_dir(root().join("docs"))
+        .expect("docs/ exists")
+        .map(|entry| entry.expect("an entry").path())
+        .filter(|path| path.extension().is_some_and(|e| e == "md"))
+        .collect();
+    docs.sort();
+    pages.extend(docs);
+    pages
+}
+
+/// The targets of a page's Markdown links and images: `](target)` and `](target "title")`.
+fn links(text: &str) -> Vec<String> {
+    let mut found = Vec::new();
+    let mut rest = text;
+    while let Some(start) = rest.find("](") {
+        rest = &rest[start + 2..];
+        let end = rest.find(')').unwrap_or(rest.len());
+        let target = rest[..end].split_whitespace().next().unwrap_or("");
+        found.push(target.to_owned());
+        rest = &rest[end..];
+    }
+    found
+}
+
+/// A link's file, if it names one inside the repository: web addresses and in-page anchors
+/// name none. `Err` for a path that climbs out of the repository.
+fn local_file(page: &Path, target: &str) -> Option<Result<PathBuf, String>> {
+    if target.is_empty() || target.starts_with('#') || target.contains("://") {
+        return None;
+    }
+    if target.starts_with("mailto:") {
+        return None;
+    }
+    let path = target.split('#').next().unwrap_or("");
+    let joined = page.parent().unwrap().join(path);
+    // Resolved by hand: the file may not exist, so `canonicalize` cannot be used.
+    let mut resolved = PathBuf::new();
+    for part in joined.components() {
+        match part {
+            Component::ParentDir => {
+                resolved.pop();
+            }
+            Component::CurDir => {}
+            other => resolved.push(other),
+        }
+    }
+    Some(if resolved.starts_with(root()) {
+        Ok(resolved)
+    } else {
+        Err(format!("{target} leaves the repository"))
+    })
+}
+
+#[test]
+fn every_relative_link_points_at_a_file_in_the_repository() {
+    let mut broken = Vec::new();
+    let mut checked = 0;
+    for page in pages() {
+        let text = fs::read_to_string(&page).expect("a page");
+        for target in links(&text) {
+            match local_file(&page, &target) {
+                None => {}
+                Some(Ok(file)) if file.exists() => checked += 1,
+                Some(Ok(_)) => broken.push(format!("{}: {target} does not exist", page.display())),
+                Some(Err(message)) => broken.push(format!("{}: {message}", page.display())),
+            }
+        }
+    }
+    assert!(checked > 20, "the reader found the links ({checked})");
+    assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
+}
+
+#[test]
+fn the_link_reader_sees_a_broken_link_and_one_that_leaves() {
+    let readme = root().join("README.md");
+    let text = "see [a](docs/nowhere.md), [b](../shared/NOTES.md \"t\"), [c](#play), \
+                [d](https://bevyengine.org) and ![e](assets/screenshot.png)";
+    let found = links(text);
+    assert_eq!(
+        found,
+        [
+            "docs/nowhere.md",
+            "../shared/NOTES.md",
+            "#play",
+            "https://bevyengine.org",
+            "assets/screenshot.png"
+        ]
+    );
+    assert!(!local_file(&readme, &found[0]).unwrap().unwrap().exists());
+    assert!(local_file(&readme, &found[1]).unwrap().is_err());
+    assert!(local_file(&readme, &found[2]).is_none());
+    assert!(local_file(&readme, &found[3]).is_none());
+    assert!(local_file(&readme, &found[4]).unwrap().unwrap().exists());
+}
+
+/// README is the entrance: short, with play, test and the controls on its first screen.
+#[test]
+fn readme_is_an_entrance_with_play_test_and_controls_first() {
+    let readme = fs::read_to_string(root().join("README.md")).expect("README.md");
+    let lines: Vec<&str> = readme.lines().collect();
+    assert!(lines.len() <= 250, "README has {} lines", lines.len());
+    let line_of = |needle: &str| lines.iter().position(|line| line.contains(needle));
+    for needle in ["cargo run", "cargo test", "## Controls"] {
+        let at = line_of(needle).unwrap_or_else(|| panic!("README lacks {needle}"));
+        assert!(
+            at < 50,
+            "{needle} is on line {}, past the first screen",
+            at + 1
+        );
+    }
+}
