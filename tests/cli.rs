@@ -110,7 +110,7 @@ fn a_pull_pulls_only_during_its_steps() {
 }
 
 #[test]
-fn bad_arguments_get_a_clear_message_and_a_non_zero_exit() {
+fn bad_arguments_get_a_clear_message_naming_the_flag_and_status_2() {
     let cases: &[(&[&str], &str)] = &[
         (&["--scene", "moon"], "unknown scene 'moon'"),
         (&["--integrator", "rk5"], "unknown integrator 'rk5'"),
@@ -133,10 +133,15 @@ fn bad_arguments_get_a_clear_message_and_a_non_zero_exit() {
     ];
     for (args, message) in cases {
         let output = simulate(args);
-        assert!(!output.status.success(), "{args:?} should fail");
+        // docs/simulate.md: a bad argument exits with status 2 (not 1, nor a panic's 101).
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
         assert!(output.stdout.is_empty(), "{args:?} wrote output");
         let err = stderr(&output);
         assert!(err.contains(message), "{args:?}: {err}");
+        // ... with a message naming it: each case's first word is the flag at fault (clap
+        // writes "invalid value '0' for '--dt <DT>'", or "unexpected argument '--frobnicate'").
+        let flag = args[0];
+        assert!(err.contains(flag), "{args:?}: {flag} not named in {err}");
         assert!(!err.contains("panicked"), "{args:?}: {err}");
     }
 }

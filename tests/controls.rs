@@ -171,6 +171,7 @@ fn readme_the_help_line_and_the_title_name_every_control_as_the_list_does() {
         .expect("README.md");
     let help = help_line();
     let hint = key_hint();
+    let mut control_rows = Vec::new();
     for control in CONTROLS {
         let keys: Vec<String> = control
             .label
@@ -179,10 +180,32 @@ fn readme_the_help_line_and_the_title_name_every_control_as_the_list_does() {
             .collect();
         let row = format!("| {} | {} |", keys.join(" / "), control.effect);
         assert!(readme.contains(&row), "README lacks the row\n{row}");
+        control_rows.push(row);
         let item = format!("{}: {}", control.label, control.name).replace(' ', "\u{a0}");
         assert!(help.contains(&item), "{help}");
         assert!(hint.contains(control.label));
     }
+    // And the other way: every row of README's table is a pointer's or a control's, so a
+    // stale row (a key the game no longer reads) or a duplicate fails.
+    let mut lines = readme
+        .lines()
+        .skip_while(|line| *line != "| input | effect |")
+        .skip(1);
+    assert_eq!(lines.next(), Some("|---|---|"), "README's keys table");
+    let table: Vec<&str> = lines.take_while(|line| !line.trim().is_empty()).collect();
+    let pointer = [
+        "| left mouse button, held |",
+        "| release |",
+        "| one finger (touch screen) |",
+    ];
+    for line in &table {
+        assert!(
+            pointer.iter().any(|row| line.starts_with(row))
+                || control_rows.iter().any(|row| row == line),
+            "README's row is neither a pointer's nor a control's\n{line}"
+        );
+    }
+    assert_eq!(table.len(), pointer.len() + CONTROLS.len(), "{table:#?}");
     let mut game = Game::stepping();
     game.update(1);
     assert_eq!(game.hud(HudLine::Help), help);

@@ -383,9 +383,9 @@ fn the_default_integrator_never_diverges_on_a_hard_case() {
     let default = Integrator::default();
     for case in hard_cases(true) {
         let mut run = Run::of(&case.scenario, default, 1.0 / case.rate).unwrap();
+        // `Ok` is the check: every step taken, every state sane and within the energy bound.
         run.advance_by(case.steps)
             .unwrap_or_else(|d| panic!("{}: {d}", case.name));
-        assert!(run.stepper.state.is_finite());
     }
 }
 
@@ -395,14 +395,12 @@ fn every_integrator_stays_bounded_or_reports_its_divergence() {
     for case in hard_cases(true) {
         for integrator in Integrator::ALL {
             let mut run = Run::of(&case.scenario, integrator, 1.0 / case.rate).unwrap();
-            match run.advance_by(case.steps) {
-                Ok(()) => assert_eq!(run.step, case.steps, "{} {integrator}", case.name),
-                Err(d) => {
-                    // Reported at the step refused; the run stays at the last sane state.
-                    assert_eq!((d.integrator, d.step), (integrator, run.step + 1));
-                    assert!(run.stepper.state.is_sane(), "{} {integrator}", case.name);
-                    diverged.push((case.name.clone(), integrator));
-                }
+            // `Ok` needs no check: it already means every step was taken, every state sane.
+            if let Err(d) = run.advance_by(case.steps) {
+                // Reported at the step refused; the run stays at the last sane state.
+                assert_eq!((d.integrator, d.step), (integrator, run.step + 1));
+                assert!(run.stepper.state.is_sane(), "{} {integrator}", case.name);
+                diverged.push((case.name.clone(), integrator));
             }
         }
     }
@@ -554,7 +552,9 @@ fn auto_takes_more_substeps_for_a_stiffer_band_and_falls_back_beyond_its_budget(
     scenario.params.stiffness = 1e9;
     let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / 64.0).unwrap();
     run.advance_by(640).unwrap();
-    assert!(run.fallbacks > 0 && run.fallbacks <= 640);
+    // Every step: the band is held throughout and its rate, 2 sqrt(k/m) = 28284/s, needs
+    // about 28284 / 64 / 0.3 = 1474 Taylor steps a fixed step, past the budget of 200.
+    assert_eq!(run.fallbacks, 640);
 }
 
 /// `auto`'s engine with one Taylor step of order `order` per fixed step: a tolerance nothing
@@ -862,10 +862,27 @@ fn every_integrator_converges_at_its_order_on_the_cases_with_spin() {
 
 #[test]
 fn the_switch_cycles_the_table_in_order_and_autos_order_is_its_series() {
-    let all = Integrator::ALL;
-    for (i, integrator) in all.into_iter().enumerate() {
-        assert_eq!(integrator.next(), all[(i + 1) % all.len()]);
+    // The order written out (docs/integrators.md's table), not recomputed from `ALL`: a
+    // reordered table, a skipped entry or a wrong wrap from the last to the first fails.
+    let mut integrator = Integrator::Euler;
+    let mut names = Vec::new();
+    for _ in 0..8 {
+        integrator = integrator.next();
+        names.push(integrator.name());
     }
+    assert_eq!(
+        names,
+        [
+            "symplectic",
+            "verlet",
+            "rk4",
+            "implicit",
+            "seed",
+            "auto",
+            "euler",
+            "symplectic"
+        ]
+    );
     assert_eq!(
         Integrator::Auto.order() as usize,
         AutoSettings::default().order
@@ -873,9 +890,9 @@ fn the_switch_cycles_the_table_in_order_and_autos_order_is_its_series() {
 }
 
 /// Each fixed-step method counts the force evaluations of its step (the work the report
-/// compares), and `step` is `step_with` under `auto`'s default settings.
+/// compares), and every method moves the pulled box.
 #[test]
-fn each_step_counts_its_force_evaluations_and_step_uses_autos_defaults() {
+fn each_step_counts_its_force_evaluations_and_moves_the_box() {
     let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
     stepper.grab(TUTORIAL_PULL_TARGET);
     let model = stepper.model();
@@ -896,17 +913,10 @@ fn each_step_counts_its_force_evaluations_and_step_uses_autos_defaults() {
             "{integrator}"
         );
     }
+    // (No check that `step` equals `step_with` under the defaults: it is that very call.)
     for integrator in Integrator::ALL {
-        let (mut stepped, mut stepped_with) = (stepper.state, stepper.state);
-        let info = integrator.step(&mut stepped, &model, start, 0.01);
-        let info_with = integrator.step_with(
-            &mut stepped_with,
-            &model,
-            start,
-            0.01,
-            &AutoSettings::default(),
-        );
-        assert_eq!((info, stepped), (info_with, stepped_with), "{integrator}");
+        let mut stepped = stepper.state;
+        integrator.step(&mut stepped, &model, start, 0.01);
         assert_ne!(stepped, stepper.state, "{integrator} moved the box");
     }
 }

@@ -683,5 +683,8 @@ fn the_cross_platform_fixture_is_its_script_stepped_here() {
         on_disk, replay,
         "regenerate the fixture if the change is meant"
     );
+    // Not an independent check: the file is this crate's own output (a golden file), so the
+    // hash agrees by construction. The independent check is the browser's: the wasm build
+    // steps this fixture in the page and must reach this hash (.ci/web/browser-test.mjs).
     assert_eq!(on_disk.hash, replayed(&on_disk).1);
 }

@@ -497,13 +497,19 @@ fn a_step_rate_the_clock_cannot_hold_is_refused_without_a_panic() {
     for rate in [1e300, f64::NAN, -5.0, 0.0] {
         let mut app = App::new();
         app.add_plugins((MinimalPlugins, SimulationPlugin))
-            .insert_resource(SceneParams {
-                step_rate_hz: rate,
-                ..SceneParams::tutorial()
-            });
+            .insert_resource(SceneParams::tutorial());
+        app.update();
+        // A good rate first (100 Hz), so "kept" is a step Bevy's 64 Hz default could not fake.
+        let step = app.world().resource::<Time<Fixed>>().timestep();
+        assert_eq!(step, Duration::from_millis(10), "the good rate first");
+        app.world_mut().resource_mut::<SceneParams>().step_rate_hz = rate;
         app.update();
         let step = app.world().resource::<Time<Fixed>>().timestep();
-        assert!(!step.is_zero(), "{rate}");
+        assert_eq!(
+            step,
+            Duration::from_millis(10),
+            "{rate} Hz must leave the step at 10 ms"
+        );
     }
 }
 
