@@ -1,0 +1,277 @@
+//! The drawing, headless: the screen's plugins run without a window (Bevy's gizmos and assets
+//! need none), and after each frame the test reads what the gizmos drew from the frame's gizmo
+//! asset: the box's outline where the box is, the band from the pointer to the pulled corner
+//! in the colour its stretch gives, the ghosts' outlines in their colours, the vectors and the
+//! trail only when they are on.
+
+mod common;
+
+use std::any::TypeId;
+use std::time::Duration;
+
+use bevy::color::LinearRgba;
+use bevy::gizmos::config::DefaultGizmoConfigGroup;
+use bevy::gizmos::{GizmoAsset, GizmoHandles};
+use common::*;
+use rubber_band_box::game::ghosts::GhostKind;
+use rubber_band_box::game::screen::draw::{BOX_OUTLINE, DrawPlugin, PIN_FILL};
+use rubber_band_box::game::screen::graph::EnergyGraphPlugin;
+use rubber_band_box::game::screen::view::ViewPlugin;
+
+/// The headless game with the screen's plugins. The view's own camera has no renderer to
+/// compute its projection, so it goes: the test's camera (as bevy_render would compute it)
+/// maps the pointer.
+fn screen_game() -> Game {
+    let mut game = Game::with(Duration::from_millis(10), |app| {
+        // What the renderer would bring: the assets the gizmos' mesh bounds read.
+        app.add_plugins(bevy::asset::AssetPlugin::default())
+            .init_asset::<Mesh>()
+            .init_asset::<bevy::mesh::skinning::SkinnedMeshInverseBindposes>();
+        app.add_plugins((
+            bevy::gizmos::GizmoPlugin,
+            ViewPlugin,
+            DrawPlugin,
+            EnergyGraphPlugin,
+        ));
+    });
+    let world = game.world();
+    let views: Vec<Entity> = world
+        .query::<(Entity, &Name)>()
+        .iter(world)
+        .filter(|(_, name)| name.as_str() == "Camera")
+        .map(|(entity, _)| entity)
+        .collect();
+    assert_eq!(views.len(), 1, "the view's camera");
+    world.despawn(views[0]);
+    game
+}
+
+/// One thing drawn: a segment, or a strip (a loop repeats its first two points at its end,
+/// for the joints), with its first point's colour.
+#[derive(Debug, Clone)]
+struct Drawn {
+    points: Vec<Vec2>,
+    colour: LinearRgba,
+    closed: bool,
+}
+
+/// What the gizmos drew in the last frame.
+fn drawn(game: &mut Game) -> Vec<Drawn> {
+    let world = game.world();
+    let handle = world.resource::<GizmoHandles>().handles()
+        [&TypeId::of::<DefaultGizmoConfigGroup>()]
+        .clone();
+    let Some(handle) = handle else {
+        return Vec::new();
+    };
+    let buffer = world
+        .resource::<Assets<GizmoAsset>>()
+        .get(&handle)
+        .expect("the frame's gizmos")
+        .buffer();
+    let mut found: Vec<Drawn> = buffer
+        .list_positions
+        .chunks(2)
+        .zip(buffer.list_colors.chunks(2))
+        .map(|(ends, colours)| Drawn {
+            points: ends.iter().map(|p| p.truncate()).collect(),
+            colour: colours[0],
+            closed: false,
+        })
+        .collect();
+    let mut strip: Vec<(Vec2, LinearRgba)> = Vec::new();
+    for (position, colour) in buffer.strip_positions.iter().zip(&buffer.strip_colors) {
+        if position.is_nan() {
+            if let Some(&(first, colour)) = strip.first() {
+                let mut points: Vec<Vec2> = strip.iter().map(|(p, _)| *p).collect();
+                let n = points.len();
+                let closed = n > 4 && points[n - 2] == first && points[n - 1] == points[1];
+                if closed {
+                    points.truncate(n - 2);
+                }
+                found.push(Drawn {
+                    points,
+                    colour,
+                    closed,
+                });
+            }
+            strip.clear();
+        } else {
+            strip.push((position.truncate(), *colour));
+        }
+    }
+    found
+}
+
+fn close(a: Vec2, b: Vec2) -> bool {
+    a.distance(b) < 1e-3
+}
+
+fn same_colour(a: LinearRgba, b: impl Into<LinearRgba>) -> bool {
+    let b = b.into();
+    (a.red - b.red).abs() < 1e-4
+        && (a.green - b.green).abs() < 1e-4
+        && (a.blue - b.blue).abs() < 1e-4
+}
+
+/// The outlines (closed loops of four corners) drawn in `colour`.
+fn outlines(drawn: &[Drawn], colour: impl Into<LinearRgba> + Copy) -> Vec<Vec<Vec2>> {
+    drawn
+        .iter()
+        .filter(|d| d.closed && d.points.len() == 4 && same_colour(d.colour, colour))
+        .map(|d| d.points.clone())
+        .collect()
+}
+
+/// A square's centre and side from its four corners, in order around it.
+fn square(corners: &[Vec2]) -> (Vec2, [f32; 4]) {
+    let centre = corners.iter().copied().sum::<Vec2>() / 4.0;
+    let sides = [0, 1, 2, 3].map(|i| corners[i].distance(corners[(i + 1) % 4]));
+    (centre, sides)
+}
+
+#[test]
+fn the_box_is_outlined_where_it_is_and_the_band_runs_from_the_pointer_to_its_corner() {
+    let mut game = screen_game();
+    game.update(1);
+    // At rest: one white square of 60 px around the origin (the scene's border is grey).
+    let box_outlines = outlines(&drawn(&mut game), BOX_OUTLINE);
+    assert_eq!(box_outlines.len(), 1, "{box_outlines:?}");
+    let (centre, sides) = square(&box_outlines[0]);
+    assert!(close(centre, Vec2::ZERO), "{centre}");
+    assert!(sides.iter().all(|s| (s - 60.0).abs() < 1e-3), "{sides:?}");
+
+    // Pulled: the outline follows the box, the band joins the anchor to a corner of it.
+    let anchor = DVec2::new(200.0, 120.0);
+    game.press_at(anchor);
+    game.update(20);
+    let (linear, _) = game.state();
+    let drawn_now = drawn(&mut game);
+    let box_outlines = outlines(&drawn_now, BOX_OUTLINE);
+    assert_eq!(box_outlines.len(), 1);
+    let (centre, _) = square(&box_outlines[0]);
+    assert!(centre.x > 1.0, "the box moved toward the anchor: {centre}");
+    // Drawn between the last two steps: within one step's travel of the box.
+    let travel = (linear.velocity.length() * 0.01) as f32 + 1e-3;
+    assert!(
+        centre.distance(linear.position.as_vec2()) <= travel,
+        "{centre} {linear:?}"
+    );
+    let bands: Vec<&Drawn> = drawn_now
+        .iter()
+        .filter(|d| {
+            !d.closed && d.points.len() == 2 && d.colour.red == 1.0 && d.colour.green == 0.0
+        })
+        .collect();
+    assert_eq!(bands.len(), 1, "one band: {bands:?}");
+    let band = bands[0];
+    let (corner, pointer) = (band.points[0], band.points[1]);
+    assert!(close(pointer, anchor.as_vec2()), "{pointer}");
+    assert!(
+        box_outlines[0].iter().any(|&c| close(c, corner)),
+        "the band ends at a corner of the outline: {corner} {:?}",
+        box_outlines[0]
+    );
+    // Red when slack, toward magenta as it stretches (in sRGB): fully magenta at 510 px.
+    let stretch = corner.distance(pointer);
+    let blue = Srgba::from(band.colour).blue;
+    assert!(
+        (blue - (stretch / 510.0).min(1.0)).abs() < 1e-3,
+        "blue {blue} at a stretch of {stretch} px"
+    );
+}
+
+#[test]
+fn a_band_stretched_past_510_px_is_fully_magenta() {
+    let mut game = screen_game();
+    // A wide window shows the world far beyond the scene: room for a long band.
+    game.resize(UVec2::new(2400, 720));
+    game.update(1);
+    // 1.5 window px a world px (the scene's 480 in 720), the origin at the window's centre:
+    // world (-700, 0), 670 px from the nearest corner.
+    game.cursor(Some(Vec2::new(1200.0 - 700.0 * 1.5, 360.0)));
+    game.mouse(ButtonState::Pressed);
+    game.update(1);
+    let bands: Vec<Drawn> = drawn(&mut game)
+        .into_iter()
+        .filter(|d| {
+            !d.closed && d.points.len() == 2 && d.colour.red == 1.0 && d.colour.green == 0.0
+        })
+        .collect();
+    assert_eq!(bands.len(), 1);
+    assert_eq!(bands[0].colour.blue, 1.0);
+    // Released: no band drawn.
+    game.mouse(ButtonState::Released);
+    game.update(2);
+    let left = drawn(&mut game)
+        .into_iter()
+        .filter(|d| {
+            !d.closed && d.points.len() == 2 && d.colour.red == 1.0 && d.colour.green == 0.0
+        })
+        .count();
+    assert_eq!(left, 0);
+}
+
+#[test]
+fn the_ghosts_are_outlined_in_their_colours_but_the_live_integrators() {
+    let mut game = screen_game();
+    game.update(1);
+    game.tap_key(KeyCode::KeyG);
+    game.press_at(DVec2::new(200.0, 120.0));
+    game.update(10);
+    let drawn_now = drawn(&mut game);
+    let live = *game.world().resource::<Integrator>();
+    for integrator in Integrator::ALL {
+        let colour = GhostKind::Method(integrator).colour();
+        let count = outlines(&drawn_now, colour).len();
+        let expected = usize::from(integrator != live);
+        assert_eq!(count, expected, "{integrator}'s ghost (live: {live})");
+    }
+    // The reference is white, as the box: the box and the reference's ghost.
+    assert_eq!(outlines(&drawn_now, BOX_OUTLINE).len(), 2);
+    // Off again: only the box.
+    game.tap_key(KeyCode::KeyG);
+    game.update(1);
+    assert_eq!(outlines(&drawn(&mut game), BOX_OUTLINE).len(), 1);
+}
+
+#[test]
+fn the_vectors_and_the_trail_are_drawn_only_when_on() {
+    let velocity = LinearRgba::from(Color::srgb(0.3, 0.9, 0.4));
+    let force = LinearRgba::from(Color::srgb(1.0, 0.55, 0.1));
+    let count = |drawn: &[Drawn], colour: LinearRgba| {
+        drawn
+            .iter()
+            .filter(|d| same_colour(d.colour, colour))
+            .count()
+    };
+    // The trail fades in from transparent (the energy graph's total is the same yellow,
+    // opaque).
+    let pin = LinearRgba::from(PIN_FILL);
+    let trails = |drawn: &[Drawn]| -> Vec<Drawn> {
+        drawn
+            .iter()
+            .filter(|d| !d.closed && same_colour(d.colour, pin) && d.colour.alpha == 0.0)
+            .cloned()
+            .collect()
+    };
+    let mut game = screen_game();
+    game.update(1);
+    game.press_at(DVec2::new(200.0, 120.0));
+    game.update(5);
+    let before = drawn(&mut game);
+    assert_eq!(count(&before, velocity) + count(&before, force), 0);
+    assert!(trails(&before).is_empty());
+
+    game.tap_key(KeyCode::KeyV);
+    game.tap_key(KeyCode::KeyT);
+    game.update(10);
+    let after = drawn(&mut game);
+    // An arrow is a shaft and two head lines.
+    assert!(count(&after, velocity) >= 3, "the velocity arrow");
+    assert!(count(&after, force) >= 3, "the force arrow");
+    // The trail: a point a frame since it was switched on.
+    let trail = trails(&after);
+    assert_eq!(trail.len(), 1, "{trail:?}");
+    assert!(trail[0].points.len() >= 9, "{}", trail[0].points.len());
+}
