@@ -223,7 +223,11 @@ pub mod sigterm {
             warn!("cannot handle SIGTERM: the recording is saved on Ctrl-C or closing only");
             return;
         }
-        app.add_systems(Update, write_exit);
+        // Both only ask to exit: in either order the game ends the same way.
+        app.add_systems(
+            Update,
+            write_exit.ambiguous_with(bevy::app::TerminalCtrlCHandlerPlugin::exit_on_flag),
+        );
     }
 
     fn write_exit(mut exits: MessageWriter<AppExit>) {
