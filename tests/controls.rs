@@ -4,10 +4,10 @@ mod common;
 
 use common::*;
 use rubber_band_box::game::input::controls::{
-    CONTROLS, FASTER, FEWER_STEPS, MORE_STEPS, PAUSE, RESET, SINGLE_STEP, SLOWER, SOFTER, STIFFER,
-    TRAIL, VECTORS, help_line, key_hint,
+    CONTROLS, FASTER, FEWER_STEPS, MORE_STEPS, OPEN, PAUSE, RESET, SINGLE_STEP, SLOWER, SOFTER,
+    STIFFER, TRAIL, VECTORS, help_line, key_hint,
 };
-use rubber_band_box::game::shared::Overlays;
+use rubber_band_box::game::shared::{Overlays, StatusMessage};
 
 #[test]
 fn pause_stops_the_fixed_steps_and_resume_continues() {
@@ -242,4 +242,19 @@ fn k_and_the_time_scale_stop_at_their_lower_ends_and_climb_back() {
         game.update(1);
     }
     assert_eq!(speed(&mut game), 16.0);
+}
+
+/// O on the desktop: a replay is opened by dropping it on the window, and the status line
+/// says so (in the browser O opens a file chooser; the browser test clicks it). Dropping one
+/// is `tests/replay.rs`'s.
+#[test]
+fn the_open_key_says_how_to_open_a_replay() {
+    let mut game = Game::stepping();
+    assert_eq!(game.world().resource::<StatusMessage>().0, None);
+    game.tap_key(OPEN);
+    game.update(1);
+    assert_eq!(
+        game.world().resource::<StatusMessage>().0.as_deref(),
+        Some("drop a replay file on the window to play it")
+    );
 }

@@ -275,3 +275,23 @@ fn the_vectors_and_the_trail_are_drawn_only_when_on() {
     assert_eq!(trail.len(), 1, "{trail:?}");
     assert!(trail[0].points.len() >= 9, "{}", trail[0].points.len());
 }
+
+/// On a phone the HUD and the panel shrink with the window, to 0.6 at the least; at the
+/// game's own size and above they are at 1.
+#[test]
+fn the_ui_scales_down_with_a_small_window_to_no_less_than_0_6() {
+    use rubber_band_box::game::screen::view::ui_scale_for;
+    assert_eq!(ui_scale_for(Vec2::new(960.0, 720.0)), 1.0);
+    assert_eq!(ui_scale_for(Vec2::new(1920.0, 1080.0)), 1.0);
+    assert_eq!(ui_scale_for(Vec2::new(720.0, 720.0)), 0.75);
+    assert_eq!(ui_scale_for(Vec2::new(390.0, 844.0)), 0.6);
+    let mut game = screen_game();
+    game.update(1);
+    assert_eq!(game.world().resource::<UiScale>().0, 1.0);
+    game.resize(UVec2::new(390, 844));
+    game.update(1);
+    assert_eq!(game.world().resource::<UiScale>().0, 0.6);
+    game.resize(UVec2::new(720, 540));
+    game.update(1);
+    assert_eq!(game.world().resource::<UiScale>().0, 0.75);
+}

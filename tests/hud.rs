@@ -239,3 +239,40 @@ fn the_energy_panel_is_live_while_paused() {
     };
     assert!(value(&after) > value(&before), "{before} -> {after}");
 }
+
+/// The energy lines each say their own reading: the heading, both kinetic parts, the band, the
+/// total, and the ledger's work in and damping out.
+#[test]
+fn each_energy_line_says_its_own_reading() {
+    let mut r = readings();
+    r.ledger = EnergyLedger {
+        work_in: 12.5,
+        dissipated: 0.25,
+        ..EnergyLedger::starting_at(0.0)
+    };
+    assert_eq!(HudLine::EnergyHeading.text(&r), "energy (mass px^2/s^2)");
+    assert_eq!(
+        HudLine::KineticLinear.text(&r),
+        "  kinetic, linear           1.00"
+    );
+    assert_eq!(
+        HudLine::KineticRotational.text(&r),
+        "  kinetic, rotation         2.00"
+    );
+    assert_eq!(
+        HudLine::BandPotential.text(&r),
+        "  band potential            3.00"
+    );
+    assert_eq!(HudLine::Total.text(&r), "  total                     6.00");
+    assert_eq!(
+        HudLine::Ledger.text(&r),
+        "  hand's work in 12.50  damping out 0.25"
+    );
+    // Beyond two decimals' reach, in powers of ten.
+    r.energies.rotational = 3.5e9;
+    assert!(
+        HudLine::KineticRotational.text(&r).ends_with("3.500e9"),
+        "{}",
+        HudLine::KineticRotational.text(&r)
+    );
+}

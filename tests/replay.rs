@@ -688,3 +688,34 @@ fn the_cross_platform_fixture_is_its_script_stepped_here() {
     // steps this fixture in the page and must reach this hash (.ci/web/browser-test.mjs).
     assert_eq!(on_disk.hash, replayed(&on_disk).1);
 }
+
+/// A recording stops at `MAX_STEPS` (8 hours at 100 Hz): the game goes on, the recording keeps
+/// what it has.
+#[test]
+fn a_recording_stops_at_its_step_cap_and_the_game_goes_on() {
+    use rubber_band_box::game::replays::recording::Recorder;
+    use rubber_band_box::replay::MAX_STEPS;
+    let mut game = Game::stepping();
+    game.update(3);
+    // Three steps short of the cap (a replay counts its steps; the records are not needed).
+    let recorded = {
+        let mut recorder = game.world().resource_mut::<Recorder>();
+        let replay = recorder
+            .replay
+            .as_mut()
+            .expect("recording from the first step");
+        replay.steps = MAX_STEPS - 3;
+        replay.records.len()
+    };
+    let steps = game.steps();
+    game.update(10);
+    assert_eq!(game.steps(), steps + 10, "the game goes on");
+    let recorder = game.world().resource::<Recorder>();
+    let replay = recorder.replay.as_ref().unwrap();
+    assert_eq!(replay.steps, MAX_STEPS);
+    assert_eq!(
+        replay.records.len(),
+        recorded + 3,
+        "three steps more, then none"
+    );
+}
