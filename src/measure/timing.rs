@@ -1,4 +1,5 @@
-//! Wall-clock measurement for the report and the side-by-side: medians of repeated runs.
+//! Wall-clock measurement for the report and the side-by-side: medians of repeated runs, and
+//! the spread of a ratio measured over interleaved rounds.
 
 use std::time::Instant;
 
@@ -19,4 +20,39 @@ pub fn median_ns(reps: usize, mut work: impl FnMut()) -> f64 {
             })
             .collect(),
     )
+}
+
+/// The median of values and the quartiles around it: how far apart runs of one measurement
+/// lie.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Spread {
+    pub median: f64,
+    /// The first and third quartiles.
+    pub q1: f64,
+    pub q3: f64,
+}
+
+impl Spread {
+    /// The median and quartiles of `values` (nearest rank); NaN for none.
+    pub fn of(mut values: Vec<f64>) -> Self {
+        if values.is_empty() {
+            return Self {
+                median: f64::NAN,
+                q1: f64::NAN,
+                q3: f64::NAN,
+            };
+        }
+        values.sort_by(f64::total_cmp);
+        let at = |fraction: f64| values[((values.len() - 1) as f64 * fraction).round() as usize];
+        Self {
+            median: at(0.5),
+            q1: at(0.25),
+            q3: at(0.75),
+        }
+    }
+
+    /// "1.02 (0.98-1.05)": the median and, in brackets, the interquartile range.
+    pub fn describe(&self) -> String {
+        format!("{:.2} ({:.2}-{:.2})", self.median, self.q1, self.q3)
+    }
 }

@@ -1,5 +1,11 @@
 //! The side-by-side measurement: every contender on the same scripted pulls, in one process,
 //! each tick a full headless `App` update on the single-threaded executor.
+//!
+//! The contenders are timed interleaved, in rounds (ours, avian2d, bevy_rapier2d, then ours
+//! again...), each round on fresh state, and a ratio is taken within each round: whatever
+//! slows the machine for a while slows every contender of a round alike, so the median of the
+//! rounds' ratios holds still where the ratio of separately timed medians moved by up to 2x
+//! from one run to the next (docs/peers.md).
 
 use std::time::{Duration, Instant};
 
@@ -8,7 +14,7 @@ use super::ours::Ours;
 use super::rapier::Rapier;
 use super::{Contender, PeerRun, headless_app, start};
 use crate::measure::references::{StiffCase, WorkScene, work_reference, work_scenes};
-use crate::measure::timing::median;
+use crate::measure::timing::{Spread, median};
 use crate::physics::{BodyState, Scenario};
 
 /// The contenders' names, ours first (the ratios are to ours).
@@ -17,9 +23,9 @@ pub const NAMES: [&str; 3] = [Ours::NAME, Avian::NAME, Rapier::NAME];
 /// The rates of the comparison: Bevy's default fixed rate and the tutorial's.
 pub const RATES: [f64; 2] = [64.0, 100.0];
 
-/// Timed repetitions: the median is reported.
-fn reps(quick: bool) -> usize {
-    if quick { 1 } else { 5 }
+/// Interleaved rounds: the medians and the spread of the ratios are over these.
+fn rounds(quick: bool) -> usize {
+    if quick { 1 } else { 21 }
 }
 
 /// One contender on one scene at one rate.
@@ -34,9 +40,11 @@ pub struct PeerPoint {
     pub error: Option<f64>,
     /// Largest |E − E0| / E0 over the run, on scenes where energy is an invariant.
     pub energy_drift: Option<f64>,
-    /// Wall time of one `App` update (one fixed step), in ns: the median over repetitions of
-    /// the mean over the scored ticks but the first.
+    /// Wall time of one `App` update (one fixed step), in ns: the median over rounds of the
+    /// mean over the scored ticks but the first.
     pub ns_per_tick: f64,
+    /// This contender's tick over ours, round by round (1 for ours).
+    pub tick_over_ours: Spread,
 }
 
 /// How a scripted run ended: its final state, the largest relative change of the energy, and
@@ -77,29 +85,40 @@ fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> Accurac
 /// this many of its ticks have been timed.
 const TIMED_TICKS: u64 = 100;
 
-/// The time per tick over `timed` ticks of fresh runs after each run's first tick, where
-/// every contender builds its own structures (how long: docs/peers.md): a game pays that
-/// once, not every tick. The `App`'s construction is untimed, and one untimed run warms caches
-/// and allocators first.
-fn ns_per_tick<C: Contender>(scenario: &Scenario, rate: f64, timed: u64, reps: usize) -> f64 {
-    let timed = timed.max(1);
-    PeerRun::<C>::of(scenario, rate).advance_by(timed + 1);
+/// One round's time per tick of contender `C` over `timed` ticks of fresh runs after each
+/// run's first tick, where every contender builds its own structures (how long:
+/// docs/peers.md): a game pays that once, not every tick. The `App`'s construction is untimed.
+fn round_ns<C: Contender>(scenario: &Scenario, rate: f64, timed: u64) -> f64 {
     let runs = TIMED_TICKS.div_ceil(timed);
-    let times = (0..reps)
-        .map(|_| {
-            let mut total = Duration::ZERO;
-            for _ in 0..runs {
-                let mut run = PeerRun::<C>::of(scenario, rate);
-                run.advance();
-                let start = Instant::now();
-                run.advance_by(timed);
-                total += start.elapsed();
-                std::hint::black_box(run.state());
-            }
-            total.as_nanos() as f64 / (runs * timed) as f64
-        })
-        .collect();
-    median(times)
+    let mut total = Duration::ZERO;
+    for _ in 0..runs {
+        let mut run = PeerRun::<C>::of(scenario, rate);
+        run.advance();
+        let start = Instant::now();
+        run.advance_by(timed);
+        total += start.elapsed();
+        std::hint::black_box(run.state());
+    }
+    total.as_nanos() as f64 / (runs * timed) as f64
+}
+
+/// Each contender's time per tick in each of `rounds` interleaved rounds, ours first, after
+/// one untimed run of each that warms caches and allocators.
+fn interleaved(scenario: &Scenario, rate: f64, timed: u64, rounds: usize) -> Vec<[f64; 3]> {
+    let timed = timed.max(1);
+    let timers: [fn(&Scenario, f64, u64) -> f64; 3] =
+        [round_ns::<Ours>, round_ns::<Avian>, round_ns::<Rapier>];
+    for timer in timers {
+        timer(scenario, rate, timed);
+    }
+    (0..rounds)
+        .map(|_| timers.map(|timer| timer(scenario, rate, timed)))
+        .collect()
+}
+
+/// The median time per tick of contender `index` over the rounds.
+fn median_of(rounds: &[[f64; 3]], index: usize) -> f64 {
+    median(rounds.iter().map(|round| round[index]).collect())
 }
 
 /// `scenario` with every pull one fixed step later: the box rests through the first tick (the
@@ -117,7 +136,8 @@ fn point<C: Contender>(
     scene: &WorkScene,
     rate: f64,
     reference: &BodyState,
-    reps: usize,
+    rounds: &[[f64; 3]],
+    index: usize,
 ) -> PeerPoint {
     let scenario = &scene.scenario;
     let steps = (scene.horizon * rate).round() as u64;
@@ -132,21 +152,23 @@ fn point<C: Contender>(
             .is_finite()
             .then(|| state.pose_error(reference, &mass)),
         energy_drift: drift.filter(|_| scene.energy_invariant),
-        ns_per_tick: ns_per_tick::<C>(scenario, rate, steps.saturating_sub(1), reps),
+        ns_per_tick: median_of(rounds, index),
+        tick_over_ours: Spread::of(rounds.iter().map(|r| r[index] / r[0]).collect()),
     }
 }
 
 /// Every contender on every scene of the work-precision sweep, at 64 and 100 Hz.
 pub fn side_by_side(quick: bool) -> Vec<PeerPoint> {
-    let reps = reps(quick);
+    let rounds = rounds(quick);
     let mut points = Vec::new();
     for scene in work_scenes() {
         for rate in RATES {
             let steps = (scene.horizon * rate).round() as u64;
             let reference = work_reference(&scene, steps as f64 / rate);
-            points.push(point::<Ours>(&scene, rate, &reference, reps));
-            points.push(point::<Avian>(&scene, rate, &reference, reps));
-            points.push(point::<Rapier>(&scene, rate, &reference, reps));
+            let times = interleaved(&scene.scenario, rate, steps.saturating_sub(1), rounds);
+            points.push(point::<Ours>(&scene, rate, &reference, &times, 0));
+            points.push(point::<Avian>(&scene, rate, &reference, &times, 1));
+            points.push(point::<Rapier>(&scene, rate, &reference, &times, 2));
         }
     }
     points
@@ -166,9 +188,17 @@ pub struct PeerStiffPoint {
     pub energy_growth: Option<f64>,
     /// Whether every state of the run stayed finite.
     pub bounded: bool,
+    /// Our tick over the faster peer's in the same round, round by round (the same for every
+    /// contender of a case).
+    pub ours_over_fastest_peer: Spread,
 }
 
-fn stiff_point<C: Contender>(case: &StiffCase, reps: usize) -> PeerStiffPoint {
+fn stiff_point<C: Contender>(
+    case: &StiffCase,
+    rounds: &[[f64; 3]],
+    index: usize,
+    ours_over_fastest_peer: Spread,
+) -> PeerStiffPoint {
     let Accuracy { state, growth, .. } = accuracy::<C>(&case.scenario, case.rate, case.ticks);
     let mass = case.scenario.params.mass_properties().expect("valid");
     let bounded = state.is_finite() && growth.is_none_or(f64::is_finite);
@@ -176,33 +206,32 @@ fn stiff_point<C: Contender>(case: &StiffCase, reps: usize) -> PeerStiffPoint {
         contender: C::NAME,
         k: case.k,
         rate: case.rate,
-        // Short horizons (one or two ticks at k = 1e7) leave no tick to time after the first:
-        // time the case's own ticks one tick later instead.
-        ns_per_tick: ns_per_tick::<C>(
-            &one_tick_later(&case.scenario, case.rate),
-            case.rate,
-            case.ticks,
-            reps,
-        ),
+        ns_per_tick: median_of(rounds, index),
         error: case
             .reference
             .filter(|_| bounded)
             .map(|r| state.pose_error(&r.state, &mass)),
         energy_growth: growth.filter(|_| case.reference.is_none() && bounded),
         bounded,
+        ours_over_fastest_peer,
     }
 }
 
 /// The contenders across the stiffness sweep's cases.
 pub fn stiffness(cases: &[StiffCase], quick: bool) -> Vec<PeerStiffPoint> {
-    let reps = reps(quick);
+    let rounds = rounds(quick);
     cases
         .iter()
         .flat_map(|case| {
+            // Short horizons (one or two ticks at k = 1e7) leave no tick to time after the
+            // first: time the case's own ticks one tick later instead.
+            let later = one_tick_later(&case.scenario, case.rate);
+            let times = interleaved(&later, case.rate, case.ticks, rounds);
+            let ratio = Spread::of(times.iter().map(|r| r[0] / r[1].min(r[2])).collect());
             [
-                stiff_point::<Ours>(case, reps),
-                stiff_point::<Avian>(case, reps),
-                stiff_point::<Rapier>(case, reps),
+                stiff_point::<Ours>(case, &times, 0, ratio),
+                stiff_point::<Avian>(case, &times, 1, ratio),
+                stiff_point::<Rapier>(case, &times, 2, ratio),
             ]
         })
         .collect()
@@ -210,18 +239,36 @@ pub fn stiffness(cases: &[StiffCase], quick: bool) -> Vec<PeerStiffPoint> {
 
 /// The floor under every contender's tick: an `App` with the same plugins and clock as theirs
 /// but no physics at all, timed as they are.
-pub fn empty_app_ns_per_tick(rate: f64, quick: bool) -> f64 {
-    let times = (0..reps(quick))
-        .map(|_| {
-            let mut app = headless_app(rate);
-            start(&mut app);
-            app.update();
-            let begin = Instant::now();
-            for _ in 0..TIMED_TICKS {
-                app.update();
-            }
-            begin.elapsed().as_nanos() as f64 / TIMED_TICKS as f64
-        })
+fn empty_app_round_ns(rate: f64) -> f64 {
+    let mut app = headless_app(rate);
+    start(&mut app);
+    app.update();
+    let begin = Instant::now();
+    for _ in 0..TIMED_TICKS {
+        app.update();
+    }
+    begin.elapsed().as_nanos() as f64 / TIMED_TICKS as f64
+}
+
+/// Our plugin's own cost: the tutorial scene's tick against an empty `App`'s, interleaved in
+/// rounds. The empty `App`'s median tick, and the ratio's spread.
+pub fn tutorial_over_empty_app(rate: f64, quick: bool) -> (f64, Spread) {
+    // The work scene's tutorial: its pull and release, ticks timed as in the side-by-side.
+    let scene = work_scenes()
+        .into_iter()
+        .find(|scene| scene.scenario.name == "tutorial")
+        .expect("the tutorial is a work scene");
+    let timed = ((scene.horizon * rate).round() as u64)
+        .saturating_sub(1)
+        .max(1);
+    let tick = || round_ns::<Ours>(&scene.scenario, rate, timed);
+    tick();
+    empty_app_round_ns(rate);
+    let rounds: Vec<[f64; 2]> = (0..rounds(quick))
+        .map(|_| [empty_app_round_ns(rate), tick()])
         .collect();
-    median(times)
+    (
+        median(rounds.iter().map(|r| r[0]).collect()),
+        Spread::of(rounds.iter().map(|r| r[1] / r[0]).collect()),
+    )
 }

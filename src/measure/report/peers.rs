@@ -67,7 +67,9 @@ fn work_scenes_side_by_side(quick: bool) -> (Table, Vec<(&'static str, Line)>) {
     let points = measure::side_by_side(quick);
     let mut table = Table::new(
         "Side by side with avian2d and bevy_rapier2d: a headless `App` per contender, one \
-         fixed step per update, single-threaded executor (error in px; ratios to ours)",
+         fixed step per update, single-threaded executor (error in px; ratios to ours; the \
+         contenders timed interleaved in rounds, the tick ratio the median of the rounds' \
+         ratios with their interquartile range)",
         Some("peers.csv"),
         vec![
             Column::new("scene", "scene"),
@@ -78,7 +80,9 @@ fn work_scenes_side_by_side(quick: bool) -> (Table, Vec<(&'static str, Line)>) {
             Column::new("energy drift", "energy_drift"),
             Column::new("ns per tick", "ns_per_tick"),
             Column::markdown("error / ours"),
-            Column::markdown("tick / ours"),
+            Column::new("tick / ours", "tick_over_ours"),
+            Column::csv("tick_over_ours_q1"),
+            Column::csv("tick_over_ours_q3"),
         ],
     );
     for chunk in points.chunk_by(|a, b| a.scene == b.scene && a.rate == b.rate) {
@@ -98,22 +102,23 @@ fn work_scenes_side_by_side(quick: bool) -> (Table, Vec<(&'static str, Line)>) {
                 Cell::new(short(p.energy_drift), or_empty(p.energy_drift)),
                 Cell::new(format!("{:.0}", p.ns_per_tick), p.ns_per_tick.to_string()),
                 Cell::markdown(short(error_ratio)),
-                Cell::markdown(format!("{:.2}", p.ns_per_tick / ours.ns_per_tick)),
+                Cell::new(
+                    p.tick_over_ours.describe(),
+                    p.tick_over_ours.median.to_string(),
+                ),
+                Cell::csv(p.tick_over_ours.q1),
+                Cell::csv(p.tick_over_ours.q3),
             ]);
         }
     }
     for rate in measure::RATES {
-        let empty = measure::empty_app_ns_per_tick(rate, quick);
-        let tutorial = points
-            .iter()
-            .find(|p| p.scene == "tutorial" && p.rate == rate && p.contender == NAMES[0]);
-        if let Some(tutorial) = tutorial {
-            table.note(format!(
-                "At {rate} Hz an empty `App` (the same plugins and clock, no physics) ticks in \
-                 {empty:.0} ns: our tutorial-scene tick is {:.2} times that.",
-                tutorial.ns_per_tick / empty
-            ));
-        }
+        let (empty, ratio) = measure::tutorial_over_empty_app(rate, quick);
+        table.note(format!(
+            "At {rate} Hz an empty `App` (the same plugins and clock, no physics) ticks in \
+             {empty:.0} ns: our tutorial-scene tick is {} times that (median and interquartile \
+             range of the ratio over rounds timed interleaved).",
+            ratio.describe()
+        ));
     }
     let mut lines = Vec::new();
     for scene in work_scenes() {
@@ -152,7 +157,9 @@ fn stiffness_side_by_side(cases: &[StiffCase], quick: bool) -> (Table, [Vec<Line
             Column::csv("energy_growth"),
             Column::csv("bounded"),
             Column::markdown("{}").each(),
-            Column::markdown("tick / fastest peer"),
+            Column::new("tick / fastest peer", "ours_over_fastest_peer"),
+            Column::csv("ours_over_fastest_peer_q1"),
+            Column::csv("ours_over_fastest_peer_q3"),
             Column::markdown("target"),
         ],
     )
@@ -162,11 +169,8 @@ fn stiffness_side_by_side(cases: &[StiffCase], quick: bool) -> (Table, [Vec<Line
         .zip(stiff.chunk_by(|a, b| a.k == b.k && a.rate == b.rate))
     {
         let ours = &chunk[0];
-        let fastest_peer = chunk[1..]
-            .iter()
-            .map(|p| p.ns_per_tick)
-            .fold(f64::INFINITY, f64::min);
-        let ratio = ours.ns_per_tick / fastest_peer;
+        let spread = ours.ours_over_fastest_peer;
+        let ratio = spread.median;
         let target = match stiff_target(case.k) {
             None => "-",
             Some((error, tick)) => {
@@ -202,7 +206,9 @@ fn stiffness_side_by_side(cases: &[StiffCase], quick: bool) -> (Table, [Vec<Line
                 Cell::csv_option(p.energy_growth),
                 Cell::csv(p.bounded),
                 Cell::markdown(format!("{outcome} / {:.0}", p.ns_per_tick)),
-                Cell::markdown(format!("{ratio:.2}")),
+                Cell::new(spread.describe(), ratio.to_string()),
+                Cell::csv(spread.q1),
+                Cell::csv(spread.q3),
                 Cell::markdown(target),
             ]);
         }
