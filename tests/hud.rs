@@ -5,7 +5,7 @@ mod common;
 
 use common::*;
 use rubber_band_box::game::hud::HudReadings;
-use rubber_band_box::game::input::controls::{HUD, PAUSE};
+use rubber_band_box::game::input::controls::{HUD, PAUSE, STIFFER};
 use rubber_band_box::physics::{Energies, EnergyLedger};
 
 fn readings() -> HudReadings {
@@ -36,6 +36,7 @@ fn readings() -> HudReadings {
         playback: None,
         scene: "tutorial".to_owned(),
         ghosts: Vec::new(),
+        margins: Vec::new(),
     }
 }
 
@@ -275,4 +276,46 @@ fn each_energy_line_says_its_own_reading() {
         "{}",
         HudLine::KineticRotational.text(&r)
     );
+}
+
+/// The stability line: the live integrator's ω·dt against its limit at this damping, and the
+/// stiffest band it holds, following the integrator and k; the ghosts' list says it for each.
+#[test]
+fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() {
+    let mut game = Game::stepping();
+    game.update(1);
+    // ω = 2 sqrt(k/m) = 4 /s, a step of 10 ms.
+    assert_eq!(
+        game.hud(HudLine::Stability),
+        "stability: auto at omega*dt 0.04, stable at any k"
+    );
+    *game.world().resource_mut::<Integrator>() = Integrator::Symplectic;
+    game.update(1);
+    // Semi-implicit Euler at the tutorial's damping: ω²h² + 2γh < 4, so ω·h < 1.99.
+    assert_eq!(
+        game.hud(HudLine::Stability),
+        "stability: symplectic at omega*dt 0.04 of 1.99: holds k up to 5.0e4"
+    );
+    for _ in 0..4 {
+        game.tap_key(STIFFER);
+        game.update(1);
+    }
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 2e5);
+    let line = game.hud(HudLine::Stability);
+    assert_eq!(
+        line,
+        "stability: symplectic at omega*dt 4.00, past its 1.99: UNSTABLE above k 5.0e4"
+    );
+    game.tap_key(KeyCode::KeyG);
+    game.update(2);
+    let ghosts = game.hud(HudLine::Ghosts);
+    let row = |name: &str| {
+        ghosts
+            .lines()
+            .find(|line| line.trim_start().starts_with(name))
+            .unwrap_or_else(|| panic!("{name} in\n{ghosts}"))
+            .to_owned()
+    };
+    assert!(row("rk4").ends_with("UNSTABLE above k 1.0e5"), "{ghosts}");
+    assert!(row("implicit").ends_with("stable at any k"), "{ghosts}");
 }

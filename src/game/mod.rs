@@ -11,6 +11,7 @@
 //! - [`replays`]: the game's side of replays and scenes: recording, playback, the scenes on
 //!   the number keys;
 //! - [`ghosts`]: every integrator and a reference stepping beside the live box;
+//! - [`stability`]: each integrator's distance from instability at the present settings;
 //! - [`hud`]: the heads-up display's text, its energy history and the window title;
 //! - [`screen`]: camera, interpolation, drawing and the energy graph (need a window);
 //! - `web`, in the browser only: the page's side (downloads, files opened, what the page
@@ -25,6 +26,7 @@ pub mod schedule;
 pub mod screen;
 pub mod shared;
 pub mod simulation;
+pub mod stability;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
@@ -46,6 +48,7 @@ impl Plugin for GameLogicPlugin {
             replays::playback::PlaybackPlugin,
             replays::scenes::ScenesPlugin,
             ghosts::GhostsPlugin,
+            stability::StabilityPlugin,
             input::panel::PanelPlugin,
             hud::HudPlugin,
         ));

@@ -4,7 +4,7 @@
 //! module, so that there is one implementation of each force law, each integration step and
 //! each named scene. Its modules import in one direction, from the leaves up:
 //! `param_error`, `maths` → `body` → `forces` → `energy`, `scene` → `integrators` → `stepper`
-//! → `scenario`.
+//! → `scenario`, `stability`.
 
 pub mod body;
 pub mod energy;
@@ -14,6 +14,7 @@ pub mod maths;
 pub mod param_error;
 pub mod scenario;
 pub mod scene;
+pub mod stability;
 pub mod stepper;
 
 pub use body::{AngularState, BodyState, LinearState, MassProperties, rotate};

@@ -23,6 +23,8 @@ use crate::game::shared::Overlays;
 use crate::game::shared::SceneName;
 use crate::game::shared::StatusMessage;
 use crate::game::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
+use crate::game::stability::StabilityMargins;
+use crate::physics::stability::{Limit, Margin};
 use crate::physics::{
     AngularState, Energies, EnergyLedger, Integrator, LinearState, MassProperties, Scenario,
     SceneParams,
@@ -62,6 +64,7 @@ pub enum HudLine {
     Integrator,
     Clock,
     Parameters,
+    Stability,
     EnergyHeading,
     KineticLinear,
     KineticRotational,
@@ -77,11 +80,12 @@ pub enum HudLine {
 impl HudLine {
     /// The column's lines, top to bottom (the ghosts' list and the help line sit apart, at
     /// the bottom).
-    pub const COLUMN: [HudLine; 12] = [
+    pub const COLUMN: [HudLine; 13] = [
         HudLine::SceneName,
         HudLine::Integrator,
         HudLine::Clock,
         HudLine::Parameters,
+        HudLine::Stability,
         HudLine::EnergyHeading,
         HudLine::KineticLinear,
         HudLine::KineticRotational,
@@ -99,6 +103,9 @@ impl HudLine {
             HudLine::BandPotential => BAND_ENERGY_COLOUR,
             HudLine::Total => TOTAL_COLOUR,
             HudLine::Integrator if readings.divergence.is_some() => WARNING_COLOUR,
+            HudLine::Stability if readings.live_margin().is_some_and(|m| !m.holds) => {
+                WARNING_COLOUR
+            }
             HudLine::EnergyHeading | HudLine::Help | HudLine::Replay | HudLine::Ghosts => {
                 DIM_COLOUR
             }
@@ -115,6 +122,10 @@ impl HudLine {
                 format!("scene {}: {summary}", r.scene)
             }
             HudLine::Ghosts => ghost_lines(r),
+            HudLine::Stability => match r.live_margin() {
+                Some(margin) => format!("stability: {}", stability_text(margin, r)),
+                None => String::new(),
+            },
             HudLine::Integrator => {
                 let mut line = format!("integrator {}", r.integrator);
                 if r.integrator == Integrator::Auto {
@@ -204,8 +215,10 @@ fn ghost_lines(r: &HudReadings) -> String {
         let live = if g.live { " (live)" } else { "" };
         let name = format!("{}{live}", g.name);
         text += &format!("\n  {name:<17}");
+        let margin = r.margins.iter().find(|m| m.integrator.name() == g.name);
+        let margin = margin.map_or(String::new(), |m| format!("  {}", stability_short(m)));
         if let Some(step) = g.diverged_at {
-            text += &format!("DIVERGED at step {step} (frozen)");
+            text += &format!("DIVERGED at step {step} (frozen){margin}");
             continue;
         }
         let distance = g.distance.map_or("-".to_owned(), |d| format!("{d:.1e} px"));
@@ -221,8 +234,51 @@ fn ghost_lines(r: &HudReadings) -> String {
         if g.capped > 0 {
             text += &format!("  capped {} steps", g.capped);
         }
+        text += &margin;
     }
     text
+}
+
+/// The live integrator's margin, said in full: ω·dt now against the method's limit at this
+/// damping, and the stiffest band it holds.
+fn stability_text(margin: &Margin, r: &HudReadings) -> String {
+    let dt = 1.0 / r.step_rate_hz;
+    let params = SceneParams {
+        mass: r.mass,
+        ..SceneParams::tutorial()
+    };
+    let now = format!("{} at omega*dt {:.2}", margin.integrator, margin.omega_dt);
+    match margin.stiffest {
+        Limit::Any => format!("{now}, stable at any k"),
+        Limit::Never => format!("{now}: UNSTABLE at any k without more damping"),
+        Limit::UpTo(k) => {
+            let limit = margin.limit_omega_dt(&params, dt).unwrap_or(f64::NAN);
+            if margin.holds {
+                format!("{now} of {limit:.2}: holds k up to {}", number(k))
+            } else {
+                format!("{now}, past its {limit:.2}: UNSTABLE above k {}", number(k))
+            }
+        }
+    }
+}
+
+/// A ghost's margin, short: whether it holds the band and up to which k.
+fn stability_short(margin: &Margin) -> String {
+    match (margin.stiffest, margin.holds) {
+        (Limit::Any, _) => "stable at any k".to_owned(),
+        (Limit::Never, _) => "unstable at any k".to_owned(),
+        (Limit::UpTo(k), true) => format!("stable to k {}", number(k)),
+        (Limit::UpTo(k), false) => format!("UNSTABLE above k {}", number(k)),
+    }
+}
+
+/// A number as a person reads it: whole below 10⁴, two digits in powers of ten above.
+fn number(value: f64) -> String {
+    if value < 1e4 {
+        format!("{value:.0}")
+    } else {
+        format!("{value:.1e}")
+    }
 }
 
 /// Energies are shown fixed-point in the usual range, in scientific notation outside it.
@@ -267,6 +323,17 @@ pub struct HudReadings {
     pub scene: String,
     /// Every ghost, while they are on.
     pub ghosts: Vec<GhostReading>,
+    /// Every integrator's distance from instability now.
+    pub margins: Vec<Margin>,
+}
+
+impl HudReadings {
+    /// The live integrator's margin.
+    pub fn live_margin(&self) -> Option<&Margin> {
+        self.margins
+            .iter()
+            .find(|m| m.integrator == self.integrator)
+    }
 }
 
 /// What the HUD says about one ghost.
@@ -299,6 +366,7 @@ pub struct HudSources<'w, 's> {
     playback: Res<'w, Playback>,
     scene: Res<'w, SceneName>,
     ghosts: Res<'w, Ghosts>,
+    margins: Res<'w, StabilityMargins>,
     boxes: Query<
         'w,
         's,
@@ -365,6 +433,7 @@ impl HudSources<'_, '_> {
                     capped: ghost.capped,
                 })
                 .collect(),
+            margins: self.margins.0.clone(),
         }
     }
 }
