@@ -319,3 +319,30 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
     assert!(row("rk4").ends_with("UNSTABLE above k 1.0e5"), "{ghosts}");
     assert!(row("implicit").ends_with("stable at any k"), "{ghosts}");
 }
+
+/// One format for the HUD and the panel: numbers as a person reads them.
+#[test]
+fn numbers_are_shown_as_a_person_reads_them() {
+    use rubber_band_box::game::shared::readable;
+    for (value, shown) in [
+        (20.0, "20"),
+        (5.0, "5"),
+        (1.0, "1"),
+        (2.0203, "2.02"),
+        (0.05, "0.05"),
+        (123.4, "123"),
+        (1e5, "1.0e5"),
+        (3.2e-9, "3.2e-9"),
+        (0.0, "0"),
+        (-2.5, "-2.5"),
+    ] {
+        assert_eq!(readable(value), shown, "{value}");
+    }
+    // The parameters line: the linear damping as its coefficient and as its rate.
+    let mut game = Game::stepping();
+    game.update(1);
+    assert_eq!(
+        game.hud(HudLine::Parameters),
+        "m 5  k 20  damping: linear b 5 = 1 /s, angular 2.02 /s"
+    );
+}

@@ -238,3 +238,27 @@ fn a_press_on_the_panel_never_grabs_the_box() {
     game.update(1);
     assert_eq!(game.bands().len(), 1);
 }
+
+/// The panel's values in the HUD's units and format: k and the mass as numbers, the linear
+/// damping as its coefficient and its rate, the angular damping as a rate.
+#[test]
+fn the_panel_shows_values_in_the_huds_units() {
+    let mut game = Game::stepping();
+    game.update(2);
+    let world = game.world();
+    let shown: Vec<String> = world
+        .query::<&Text>()
+        .iter(world)
+        .map(|text| text.0.clone())
+        .collect();
+    for value in ["20", "5", "b 5 = 1 /s", "2.02 /s"] {
+        assert!(
+            shown.iter().any(|text| text == value),
+            "{value} in {shown:?}"
+        );
+    }
+    // Not the engineering notation the panel once printed.
+    for old in ["2.000e1", "5.000e0", "2.020e0"] {
+        assert!(!shown.iter().any(|text| text == old), "{old} in {shown:?}");
+    }
+}

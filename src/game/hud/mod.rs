@@ -20,8 +20,8 @@ use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::schedule::ScreenSystems;
 use crate::game::shared::Overlays;
-use crate::game::shared::SceneName;
 use crate::game::shared::StatusMessage;
+use crate::game::shared::{SceneName, readable};
 use crate::game::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
 use crate::game::stability::StabilityMargins;
 use crate::physics::stability::{Limit, Margin};
@@ -163,8 +163,12 @@ impl HudLine {
                 line
             }
             HudLine::Parameters => format!(
-                "m {}  k {}  damping: linear {:.3} /s, angular {:.3} /s",
-                r.mass, r.stiffness, r.linear_rate, r.angular_rate
+                "m {}  k {}  damping: linear b {} = {} /s, angular {} /s",
+                readable(r.mass),
+                readable(r.stiffness),
+                readable(r.linear_rate * r.mass),
+                readable(r.linear_rate),
+                readable(r.angular_rate)
             ),
             HudLine::EnergyHeading => "energy (mass px^2/s^2)".to_owned(),
             HudLine::KineticLinear => format!("  kinetic, linear   {}", energy(e.linear)),

@@ -14,8 +14,7 @@ use bevy::ui_widgets::{
 
 use crate::game::input::controls::{Action, Parameter};
 use crate::game::schedule::{AfterBevySystems, GameSystems, ScreenSystems};
-use crate::game::shared::SceneName;
-use crate::game::shared::{ControlsArea, Overlays};
+use crate::game::shared::{ControlsArea, Overlays, SceneName, readable};
 use crate::physics::{Integrator, Scenario, SceneParams};
 
 pub struct PanelPlugin;
@@ -456,7 +455,7 @@ fn show_state(
     }
     for (readout, entity) in &mut readouts {
         let shown = match readout {
-            Readout::Parameter(parameter) => format!("{:.3e}", parameter.get(&params)),
+            Readout::Parameter(parameter) => parameter_readout(*parameter, &params),
             Readout::StepRate => format!("{:.0} Hz", 1.0 / fixed_time.timestep().as_secs_f64()),
             Readout::TimeScale => format!("x{}", virtual_time.relative_speed_f64()),
         };
@@ -534,5 +533,20 @@ fn publish_buttons(
     if *published != json {
         crate::game::web::publish_panel(&json);
         *published = json;
+    }
+}
+
+/// A parameter in the units the HUD and the command line use: the linear damping as its
+/// coefficient b (the command line's `--linear-damping`) and as the rate b/m the HUD shows.
+fn parameter_readout(parameter: Parameter, params: &SceneParams) -> String {
+    let value = parameter.get(params);
+    match parameter {
+        Parameter::Stiffness | Parameter::Mass => readable(value),
+        Parameter::LinearDamping => format!(
+            "b {} = {} /s",
+            readable(value),
+            readable(value / params.mass)
+        ),
+        Parameter::AngularDamping => format!("{} /s", readable(value)),
     }
 }
