@@ -16,6 +16,7 @@ use common::*;
 use rubber_band_box::game::ghosts::GhostKind;
 use rubber_band_box::game::screen::draw::{BOX_OUTLINE, DrawPlugin, PIN_FILL};
 use rubber_band_box::game::screen::graph::EnergyGraphPlugin;
+use rubber_band_box::game::screen::plot::WorkPrecisionPlotPlugin;
 use rubber_band_box::game::screen::view::ViewPlugin;
 
 /// The headless game with the screen's plugins. The view's own camera has no renderer to
@@ -32,6 +33,7 @@ fn screen_game() -> Game {
             ViewPlugin,
             DrawPlugin,
             EnergyGraphPlugin,
+            WorkPrecisionPlotPlugin,
         ));
     });
     let world = game.world();
@@ -294,4 +296,108 @@ fn the_ui_scales_down_with_a_small_window_to_no_less_than_0_6() {
     game.resize(UVec2::new(720, 540));
     game.update(1);
     assert_eq!(game.world().resource::<UiScale>().0, 0.75);
+}
+
+/// The plot (P): each ghost's point is its own figures, as the HUD lists them (distance from
+/// the reference, and time per step times the step rate), drawn in its colour where the
+/// report's axes put it; a diverged ghost is a cross at the right edge.
+#[test]
+fn the_plot_puts_each_ghost_where_its_own_figures_say() {
+    use bevy::ecs::system::RunSystemOnce;
+    use rubber_band_box::game::ghosts::Ghosts;
+    use rubber_band_box::game::hud::HudSources;
+    use rubber_band_box::game::screen::plot::{place, plot_frame, plot_points};
+
+    let mut game = screen_game();
+    game.update(1);
+    game.tap_key(KeyCode::KeyP);
+    game.press_at(DVec2::new(200.0, 120.0));
+    game.update(30);
+    let readings = game
+        .world()
+        .run_system_once(|sources: HudSources| sources.readings())
+        .unwrap();
+    let world = game.world();
+    let live = *world.resource::<Integrator>();
+    let points = plot_points(world.resource::<Ghosts>(), 100.0, live);
+    assert_eq!(
+        points.len(),
+        Integrator::ALL.len(),
+        "every method, not the reference"
+    );
+    for point in &points {
+        let listed = readings
+            .ghosts
+            .iter()
+            .find(|g| g.name == point.kind.name())
+            .expect("listed in the HUD");
+        assert_eq!(point.error, listed.distance, "{}", listed.name);
+        assert_eq!(point.cost, listed.ns_per_step * 100.0, "{}", listed.name);
+        assert!(point.cost > 0.0, "{} was timed", listed.name);
+        assert_eq!(point.live, point.kind == GhostKind::Method(live));
+    }
+    // Drawn: a circle in each ghost's colour around its place.
+    let drawn_now = drawn(&mut game);
+    let frame = plot_frame();
+    for point in &points {
+        let at = place(point, frame);
+        let colour = point.kind.colour();
+        // A circle is a strip of many points around its centre.
+        let circle = drawn_now.iter().any(|d| {
+            d.points.len() > 8
+                && same_colour(d.colour, colour)
+                && close_to(
+                    d.points.iter().copied().sum::<Vec2>() / d.points.len() as f32,
+                    at,
+                )
+        });
+        assert!(circle, "{} at {at}", point.kind.name());
+        assert!(frame.contains(at));
+    }
+}
+
+fn close_to(a: Vec2, b: Vec2) -> bool {
+    a.distance(b) < 0.5
+}
+
+#[test]
+fn a_diverged_ghost_is_a_cross_at_the_plots_right_edge() {
+    use rubber_band_box::game::ghosts::Ghosts;
+    use rubber_band_box::game::screen::plot::{place, plot_frame, plot_points};
+
+    let mut game = screen_game();
+    game.update(1);
+    // k = 2e5 at 100 Hz: explicit Euler cannot hold it.
+    game.world().resource_mut::<SceneParams>().stiffness = 2e5;
+    game.tap_key(KeyCode::KeyP);
+    game.press_at(DVec2::new(200.0, 120.0));
+    game.update(40);
+    let world = game.world();
+    let points = plot_points(world.resource::<Ghosts>(), 100.0, Integrator::Auto);
+    let euler = points
+        .iter()
+        .find(|p| p.kind == GhostKind::Method(Integrator::Euler))
+        .unwrap();
+    assert_eq!(euler.error, None, "euler diverged");
+    let at = place(euler, plot_frame());
+    assert_eq!(at.x, plot_frame().max.x);
+    let colour = GhostKind::Method(Integrator::Euler).colour();
+    let strokes = drawn(&mut game)
+        .into_iter()
+        .filter(|d| {
+            !d.closed
+                && d.points.len() == 2
+                && same_colour(d.colour, colour)
+                && close_to((d.points[0] + d.points[1]) / 2.0, at)
+        })
+        .count();
+    assert_eq!(strokes, 2, "a cross");
+    // Off again: nothing of the plot drawn.
+    game.tap_key(KeyCode::KeyP);
+    game.update(1);
+    let frame_drawn = drawn(&mut game).into_iter().any(|d| {
+        d.closed && d.points.len() == 4 && close_to(d.points[0], plot_frame().min)
+            || d.points.iter().any(|p| close_to(*p, plot_frame().min))
+    });
+    assert!(!frame_drawn, "the plot's frame is gone");
 }

@@ -65,6 +65,7 @@ impl Plugin for GamePlugin {
             screen::view::ViewPlugin,
             screen::draw::DrawPlugin,
             screen::graph::EnergyGraphPlugin,
+            screen::plot::WorkPrecisionPlotPlugin,
         ));
     }
 }

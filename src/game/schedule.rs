@@ -12,7 +12,7 @@
 //! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
 //!    interpolated between the last two steps, the end of a playback said;
 //! 4. `Update`, [`ScreenSystems`]: the UI's scale from the window, the HUD's text and the
-//!    window title, the panel, then the drawing;
+//!    window title, the panel, the drawing, then the plot;
 //! 5. `PostUpdate` and `Last`, [`AfterBevySystems`]: after Bevy's UI layout the panel says
 //!    where it lies; after Bevy's window exit systems the recorder saves a game that ends.
 //!
@@ -78,6 +78,9 @@ pub enum ScreenSystems {
     Panel,
     /// The box, the band, the overlays and the energy graph drawn.
     Draw,
+    /// The ghosts' speed against error, over the rest (its labels and the ghosts' are both
+    /// `Text2d`).
+    Plot,
 }
 
 /// Work that waits for Bevy's own systems.
@@ -135,6 +138,7 @@ pub fn order_the_frame(app: &mut App) {
             ScreenSystems::Hud,
             ScreenSystems::Panel,
             ScreenSystems::Draw,
+            ScreenSystems::Plot,
         )
             .chain(),
     )

@@ -38,6 +38,8 @@ pub struct Overlays {
     pub trail: bool,
     /// Every integrator and a reference beside the live box (`ghosts`).
     pub ghosts: bool,
+    /// The ghosts' speed against their error, live (`screen::plot`).
+    pub plot: bool,
     /// The HUD (text, energy graph, help line) shows unless hidden.
     pub hud_hidden: bool,
 }

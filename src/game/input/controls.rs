@@ -44,6 +44,7 @@ pub const HUD: KeyCode = KeyCode::KeyH;
 pub const SAVE: KeyCode = KeyCode::KeyS;
 pub const OPEN: KeyCode = KeyCode::KeyO;
 pub const GHOSTS: KeyCode = KeyCode::KeyG;
+pub const PLOT: KeyCode = KeyCode::KeyP;
 /// The named scenes, in the core's order ([`Scenario::NAMES`]).
 pub const SCENE_KEYS: [KeyCode; 10] = [
     KeyCode::Digit1,
@@ -95,6 +96,7 @@ pub enum Action {
     ToggleVectors,
     ToggleTrail,
     ToggleGhosts,
+    TogglePlot,
     ToggleHud,
     Save,
     Open,
@@ -163,7 +165,7 @@ pub struct Control {
 }
 
 /// Every key the game reads, in the order the help line lists them.
-pub const CONTROLS: [Control; 14] = [
+pub const CONTROLS: [Control; 15] = [
     Control {
         keys: &[PAUSE],
         actions: &[Action::TogglePause],
@@ -233,6 +235,13 @@ pub const CONTROLS: [Control; 14] = [
         label: "G",
         name: "ghosts",
         effect: "ghosts: every integrator and a reference (Taylor order 24 at 1e-13 px) beside the box under the same band, each outlined in its colour; the HUD lists their distance from the reference, energy residual and cost per step",
+    },
+    Control {
+        keys: &[PLOT],
+        actions: &[Action::TogglePlot],
+        label: "P",
+        name: "plot",
+        effect: "speed against error, live: each ghost a point, its cost per simulated second against its distance from the reference on the report's log-log axes (turns the ghosts on)",
     },
     Control {
         keys: &SCENE_KEYS,
@@ -351,6 +360,11 @@ fn apply_actions(
             Action::ToggleVectors => c.overlays.vectors = !c.overlays.vectors,
             Action::ToggleTrail => c.overlays.trail = !c.overlays.trail,
             Action::ToggleGhosts => c.overlays.ghosts = !c.overlays.ghosts,
+            Action::TogglePlot => {
+                c.overlays.plot = !c.overlays.plot;
+                // Its points are the ghosts.
+                c.overlays.ghosts |= c.overlays.plot;
+            }
             Action::ToggleHud => c.overlays.hud_hidden = !c.overlays.hud_hidden,
             // The recorder saves and says where ([`crate::game::replays::recording`]).
             Action::Save => commands.trigger(SaveReplay),

@@ -295,6 +295,7 @@ fn spawn_panel(mut commands: Commands) {
     let row = spawn_row(&mut commands, body, "show");
     for (label, action) in [
         ("ghosts", Action::ToggleGhosts),
+        ("plot", Action::TogglePlot),
         ("vectors", Action::ToggleVectors),
         ("trail", Action::ToggleTrail),
         ("HUD", Action::ToggleHud),
@@ -439,6 +440,7 @@ fn show_state(
                 (Scenario::NAMES.get(index) == Some(&scene.0.as_str()), None)
             }
             PanelButton::Send(Action::ToggleGhosts) => (overlays.ghosts, None),
+            PanelButton::Send(Action::TogglePlot) => (overlays.plot, None),
             PanelButton::Send(Action::ToggleVectors) => (overlays.vectors, None),
             PanelButton::Send(Action::ToggleTrail) => (overlays.trail, None),
             PanelButton::Send(Action::ToggleHud) => (!overlays.hud_hidden, None),

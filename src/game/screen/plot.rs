@@ -1,0 +1,254 @@
+//! Speed against error, live (P): every ghost a point on the report's work-precision axes,
+//! its distance from the reference (px) across, its cost per simulated second (ns) up, both
+//! logarithmic, in the ghost's colour with its name, moving as the hand pulls. A diverged
+//! ghost is a cross at the right edge, at the cost it had; a reference that had to fall back
+//! (its budget) says so under the plot. Drawn with gizmos at the bottom right of the
+//! tutorial's screen; the points are [`plot_points`], which a test holds to the ghosts' own
+//! figures.
+
+use bevy::prelude::*;
+
+use crate::game::ghosts::{GhostKind, Ghosts};
+use crate::game::schedule::ScreenSystems;
+use crate::game::shared::Overlays;
+use crate::physics::{Integrator, SCENE_SIZE, SceneParams};
+
+pub struct WorkPrecisionPlotPlugin;
+
+impl Plugin for WorkPrecisionPlotPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_systems(Update, draw_plot.in_set(ScreenSystems::Plot));
+    }
+}
+
+/// One ghost on the plot.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlotPoint {
+    pub kind: GhostKind,
+    /// Distance from the reference now (px); None once diverged.
+    pub error: Option<f64>,
+    /// Wall time per simulated second (ns): the ghost's time per step times the step rate.
+    pub cost: f64,
+    /// The ghost of the live box's own integrator: the live box itself.
+    pub live: bool,
+}
+
+/// Every ghost but the reference, as the plot shows it.
+pub fn plot_points(ghosts: &Ghosts, step_rate_hz: f64, live: Integrator) -> Vec<PlotPoint> {
+    ghosts
+        .ghosts
+        .iter()
+        .filter(|ghost| ghost.kind != GhostKind::Reference)
+        .map(|ghost| PlotPoint {
+            kind: ghost.kind,
+            error: ghost
+                .diverged_at
+                .is_none()
+                .then(|| ghosts.distance_from_reference(ghost))
+                .flatten(),
+            cost: ghost.ns_per_step * step_rate_hz,
+            live: ghost.kind == GhostKind::Method(live),
+        })
+        .collect()
+}
+
+/// The axes' decades: the report's work-precision figure spans these.
+pub const ERROR_DECADES: (f64, f64) = (-16.0, 3.0);
+pub const COST_DECADES: (f64, f64) = (2.0, 8.0);
+
+/// The plot's size in world units, and its distance from the tutorial screen's corner.
+pub const PLOT_SIZE: Vec2 = Vec2::new(220.0, 130.0);
+const PLOT_MARGIN: f32 = 8.0;
+const FRAME_COLOUR: Color = Color::srgb(0.25, 0.25, 0.3);
+const LABEL_SIZE: f32 = 10.0;
+
+/// Where the plot lies: the bottom-right corner of the tutorial's screen.
+pub fn plot_frame() -> Rect {
+    let half = SCENE_SIZE.as_vec2() / 2.0;
+    let bottom_right = Vec2::new(half.x, -half.y) + Vec2::new(-PLOT_MARGIN, PLOT_MARGIN);
+    Rect::from_corners(
+        bottom_right - Vec2::new(PLOT_SIZE.x, 0.0),
+        bottom_right + Vec2::new(0.0, PLOT_SIZE.y),
+    )
+}
+
+/// A point's place in `frame`: each axis's decade clamped into the frame; a diverged ghost at
+/// the right edge.
+pub fn place(point: &PlotPoint, frame: Rect) -> Vec2 {
+    let across = |decades: (f64, f64), value: f64| {
+        ((value.max(1e-300).log10() - decades.0) / (decades.1 - decades.0)).clamp(0.0, 1.0) as f32
+    };
+    let x = point
+        .error
+        .map_or(1.0, |error| across(ERROR_DECADES, error));
+    let y = across(COST_DECADES, point.cost);
+    frame.min + Vec2::new(x, y) * frame.size()
+}
+
+/// A ghost's label beside its point.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+struct PlotLabel(GhostKind);
+
+/// The axes' captions and the reference's note.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+enum PlotCaption {
+    Axes,
+    Reference,
+}
+
+#[allow(clippy::too_many_arguments)]
+fn draw_plot(
+    mut commands: Commands,
+    mut gizmos: Gizmos,
+    overlays: Res<Overlays>,
+    ghosts: Res<Ghosts>,
+    params: Res<SceneParams>,
+    integrator: Res<Integrator>,
+    mut labels: Query<(
+        Entity,
+        &PlotLabel,
+        &mut Text2d,
+        &mut Transform,
+        &mut Visibility,
+    )>,
+    mut captions: Query<
+        (&PlotCaption, &mut Text2d, &mut Transform, &mut Visibility),
+        Without<PlotLabel>,
+    >,
+) {
+    let shown = overlays.plot && !overlays.hud_hidden;
+    if captions.is_empty() {
+        for caption in [PlotCaption::Axes, PlotCaption::Reference] {
+            commands.spawn((
+                Name::new("Plot caption"),
+                caption,
+                Text2d::default(),
+                TextFont::from_font_size(LABEL_SIZE),
+                TextColor(Color::srgb(0.7, 0.7, 0.75)),
+                Transform::default(),
+                Visibility::Hidden,
+            ));
+        }
+    }
+    let frame = plot_frame();
+    let points = if shown {
+        plot_points(&ghosts, params.step_rate_hz, *integrator)
+    } else {
+        Vec::new()
+    };
+    for (caption, mut text, mut transform, mut visibility) in &mut captions {
+        visibility.set_if_neq(if shown {
+            Visibility::Inherited
+        } else {
+            Visibility::Hidden
+        });
+        // The axes under the frame, the reference's note above it.
+        let y = match caption {
+            PlotCaption::Axes => frame.min.y + 8.0,
+            PlotCaption::Reference => frame.max.y + 8.0,
+        };
+        transform.translation = Vec3::new(frame.center().x, y, 3.0);
+        let said = match caption {
+            PlotCaption::Axes => "error px 1e-16 .. 1e3 >   ns/simulated s 1e2 .. 1e8 ^".to_owned(),
+            PlotCaption::Reference => {
+                let capped = ghosts
+                    .ghosts
+                    .iter()
+                    .find(|g| g.kind == GhostKind::Reference)
+                    .map_or(0, |g| g.capped);
+                if capped > 0 {
+                    format!("reference capped at {capped} steps: errors there are implicit's")
+                } else {
+                    String::new()
+                }
+            }
+        };
+        if text.0 != said {
+            text.0 = said;
+        }
+    }
+    let mut unlabelled: Vec<GhostKind> = points.iter().map(|p| p.kind).collect();
+    for (entity, label, mut text, mut transform, mut visibility) in &mut labels {
+        let Some(point) = points.iter().find(|p| p.kind == label.0) else {
+            if !shown {
+                visibility.set_if_neq(Visibility::Hidden);
+            } else {
+                commands.entity(entity).despawn();
+            }
+            continue;
+        };
+        unlabelled.retain(|&kind| kind != label.0);
+        visibility.set_if_neq(Visibility::Inherited);
+        let name = match (point.error, point.live) {
+            (None, _) => format!("{} diverged", point.kind.name()),
+            (Some(_), true) => format!("{} (live)", point.kind.name()),
+            (Some(_), false) => point.kind.name().to_owned(),
+        };
+        if text.0 != name {
+            text.0 = name;
+        }
+        transform.translation = (place(point, frame) + Vec2::new(7.0, 0.0)).extend(3.0);
+    }
+    for kind in unlabelled {
+        commands.spawn((
+            Name::new("Plot label"),
+            PlotLabel(kind),
+            Text2d::new(kind.name()),
+            TextFont::from_font_size(LABEL_SIZE),
+            TextColor(kind.colour()),
+            bevy::sprite::Anchor::CENTER_LEFT,
+            Transform::default(),
+            Visibility::Hidden,
+        ));
+    }
+    if !shown {
+        return;
+    }
+    gizmos.rect_2d(
+        Isometry2d::from_translation(frame.center()),
+        frame.size(),
+        FRAME_COLOUR,
+    );
+    // A tick at each decade, along the bottom and the left.
+    let decades = |range: (f64, f64)| (range.0 as i32..=range.1 as i32).map(f64::from);
+    for decade in decades(ERROR_DECADES) {
+        let x = frame.min.x
+            + ((decade - ERROR_DECADES.0) / (ERROR_DECADES.1 - ERROR_DECADES.0)) as f32
+                * frame.width();
+        gizmos.line_2d(
+            Vec2::new(x, frame.min.y),
+            Vec2::new(x, frame.min.y + 3.0),
+            FRAME_COLOUR,
+        );
+    }
+    for decade in decades(COST_DECADES) {
+        let y = frame.min.y
+            + ((decade - COST_DECADES.0) / (COST_DECADES.1 - COST_DECADES.0)) as f32
+                * frame.height();
+        gizmos.line_2d(
+            Vec2::new(frame.min.x, y),
+            Vec2::new(frame.min.x + 3.0, y),
+            FRAME_COLOUR,
+        );
+    }
+    for point in &points {
+        let at = place(point, frame);
+        let colour = point.kind.colour();
+        match point.error {
+            Some(_) => {
+                gizmos.circle_2d(Isometry2d::from_translation(at), 3.0, colour);
+                if point.live {
+                    gizmos.circle_2d(Isometry2d::from_translation(at), 5.5, colour);
+                }
+            }
+            None => {
+                for (a, b) in [
+                    (Vec2::new(-4.0, -4.0), Vec2::new(4.0, 4.0)),
+                    (Vec2::new(-4.0, 4.0), Vec2::new(4.0, -4.0)),
+                ] {
+                    gizmos.line_2d(at + a, at + b, colour);
+                }
+            }
+        }
+    }
+}
