@@ -346,3 +346,23 @@ fn numbers_are_shown_as_a_person_reads_them() {
         "m 5  k 20  damping: linear b 5 = 1 /s, angular 2.02 /s"
     );
 }
+
+/// The HUD only shows: none of its nodes takes a press, so a long line lying over the panel
+/// on a small screen never keeps a click from the panel's button under it.
+#[test]
+fn the_hud_takes_no_press() {
+    use bevy::picking::Pickable;
+    let mut game = Game::stepping();
+    game.update(1);
+    let world = game.world();
+    let nodes: Vec<Option<Pickable>> = world
+        .query_filtered::<Option<&Pickable>, Or<(With<Hud>, With<HudLine>)>>()
+        .iter(world)
+        .map(|pickable| pickable.cloned())
+        .collect();
+    assert!(nodes.len() > HudLine::COLUMN.len(), "{}", nodes.len());
+    for pickable in nodes {
+        let pickable = pickable.expect("every HUD node says how it is picked");
+        assert!(!pickable.should_block_lower && !pickable.is_hoverable);
+    }
+}

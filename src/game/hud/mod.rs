@@ -12,6 +12,7 @@ pub mod title;
 
 use bevy::diagnostic::{DiagnosticsStore, FrameTimeDiagnosticsPlugin};
 use bevy::ecs::system::SystemParam;
+use bevy::picking::Pickable;
 use bevy::prelude::*;
 
 use crate::game::ghosts::{GhostKind, Ghosts};
@@ -447,18 +448,22 @@ impl HudSources<'_, '_> {
 pub struct Hud;
 
 fn spawn_hud(mut commands: Commands) {
+    // The HUD only shows: a press where it lies over the panel (a long line on a small
+    // screen) goes through to the panel's button.
     let text = |line: HudLine, size: f32| {
         (
             line,
             Text::default(),
             TextFont::from_font_size(size),
             TextColor(TEXT_COLOUR),
+            Pickable::IGNORE,
         )
     };
     let column = commands
         .spawn((
             Name::new("HUD column"),
             Hud,
+            Pickable::IGNORE,
             Node {
                 position_type: PositionType::Absolute,
                 top: px(6),
