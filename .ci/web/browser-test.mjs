@@ -203,6 +203,18 @@ try {
   await page.waitForTimeout(1500);
   const rk4 = pixels(await shot("ghosts"), green).length;
   check(rk4 > 50 && withoutGhosts < 5, `G draws the ghosts on the stiff scene (${rk4} pixels of rk4's green, ${withoutGhosts} before G)`);
+  // P plots them: each ghost a point in its colour, with its name, inside the plot's frame at
+  // the left of the scene (world x -312..-92, y -105..25: 1.5 window px a world px here).
+  const inPlot = (png, i) => {
+    const x = (i / 4) % png.width, y = Math.floor(i / 4 / png.width);
+    return x >= 12 && x <= 342 && y >= 322 && y <= 517 && green(png, i);
+  };
+  const beforePlot = pixels(await shot("ghosts-no-plot"), inPlot).length;
+  await page.keyboard.press("p");
+  await page.waitForTimeout(1500);
+  const plotted = pixels(await shot("plot"), inPlot).length;
+  check(plotted > 10 && beforePlot < 5, `P plots the ghosts (${plotted} pixels of rk4's green in the plot's frame, ${beforePlot} before P)`);
+  await page.keyboard.press("p");
   // The panel (bottom right): "controls" unfolds it, a scene button loads that scene (its
   // scripted band is drawn), pause stops the box. The page says where each button lies.
   await page.keyboard.press("g");

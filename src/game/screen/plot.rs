@@ -2,9 +2,8 @@
 //! its distance from the reference (px) across, its cost per simulated second (ns) up, both
 //! logarithmic, in the ghost's colour with its name, moving as the hand pulls. A diverged
 //! ghost is a cross at the right edge, at the cost it had; a reference that had to fall back
-//! (its budget) says so under the plot. Drawn with gizmos at the bottom right of the
-//! tutorial's screen; the points are [`plot_points`], which a test holds to the ghosts' own
-//! figures.
+//! (its budget) says so above the plot. Drawn with gizmos at the left of the tutorial's
+//! screen; the points are [`plot_points`], which a test holds to the ghosts' own figures.
 
 use bevy::prelude::*;
 
@@ -59,17 +58,18 @@ pub const COST_DECADES: (f64, f64) = (2.0, 8.0);
 /// The plot's size in world units, and its distance from the tutorial screen's corner.
 pub const PLOT_SIZE: Vec2 = Vec2::new(220.0, 130.0);
 const PLOT_MARGIN: f32 = 8.0;
+/// The plot's lower edge (world units, the scene's centre at 0).
+const PLOT_BOTTOM: f32 = -105.0;
 const FRAME_COLOUR: Color = Color::srgb(0.25, 0.25, 0.3);
 const LABEL_SIZE: f32 = 10.0;
 
-/// Where the plot lies: the bottom-right corner of the tutorial's screen.
+/// Where the plot lies: at the left of the tutorial's screen, between the HUD's column above
+/// and the ghosts' list below, away from the top right where the tutorial's pull takes the box
+/// and from the bottom right where the panel's button sits.
 pub fn plot_frame() -> Rect {
-    let half = SCENE_SIZE.as_vec2() / 2.0;
-    let bottom_right = Vec2::new(half.x, -half.y) + Vec2::new(-PLOT_MARGIN, PLOT_MARGIN);
-    Rect::from_corners(
-        bottom_right - Vec2::new(PLOT_SIZE.x, 0.0),
-        bottom_right + Vec2::new(0.0, PLOT_SIZE.y),
-    )
+    let left = -SCENE_SIZE.as_vec2().x / 2.0 + PLOT_MARGIN;
+    let min = Vec2::new(left, PLOT_BOTTOM);
+    Rect::from_corners(min, min + PLOT_SIZE)
 }
 
 /// A point's place in `frame`: each axis's decade clamped into the frame; a diverged ghost at
