@@ -215,7 +215,8 @@ fn ghost_lines(r: &HudReadings) -> String {
         return String::new();
     }
     let mut text =
-        "ghosts: distance from the reference, energy residual, work and time per step".to_owned();
+        "ghosts: distance from the reference, energy residual, work and time per step, k held"
+            .to_owned();
     for g in &r.ghosts {
         let live = if g.live { " (live)" } else { "" };
         let name = format!("{}{live}", g.name);
@@ -270,10 +271,10 @@ fn stability_text(margin: &Margin, r: &HudReadings) -> String {
 /// A ghost's margin, short: whether it holds the band and up to which k.
 fn stability_short(margin: &Margin) -> String {
     match (margin.stiffest, margin.holds) {
-        (Limit::Any, _) => "stable at any k".to_owned(),
-        (Limit::Never, _) => "unstable at any k".to_owned(),
-        (Limit::UpTo(k), true) => format!("stable to k {}", number(k)),
-        (Limit::UpTo(k), false) => format!("UNSTABLE above k {}", number(k)),
+        (Limit::Any, _) => "any k".to_owned(),
+        (Limit::Never, _) => "no k".to_owned(),
+        (Limit::UpTo(k), true) => format!("k<{}", number(k)),
+        (Limit::UpTo(k), false) => format!("UNSTABLE: k<{}", number(k)),
     }
 }
 

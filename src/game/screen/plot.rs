@@ -6,6 +6,7 @@
 //! screen; the points are [`plot_points`], which a test holds to the ghosts' own figures.
 
 use bevy::prelude::*;
+use bevy::window::PrimaryWindow;
 
 use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::schedule::ScreenSystems;
@@ -85,6 +86,22 @@ pub fn place(point: &PlotPoint, frame: Rect) -> Vec2 {
     frame.min + Vec2::new(x, y) * frame.size()
 }
 
+/// Where each point's name goes: to the right of it, moved up a line at a time while it
+/// would lie on a name placed before it (ghosts often coincide).
+fn label_places(points: &[PlotPoint], frame: Rect, font_size: f32) -> Vec<Vec2> {
+    let mut placed: Vec<Vec2> = Vec::new();
+    for point in points {
+        let mut at = place(point, frame) + Vec2::new(7.0, 0.0);
+        while placed.iter().any(|other| {
+            (other.y - at.y).abs() < font_size && (other.x - at.x).abs() < 6.0 * font_size
+        }) {
+            at.y += font_size + 1.0;
+        }
+        placed.push(at);
+    }
+    placed
+}
+
 /// A ghost's label beside its point.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 struct PlotLabel(GhostKind);
@@ -92,14 +109,39 @@ struct PlotLabel(GhostKind);
 /// The axes' captions and the reference's note.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 enum PlotCaption {
-    Axes,
+    /// Under the frame.
+    Across,
+    /// Over the frame.
+    Up,
+    /// Over that.
     Reference,
+}
+
+/// The names' size on screen, in window pixels, however small the view makes the scene.
+const LABEL_PIXELS: f32 = 11.0;
+
+/// World units a window pixel spans now (the view fits the scene to the window).
+fn world_per_pixel(
+    windows: &Query<&Window, With<PrimaryWindow>>,
+    cameras: &Query<&Projection, With<Camera2d>>,
+) -> f32 {
+    let width = windows.iter().next().map(|w| w.width());
+    let area = cameras.iter().find_map(|projection| match projection {
+        Projection::Orthographic(orthographic) => Some(orthographic.area.width()),
+        _ => None,
+    });
+    match (width, area) {
+        (Some(width), Some(area)) if width > 0.0 && area > 0.0 => area / width,
+        _ => 1.0,
+    }
 }
 
 #[allow(clippy::too_many_arguments)]
 fn draw_plot(
     mut commands: Commands,
     mut gizmos: Gizmos,
+    windows: Query<&Window, With<PrimaryWindow>>,
+    cameras: Query<&Projection, With<Camera2d>>,
     overlays: Res<Overlays>,
     ghosts: Res<Ghosts>,
     params: Res<SceneParams>,
@@ -108,23 +150,33 @@ fn draw_plot(
         Entity,
         &PlotLabel,
         &mut Text2d,
+        &mut TextFont,
         &mut Transform,
         &mut Visibility,
     )>,
     mut captions: Query<
-        (&PlotCaption, &mut Text2d, &mut Transform, &mut Visibility),
+        (
+            &PlotCaption,
+            &mut Text2d,
+            &mut TextFont,
+            &mut Transform,
+            &mut Visibility,
+        ),
         Without<PlotLabel>,
     >,
 ) {
+    // On a phone the scene is drawn small: the names keep their size on screen.
+    let font_size = LABEL_SIZE.max(LABEL_PIXELS * world_per_pixel(&windows, &cameras));
     let shown = overlays.plot && !overlays.hud_hidden;
     if captions.is_empty() {
-        for caption in [PlotCaption::Axes, PlotCaption::Reference] {
+        for caption in [PlotCaption::Across, PlotCaption::Up, PlotCaption::Reference] {
             commands.spawn((
                 Name::new("Plot caption"),
                 caption,
                 Text2d::default(),
                 TextFont::from_font_size(LABEL_SIZE),
                 TextColor(Color::srgb(0.7, 0.7, 0.75)),
+                bevy::sprite::Anchor::CENTER_LEFT,
                 Transform::default(),
                 Visibility::Hidden,
             ));
@@ -136,20 +188,24 @@ fn draw_plot(
     } else {
         Vec::new()
     };
-    for (caption, mut text, mut transform, mut visibility) in &mut captions {
+    for (caption, mut text, mut font, mut transform, mut visibility) in &mut captions {
+        if font.font_size != FontSize::Px(font_size) {
+            font.font_size = FontSize::Px(font_size);
+        }
         visibility.set_if_neq(if shown {
             Visibility::Inherited
         } else {
             Visibility::Hidden
         });
-        // The axes under the frame, the reference's note above it.
         let y = match caption {
-            PlotCaption::Axes => frame.min.y + 8.0,
-            PlotCaption::Reference => frame.max.y + 8.0,
+            PlotCaption::Across => frame.min.y - font_size * 0.8,
+            PlotCaption::Up => frame.max.y + font_size * 0.8,
+            PlotCaption::Reference => frame.max.y + font_size * 2.0,
         };
-        transform.translation = Vec3::new(frame.center().x, y, 3.0);
+        transform.translation = Vec3::new(frame.min.x, y, 3.0);
         let said = match caption {
-            PlotCaption::Axes => "error px 1e-16 .. 1e3 >   ns/simulated s 1e2 .. 1e8 ^".to_owned(),
+            PlotCaption::Across => "error from the reference, px: 1e-16 .. 1e3".to_owned(),
+            PlotCaption::Up => "cost up, ns per simulated s: 1e2 .. 1e8".to_owned(),
             PlotCaption::Reference => {
                 let capped = ghosts
                     .ghosts
@@ -168,7 +224,11 @@ fn draw_plot(
         }
     }
     let mut unlabelled: Vec<GhostKind> = points.iter().map(|p| p.kind).collect();
-    for (entity, label, mut text, mut transform, mut visibility) in &mut labels {
+    let label_places = label_places(&points, frame, font_size);
+    for (entity, label, mut text, mut font, mut transform, mut visibility) in &mut labels {
+        if font.font_size != FontSize::Px(font_size) {
+            font.font_size = FontSize::Px(font_size);
+        }
         let Some(point) = points.iter().find(|p| p.kind == label.0) else {
             if !shown {
                 visibility.set_if_neq(Visibility::Hidden);
@@ -179,15 +239,20 @@ fn draw_plot(
         };
         unlabelled.retain(|&kind| kind != label.0);
         visibility.set_if_neq(Visibility::Inherited);
-        let name = match (point.error, point.live) {
+        let mut name = match (point.error, point.live) {
             (None, _) => format!("{} diverged", point.kind.name()),
             (Some(_), true) => format!("{} (live)", point.kind.name()),
             (Some(_), false) => point.kind.name().to_owned(),
         };
+        if point.cost == 0.0 {
+            // A browser's clock can be coarser than a step.
+            name += " (too fast to time)";
+        }
         if text.0 != name {
             text.0 = name;
         }
-        transform.translation = (place(point, frame) + Vec2::new(7.0, 0.0)).extend(3.0);
+        let index = points.iter().position(|p| p.kind == label.0).unwrap_or(0);
+        transform.translation = label_places[index].extend(3.0);
     }
     for kind in unlabelled {
         commands.spawn((
@@ -231,9 +296,13 @@ fn draw_plot(
             FRAME_COLOUR,
         );
     }
-    for point in &points {
+    for (point, label) in points.iter().zip(&label_places) {
         let at = place(point, frame);
         let colour = point.kind.colour();
+        // A name moved off its point's line is tied to it.
+        if (label.y - at.y).abs() > 1.0 {
+            gizmos.line_2d(at, *label - Vec2::new(2.0, 0.0), colour.with_alpha(0.5));
+        }
         match point.error {
             Some(_) => {
                 gizmos.circle_2d(Isometry2d::from_translation(at), 3.0, colour);
