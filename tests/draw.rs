@@ -401,3 +401,79 @@ fn a_diverged_ghost_is_a_cross_at_the_plots_right_edge() {
     });
     assert!(!frame_drawn, "the plot's frame is gone");
 }
+
+/// The scene is fitted to the part of the window the panel leaves free: at a desktop's size and
+/// both phones', with the panel folded (its one button) or open, the scene's rectangle lies
+/// inside the window and clear of every control; with room to spare, or no panel laid out, it
+/// fills the window as before.
+#[test]
+fn the_scene_is_fitted_where_no_control_lies() {
+    use rubber_band_box::game::screen::view::{fitted_scene, free_area, scene_scale};
+    let rect = |x0: f32, y0: f32, x1: f32, y1: f32| Rect::new(x0, y0, x1, y1);
+    // Laid out as the browser test's screenshots show them (logical window pixels).
+    let cases = [
+        (
+            "desktop, folded",
+            Vec2::new(960.0, 720.0),
+            vec![rect(871.0, 648.0, 952.0, 678.0)],
+        ),
+        (
+            "desktop, open",
+            Vec2::new(960.0, 720.0),
+            vec![
+                rect(604.0, 208.0, 952.0, 640.0),
+                rect(871.0, 648.0, 952.0, 678.0),
+            ],
+        ),
+        (
+            "portrait, folded",
+            Vec2::new(390.0, 844.0),
+            vec![rect(335.0, 798.0, 385.0, 818.0)],
+        ),
+        (
+            "portrait, open",
+            Vec2::new(390.0, 844.0),
+            vec![
+                rect(178.0, 538.0, 386.0, 795.0),
+                rect(335.0, 798.0, 385.0, 818.0),
+            ],
+        ),
+        (
+            "landscape, open",
+            Vec2::new(844.0, 390.0),
+            vec![
+                rect(560.0, 4.0, 840.0, 350.0),
+                rect(790.0, 355.0, 840.0, 375.0),
+            ],
+        ),
+    ];
+    for (name, window, controls) in cases {
+        let free = free_area(window, &controls);
+        let scene = fitted_scene(free);
+        let inside = Rect::from_corners(Vec2::ZERO, window);
+        assert!(
+            scene.width() > 100.0,
+            "{name}: the scene is drawn ({scene:?})"
+        );
+        assert_eq!(inside.union(scene), inside, "{name}: inside the window");
+        for control in &controls {
+            assert!(
+                scene.intersect(*control).is_empty(),
+                "{name}: {scene:?} lies under {control:?}"
+            );
+        }
+    }
+    // No panel laid out, or one that a wide window keeps clear of: the whole window.
+    let window = Vec2::new(960.0, 720.0);
+    assert_eq!(
+        free_area(window, &[]),
+        Rect::from_corners(Vec2::ZERO, window)
+    );
+    let wide = Vec2::new(1280.0, 720.0);
+    let corner = [rect(1191.0, 648.0, 1272.0, 678.0)];
+    assert_eq!(
+        free_area(wide, &corner),
+        Rect::from_corners(Vec2::ZERO, wide)
+    );
+    assert_eq!(scene_scale(free_area(wide, &corner)), 1.5);
+}

@@ -40,12 +40,15 @@ const GRAPH_MARGIN: f32 = 8.0;
 fn draw_energy_graph(
     mut gizmos: Gizmos,
     history: Res<EnergyHistory>,
-    camera: Single<&Projection, With<Camera2d>>,
+    camera: Single<(&Projection, &GlobalTransform), With<Camera2d>>,
 ) {
-    let Projection::Orthographic(projection) = *camera else {
+    let (Projection::Orthographic(projection), transform) = *camera else {
         return;
     };
-    let area = projection.area;
+    // The view's area in the world: the camera may sit off the origin (the scene fitted to
+    // the part of the window the panel leaves free).
+    let centre = transform.translation().truncate();
+    let area = Rect::from_corners(projection.area.min + centre, projection.area.max + centre);
     let top_right = area.max.min(SCENE_SIZE.as_vec2() / 2.0) - Vec2::splat(GRAPH_MARGIN);
     let frame = Rect::from_corners(top_right - GRAPH_SIZE, top_right);
     gizmos.rect_2d(

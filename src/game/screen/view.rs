@@ -1,11 +1,13 @@
-//! The camera that keeps the tutorial's 640 x 480 scene in view at any window size, and the
-//! interpolation that draws the box between fixed steps so that motion is smooth at any
-//! display rate (as Bevy's `physics_in_fixed_timestep` example does).
+//! The camera that keeps the tutorial's 640 x 480 scene in view at any window size, in the
+//! part of the window the on-screen panel leaves free, and the interpolation that draws the
+//! box between fixed steps so that motion is smooth at any display rate (as Bevy's
+//! `physics_in_fixed_timestep` example does).
 
 use bevy::camera::ScalingMode;
 use bevy::prelude::*;
 
 use crate::game::schedule::{AfterStepsSystems, ScreenSystems};
+use crate::game::shared::ControlsArea;
 use crate::game::simulation::{Band, RenderSnapshots};
 use crate::physics::{BodyState, SCENE_SIZE};
 
@@ -18,7 +20,10 @@ impl Plugin for ViewPlugin {
                 RunFixedMainLoop,
                 (interpolate_body_transforms, place_band_pins).in_set(AfterStepsSystems::Conclude),
             )
-            .add_systems(Update, scale_ui_to_window.in_set(ScreenSystems::Scale));
+            .add_systems(
+                Update,
+                (scale_ui_to_window, fit_scene_to_free_area).in_set(ScreenSystems::Scale),
+            );
     }
 }
 
@@ -54,6 +59,72 @@ fn scale_ui_to_window(
         if scale.0 != fit {
             scale.0 = fit;
         }
+    }
+}
+
+/// The part of the window the on-screen controls leave free, in logical window pixels (origin
+/// at the top left): the whole window if the scene, fitted to it, lies clear of every
+/// control; else the larger (for the scene) of the areas left of and above the controls.
+pub fn free_area(window: Vec2, controls: &[Rect]) -> Rect {
+    let whole = Rect::from_corners(Vec2::ZERO, window);
+    let Some(bounds) = controls.iter().copied().reduce(|a, b| a.union(b)) else {
+        return whole;
+    };
+    if fitted_scene(whole).intersect(bounds).is_empty() {
+        return whole;
+    }
+    let left = Rect::from_corners(Vec2::ZERO, Vec2::new(bounds.min.x.max(0.0), window.y));
+    let above = Rect::from_corners(Vec2::ZERO, Vec2::new(window.x, bounds.min.y.max(0.0)));
+    if scene_scale(left) >= scene_scale(above) {
+        left
+    } else {
+        above
+    }
+}
+
+/// Window pixels a world unit spans when the scene fits `area`, aspect kept.
+pub fn scene_scale(area: Rect) -> f32 {
+    let scene = SCENE_SIZE.as_vec2();
+    (area.width() / scene.x)
+        .min(area.height() / scene.y)
+        .max(0.0)
+}
+
+/// Where the tutorial's scene lies on the window when fitted to `area`: centred in it.
+pub fn fitted_scene(area: Rect) -> Rect {
+    Rect::from_center_size(area.center(), SCENE_SIZE.as_vec2() * scene_scale(area))
+}
+
+/// The camera shows the scene in the free area: its projection's scale and its position such
+/// that the world's origin lies at the area's centre. Only once the panel has been laid out
+/// (headless there is no layout, and the camera keeps fitting the whole window).
+fn fit_scene_to_free_area(
+    window: Single<&Window, With<bevy::window::PrimaryWindow>>,
+    controls: Res<ControlsArea>,
+    camera: Single<(&mut Projection, &mut Transform), With<Camera2d>>,
+) {
+    if controls.0.is_empty() {
+        return;
+    }
+    let size = window.size();
+    let free = free_area(size, &controls.0);
+    let scale = scene_scale(free);
+    // A window with no room (minimised) leaves the camera as it is.
+    if scale.is_nan() || scale <= 0.0 {
+        return;
+    }
+    let (mut projection, mut transform) = camera.into_inner();
+    let offset = free.center() - size / 2.0;
+    let position = Vec3::new(-offset.x / scale, offset.y / scale, transform.translation.z);
+    if transform.translation != position {
+        transform.translation = position;
+    }
+    if let Projection::Orthographic(orthographic) = &mut *projection
+        && (!matches!(orthographic.scaling_mode, ScalingMode::WindowSize)
+            || orthographic.scale != 1.0 / scale)
+    {
+        orthographic.scaling_mode = ScalingMode::WindowSize;
+        orthographic.scale = 1.0 / scale;
     }
 }
 
