@@ -242,6 +242,24 @@ try {
     if (places.resume) await page.mouse.click(...centre(places.resume));
   }
 
+  // The stability line: explicit Euler at the tutorial's k holds (its damping outweighs its
+  // growth up to k = 221 at 100 Hz, 530 at the 240 Hz set above); three presses of ] make k
+  // 2e4 (and two, if a slow frame swallows one, 2000), past it, and the HUD's stability line
+  // turns red (at k = 20 nothing of the HUD is).
+  const isWarning = (png, i) => png.data[i] > 200 && png.data[i + 1] > 60 && png.data[i + 1] < 150 && png.data[i + 2] > 30 && png.data[i + 2] < 130;
+  const warnings = (png) => pixels(png, isWarning).filter(([x, y]) => x < 900 && y < 240).length;
+  // One key a frame or so: two presses within one frame count once.
+  const key = async (k) => { await page.keyboard.press(k); await page.waitForTimeout(350); };
+  await key("1");
+  await key("i");
+  await page.waitForTimeout(300);
+  const holding = warnings(await shot("stability-holds"));
+  for (let i = 0; i < 3; i++) await key("]");
+  const past = warnings(await shot("stability-past"));
+  check(past > 30 && holding < 5, `the stability line warns before a blow-up (${past} red pixels past euler's limit, ${holding} at k = 20)`);
+  for (let i = 0; i < 3; i++) await key("[");
+  for (let i = 0; i < 6; i++) await key("i");
+
 
   // Phones, held upright and turned (CSS pixels, touch): the
   // HUD, the graph and the folded panel leave the box uncovered; a finger drags it; a tap
