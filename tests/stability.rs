@@ -1,7 +1,9 @@
 //! The stability view's numbers (`physics::stability`) against closed forms: each method's
 //! one-step amplification on the band's stiffest mode, x'' = −ω²x − γx'.
 
-use rubber_band_box::physics::stability::{Limit, Mode, margins, spectral_radius, stiffest_held};
+use rubber_band_box::physics::stability::{
+    Limit, Mode, margins, omega_at, spectral_radius, stiffest_held,
+};
 use rubber_band_box::physics::{AutoSettings, Integrator, SceneParams};
 
 fn undamped() -> SceneParams {
@@ -15,14 +17,7 @@ fn undamped() -> SceneParams {
 /// ω·dt at the stiffest k a method holds.
 fn limit(integrator: Integrator, params: &SceneParams, dt: f64) -> Option<f64> {
     match stiffest_held(integrator, params, dt, &AutoSettings::default()) {
-        Limit::UpTo(k) => Some(
-            Mode::of(&SceneParams {
-                stiffness: k,
-                ..*params
-            })
-            .omega
-                * dt,
-        ),
+        Limit::UpTo(k) => Some(omega_at(k, params.mass) * dt),
         other => panic!("{integrator}: {other:?}"),
     }
 }

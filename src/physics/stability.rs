@@ -36,11 +36,16 @@ pub struct Mode {
     pub damping: f64,
 }
 
+/// ω of the band's stiffest mode for a band of stiffness `k` on a box of mass `m`.
+pub fn omega_at(k: f64, m: f64) -> f64 {
+    2.0 * (k / m).sqrt()
+}
+
 impl Mode {
     pub fn of(params: &SceneParams) -> Self {
         let m = params.mass;
         Self {
-            omega: 2.0 * (params.stiffness / m).sqrt(),
+            omega: omega_at(params.stiffness, m),
             damping: (params.linear_damping / m + 3.0 * params.angular_damping) / 4.0,
         }
     }
@@ -174,23 +179,8 @@ pub struct Margin {
     pub holds: bool,
     /// The stiffest band it holds at this mass, damping and step.
     pub stiffest: Limit,
-}
-
-impl Margin {
-    /// ω·dt at the stiffest band held: the method's limit at this damping.
-    pub fn limit_omega_dt(&self, params: &SceneParams, dt: f64) -> Option<f64> {
-        match self.stiffest {
-            Limit::UpTo(k) => Some(
-                Mode::of(&SceneParams {
-                    stiffness: k,
-                    ..*params
-                })
-                .omega
-                    * dt,
-            ),
-            Limit::Never | Limit::Any => None,
-        }
-    }
+    /// ω·dt at that band: the method's limit at this damping (None for `Never` and `Any`).
+    pub limit_omega_dt: Option<f64>,
 }
 
 /// Every integrator's margin at `params` (its step rate gives the step).
@@ -201,12 +191,17 @@ pub fn margins(params: &SceneParams, auto: &AutoSettings) -> Vec<Margin> {
         .into_iter()
         .map(|integrator| {
             let spectral_radius = spectral_radius(integrator, params, dt, auto);
+            let stiffest = stiffest_held(integrator, params, dt, auto);
             Margin {
                 integrator,
                 omega_dt,
                 spectral_radius,
                 holds: spectral_radius <= 1.0 + GROWTH,
-                stiffest: stiffest_held(integrator, params, dt, auto),
+                stiffest,
+                limit_omega_dt: match stiffest {
+                    Limit::UpTo(k) => Some(omega_at(k, params.mass) * dt),
+                    Limit::Never | Limit::Any => None,
+                },
             }
         })
         .collect()

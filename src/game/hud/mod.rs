@@ -124,7 +124,7 @@ impl HudLine {
             }
             HudLine::Ghosts => ghost_lines(r),
             HudLine::Stability => match r.live_margin() {
-                Some(margin) => format!("stability: {}", stability_text(margin, r)),
+                Some(margin) => format!("stability: {}", stability_text(margin)),
                 None => String::new(),
             },
             HudLine::Integrator => {
@@ -247,18 +247,13 @@ fn ghost_lines(r: &HudReadings) -> String {
 
 /// The live integrator's margin, said in full: ω·dt now against the method's limit at this
 /// damping, and the stiffest band it holds.
-fn stability_text(margin: &Margin, r: &HudReadings) -> String {
-    let dt = 1.0 / r.step_rate_hz;
-    let params = SceneParams {
-        mass: r.mass,
-        ..SceneParams::tutorial()
-    };
+fn stability_text(margin: &Margin) -> String {
     let now = format!("{} at omega*dt {:.2}", margin.integrator, margin.omega_dt);
     match margin.stiffest {
         Limit::Any => format!("{now}, stable at any k"),
         Limit::Never => format!("{now}: UNSTABLE at any k without more damping"),
         Limit::UpTo(k) => {
-            let limit = margin.limit_omega_dt(&params, dt).unwrap_or(f64::NAN);
+            let limit = margin.limit_omega_dt.unwrap_or(f64::NAN);
             if margin.holds {
                 format!("{now} of {limit:.2}: holds k up to {}", number(k))
             } else {
