@@ -79,3 +79,13 @@ pub fn readable(value: f64) -> String {
         }
     }
 }
+
+/// The linear damping as the HUD and the panel both show it: its coefficient b (the command
+/// line's `--linear-damping`) and the rate b/m at which the velocity decays, `b 5 = 1 /s`.
+pub fn linear_damping_readout(coefficient: f64, mass: f64) -> String {
+    format!(
+        "b {} = {} /s",
+        readable(coefficient),
+        readable(coefficient / mass)
+    )
+}

@@ -22,7 +22,7 @@ use crate::game::replays::recording::Recorder;
 use crate::game::schedule::ScreenSystems;
 use crate::game::shared::Overlays;
 use crate::game::shared::StatusMessage;
-use crate::game::shared::{SceneName, readable};
+use crate::game::shared::{SceneName, linear_damping_readout, readable};
 use crate::game::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
 use crate::game::stability::StabilityMargins;
 use crate::physics::stability::{Limit, Margin};
@@ -164,11 +164,10 @@ impl HudLine {
                 line
             }
             HudLine::Parameters => format!(
-                "m {}  k {}  damping: linear b {} = {} /s, angular {} /s",
+                "m {}  k {}  damping: linear {}, angular {} /s",
                 readable(r.mass),
                 readable(r.stiffness),
-                readable(r.linear_rate * r.mass),
-                readable(r.linear_rate),
+                linear_damping_readout(r.linear_rate * r.mass, r.mass),
                 readable(r.angular_rate)
             ),
             HudLine::EnergyHeading => "energy (mass px^2/s^2)".to_owned(),

@@ -14,7 +14,7 @@ use bevy::ui_widgets::{
 
 use crate::game::input::controls::{Action, Parameter};
 use crate::game::schedule::{AfterBevySystems, GameSystems, ScreenSystems};
-use crate::game::shared::{ControlsArea, Overlays, SceneName, readable};
+use crate::game::shared::{ControlsArea, Overlays, SceneName, linear_damping_readout, readable};
 use crate::physics::{Integrator, Scenario, SceneParams};
 
 pub struct PanelPlugin;
@@ -538,17 +538,12 @@ fn publish_buttons(
     }
 }
 
-/// A parameter in the units the HUD and the command line use: the linear damping as its
-/// coefficient b (the command line's `--linear-damping`) and as the rate b/m the HUD shows.
+/// A parameter in the units and format the HUD and the command line use.
 fn parameter_readout(parameter: Parameter, params: &SceneParams) -> String {
     let value = parameter.get(params);
     match parameter {
         Parameter::Stiffness | Parameter::Mass => readable(value),
-        Parameter::LinearDamping => format!(
-            "b {} = {} /s",
-            readable(value),
-            readable(value / params.mass)
-        ),
+        Parameter::LinearDamping => linear_damping_readout(value, params.mass),
         Parameter::AngularDamping => format!("{} /s", readable(value)),
     }
 }
