@@ -14,28 +14,13 @@ use bevy::gizmos::config::DefaultGizmoConfigGroup;
 use bevy::gizmos::{GizmoAsset, GizmoHandles};
 use common::*;
 use rubber_band_box::game::ghosts::GhostKind;
-use rubber_band_box::game::screen::draw::{BOX_OUTLINE, DrawPlugin, PIN_FILL};
-use rubber_band_box::game::screen::graph::EnergyGraphPlugin;
-use rubber_band_box::game::screen::plot::WorkPrecisionPlotPlugin;
-use rubber_band_box::game::screen::view::ViewPlugin;
+use rubber_band_box::game::screen::draw::{BOX_OUTLINE, PIN_FILL};
 
 /// The headless game with the screen's plugins. The view's own camera has no renderer to
 /// compute its projection, so it goes: the test's camera (as bevy_render would compute it)
 /// maps the pointer.
 fn screen_game() -> Game {
-    let mut game = Game::with(Duration::from_millis(10), |app| {
-        // What the renderer would bring: the assets the gizmos' mesh bounds read.
-        app.add_plugins(bevy::asset::AssetPlugin::default())
-            .init_asset::<Mesh>()
-            .init_asset::<bevy::mesh::skinning::SkinnedMeshInverseBindposes>();
-        app.add_plugins((
-            bevy::gizmos::GizmoPlugin,
-            ViewPlugin,
-            DrawPlugin,
-            EnergyGraphPlugin,
-            WorkPrecisionPlotPlugin,
-        ));
-    });
+    let mut game = Game::with(Duration::from_millis(10), add_the_screen);
     let world = game.world();
     let views: Vec<Entity> = world
         .query::<(Entity, &Name)>()

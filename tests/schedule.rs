@@ -602,28 +602,14 @@ fn the_drawn_state_moves_forward_every_frame_between_steps() {
     }
 }
 
-/// The screen's plugins (the camera and interpolation, the drawing, the energy graph) join the
+/// The screen's plugins (the camera and interpolation, the drawing, the energy graph, the plot) join the
 /// headless game's schedules without a window or a renderer: Bevy's gizmos and assets run
 /// headless, so their systems are checked for ambiguities with the rest of the frame like
 /// every other, and the frame runs with the box pulled, the vectors, the trail and the ghosts
 /// drawn.
 #[test]
 fn the_screens_plugins_join_the_frame_without_an_ambiguity() {
-    use rubber_band_box::game::screen::{
-        draw::DrawPlugin, graph::EnergyGraphPlugin, view::ViewPlugin,
-    };
-    let mut game = Game::with(Duration::from_millis(10), |app| {
-        // What the renderer would bring: the assets the gizmos' mesh bounds read.
-        app.add_plugins(bevy::asset::AssetPlugin::default())
-            .init_asset::<Mesh>()
-            .init_asset::<bevy::mesh::skinning::SkinnedMeshInverseBindposes>();
-        app.add_plugins((
-            bevy::gizmos::GizmoPlugin,
-            ViewPlugin,
-            DrawPlugin,
-            EnergyGraphPlugin,
-        ));
-    });
+    let mut game = Game::with(Duration::from_millis(10), add_the_screen);
     game.press_at(DVec2::new(200.0, 100.0));
     for key in [KeyCode::KeyV, KeyCode::KeyT, KeyCode::KeyG] {
         game.tap_key(key);

@@ -349,3 +349,21 @@ pub fn bits(states: &[BodyState]) -> Vec<[u64; 6]> {
         .map(|state| state.to_array().map(f64::to_bits))
         .collect()
 }
+
+/// The screen's plugins (view, drawing, energy graph, plot) added to a headless game, with
+/// what the renderer would bring for them: assets, and the ones the gizmos' mesh bounds read.
+pub fn add_the_screen(app: &mut App) {
+    use rubber_band_box::game::screen::{
+        draw::DrawPlugin, graph::EnergyGraphPlugin, plot::WorkPrecisionPlotPlugin, view::ViewPlugin,
+    };
+    app.add_plugins(bevy::asset::AssetPlugin::default())
+        .init_asset::<Mesh>()
+        .init_asset::<bevy::mesh::skinning::SkinnedMeshInverseBindposes>();
+    app.add_plugins((
+        bevy::gizmos::GizmoPlugin,
+        ViewPlugin,
+        DrawPlugin,
+        EnergyGraphPlugin,
+        WorkPrecisionPlotPlugin,
+    ));
+}
