@@ -16,9 +16,9 @@
 //! 5. `PostUpdate` and `Last`, [`AfterBevySystems`]: after Bevy's UI layout the panel says
 //!    where it lies; after Bevy's window exit systems the recorder saves a game that ends.
 //!
-//! [`order_the_frame`] chains these for the game; [`order_the_physics`] the fixed step's
-//! chain alone, which the physics plugin calls itself because it also runs without the game
-//! (the benchmarks, the side-by-side with the peers).
+//! [`order_the_physics`] chains the fixed step's sets, and the physics plugin calls it itself
+//! because it also runs without the game (the benchmarks, the side-by-side with the peers);
+//! [`order_the_frame`] chains the rest, for the game.
 
 use bevy::prelude::*;
 
@@ -113,10 +113,10 @@ pub fn order_the_physics(app: &mut App) {
     );
 }
 
-/// The whole frame: a press and a key in one frame always act in the same order (the press
-/// first, so a reset in that frame also lets go).
+/// The rest of the frame (the fixed step's chain is the physics plugin's own call of
+/// [`order_the_physics`]): a press and a key in one frame always act in the same order (the
+/// press first, so a reset in that frame also lets go).
 pub fn order_the_frame(app: &mut App) {
-    order_the_physics(app);
     app.configure_sets(
         RunFixedMainLoop,
         (
