@@ -15,6 +15,7 @@ use bevy::gizmos::{GizmoAsset, GizmoHandles};
 use common::*;
 use rubber_band_box::game::ghosts::GhostKind;
 use rubber_band_box::game::screen::draw::{BOX_OUTLINE, PIN_FILL};
+use rubber_band_box::physics::SCENE_SIZE;
 
 /// The headless game with the screen's plugins. The view's own camera has no renderer to
 /// compute its projection, so it goes: the test's camera (as bevy_render would compute it)
@@ -387,41 +388,58 @@ fn a_diverged_ghost_is_a_cross_at_the_plots_right_edge() {
     assert!(!frame_drawn, "the plot's frame is gone");
 }
 
-/// The scene is fitted to the part of the window the panel leaves free: at a desktop's size and
-/// both phones', with the panel folded (its one button) or open, the scene's rectangle lies
-/// inside the window and clear of every control; with room to spare, or no panel laid out, it
-/// fills the window as before.
+/// The scene is fitted to the part of the window the panel and the HUD leave free: at a
+/// desktop's size and both phones', with the panel folded (its one button) or open and the
+/// HUD's column, ghosts' list and help line where the game lays them out, the scene's
+/// rectangle lies inside the window and clear of every one of them; with room to spare, or
+/// nothing laid out, it fills the window as before.
 #[test]
 fn the_scene_is_fitted_where_no_control_lies() {
     use rubber_band_box::game::screen::view::{fitted_scene, free_area, scene_scale};
     let rect = |x0: f32, y0: f32, x1: f32, y1: f32| Rect::new(x0, y0, x1, y1);
-    // Laid out as the browser test's screenshots show them (logical window pixels).
+    // Laid out as the game's and the browser test's screenshots show them (logical window
+    // pixels): the panel, then the HUD's column, ghosts' list and help line.
+    let desktop_hud = [
+        rect(6.0, 6.0, 540.0, 224.0),
+        rect(6.0, 538.0, 662.0, 680.0),
+        rect(6.0, 684.0, 954.0, 714.0),
+    ];
+    let portrait_hud = [
+        rect(4.0, 4.0, 386.0, 146.0),
+        rect(4.0, 684.0, 386.0, 800.0),
+        rect(4.0, 804.0, 386.0, 842.0),
+    ];
+    let landscape_hud = [rect(4.0, 4.0, 480.0, 146.0), rect(4.0, 360.0, 840.0, 388.0)];
     let cases = [
         (
             "desktop, folded",
             Vec2::new(960.0, 720.0),
             vec![rect(871.0, 648.0, 952.0, 678.0)],
+            &desktop_hud[..],
         ),
         (
             "desktop, open",
             Vec2::new(960.0, 720.0),
             vec![
-                rect(604.0, 208.0, 952.0, 640.0),
+                rect(604.0, 150.0, 952.0, 640.0),
                 rect(871.0, 648.0, 952.0, 678.0),
             ],
+            &desktop_hud[..],
         ),
         (
             "portrait, folded",
             Vec2::new(390.0, 844.0),
             vec![rect(335.0, 798.0, 385.0, 818.0)],
+            &portrait_hud[..],
         ),
         (
             "portrait, open",
             Vec2::new(390.0, 844.0),
             vec![
-                rect(178.0, 538.0, 386.0, 795.0),
+                rect(178.0, 500.0, 386.0, 795.0),
                 rect(335.0, 798.0, 385.0, 818.0),
             ],
+            &portrait_hud[..],
         ),
         (
             "landscape, open",
@@ -430,25 +448,38 @@ fn the_scene_is_fitted_where_no_control_lies() {
                 rect(560.0, 4.0, 840.0, 350.0),
                 rect(790.0, 355.0, 840.0, 375.0),
             ],
+            &landscape_hud[..],
         ),
     ];
-    for (name, window, controls) in cases {
-        let free = free_area(window, &controls);
+    for (name, window, controls, hud) in cases {
+        let covered: Vec<Rect> = controls.iter().chain(hud).copied().collect();
+        let free = free_area(window, &covered);
         let scene = fitted_scene(free);
         let inside = Rect::from_corners(Vec2::ZERO, window);
         assert!(
-            scene.width() > 100.0,
+            scene.width() > 150.0,
             "{name}: the scene is drawn ({scene:?})"
         );
         assert_eq!(inside.union(scene), inside, "{name}: inside the window");
-        for control in &controls {
+        for covering in &covered {
             assert!(
-                scene.intersect(*control).is_empty(),
-                "{name}: {scene:?} lies under {control:?}"
+                scene.intersect(*covering).is_empty(),
+                "{name}: {scene:?} lies under {covering:?}"
             );
         }
+        // And no larger scene would have fitted: one 5% larger, centred anywhere on a grid,
+        // meets something or leaves the window.
+        let larger = scene.size() * 1.05;
+        for x in (0..=window.x as usize).step_by(4) {
+            for y in (0..=window.y as usize).step_by(4) {
+                let bigger = Rect::from_center_size(Vec2::new(x as f32, y as f32), larger);
+                let fits = inside.union(bigger) == inside
+                    && covered.iter().all(|c| c.intersect(bigger).is_empty());
+                assert!(!fits, "{name}: {bigger:?} would have fitted too");
+            }
+        }
     }
-    // No panel laid out, or one that a wide window keeps clear of: the whole window.
+    // Nothing laid out, or a panel that a wide window keeps clear of: the whole window.
     let window = Vec2::new(960.0, 720.0);
     assert_eq!(
         free_area(window, &[]),
@@ -461,4 +492,87 @@ fn the_scene_is_fitted_where_no_control_lies() {
         Rect::from_corners(Vec2::ZERO, wide)
     );
     assert_eq!(scene_scale(free_area(wide, &corner)), 1.5);
+}
+
+/// The scene keeps its place while the HUD's lines change width with their digits: the area
+/// it has is kept while its scene stays clear and nothing fits one more than 5% larger; it
+/// moves as soon as something covers it, and grows when the room is worth it.
+#[test]
+fn the_scene_does_not_follow_each_digit() {
+    use rubber_band_box::game::screen::view::{area_to_fit, fitted_scene, free_area};
+    let window = Vec2::new(960.0, 720.0);
+    let column = |right: f32| Rect::new(6.0, 6.0, right, 224.0);
+    let list = Rect::new(6.0, 538.0, 662.0, 680.0);
+    let first = free_area(window, &[column(540.0), list]);
+    // A digit more or less: kept.
+    for right in [532.0, 548.0] {
+        let covered = [column(right), list];
+        if fitted_scene(first).intersect(covered[0]).is_empty() {
+            assert_eq!(area_to_fit(window, &covered, Some(first)), first);
+        }
+    }
+    // A line that reaches over the scene: it moves clear.
+    let long = [column(800.0), list];
+    assert!(!fitted_scene(first).intersect(long[0]).is_empty());
+    let moved = area_to_fit(window, &long, Some(first));
+    assert!(fitted_scene(moved).intersect(long[0]).is_empty());
+    // The ghosts' list gone: the room below is worth growing into.
+    let grown = area_to_fit(window, &[column(800.0)], Some(moved));
+    assert!(fitted_scene(grown).width() > 1.05 * fitted_scene(moved).width());
+}
+
+/// The ghosts' names go above the box, or where that would lie over the energy graph or the
+/// plot or leave the tutorial's screen, below it, right or left of it.
+#[test]
+fn the_ghosts_names_keep_off_the_graph_and_the_plot() {
+    use rubber_band_box::game::screen::draw::label_column;
+    use rubber_band_box::game::screen::graph::graph_frame;
+    use rubber_band_box::game::screen::plot::plot_footprint;
+    let scene = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2());
+    let graph = graph_frame(scene);
+    let avoid = [graph, plot_footprint()];
+    let (line, width, lines, reach) = (13.0, 80.0, 7, 46.0);
+    // Each name's box, where the column puts it.
+    let names = |centre: Vec2, (first, step): (Vec2, Vec2)| -> Vec<Rect> {
+        (0..lines)
+            .map(|i| {
+                let at = centre + first + step * i as f32;
+                Rect::from_center_size(at, Vec2::new(width, line))
+            })
+            .collect()
+    };
+    let clear = |boxes: &[Rect]| {
+        boxes
+            .iter()
+            .all(|b| scene.union(*b) == scene && avoid.iter().all(|a| a.intersect(*b).is_empty()))
+    };
+    // In the middle, the plot off: above, one line over the other.
+    let (first, step) = label_column(Vec2::ZERO, reach, lines, line, width, &[graph]);
+    assert!(first.x == 0.0 && first.y > reach && step == Vec2::new(0.0, line));
+    // Anywhere the box goes in the scene, the names lie in the scene, off the graph and the
+    // plot, but where no side has room (then above).
+    let mut crowded = 0;
+    let mut moved = 0;
+    for x in (-280..=280).step_by(20) {
+        for y in (-200..=200).step_by(20) {
+            let centre = Vec2::new(x as f32, y as f32);
+            let place = label_column(centre, reach, lines, line, width, &avoid);
+            let above = label_column(centre, reach, lines, line, width, &[]) == place;
+            if clear(&names(centre, place)) {
+                moved += usize::from(!above);
+            } else {
+                assert_eq!(
+                    place.0, first,
+                    "at {centre}: names on the graph or the plot"
+                );
+                crowded += 1;
+            }
+        }
+    }
+    assert!(moved > 50, "{moved} places moved the names off");
+    assert!(crowded < 120, "{crowded} of 609 places found no room");
+    // Just under the graph (where the tutorial's pull takes the box): not above.
+    let under_graph = Vec2::new(graph.center().x, graph.min.y - 50.0);
+    let place = label_column(under_graph, reach, lines, line, width, &avoid);
+    assert!(clear(&names(under_graph, place)), "on the graph");
 }

@@ -262,3 +262,35 @@ fn the_panel_shows_values_in_the_huds_units() {
         assert!(!shown.iter().any(|text| text == old), "{old} in {shown:?}");
     }
 }
+
+/// Each slider's ends read in the same units: k from 0.01 to 1e12 and the mass from 1e-3 to
+/// 1000 (logarithmic), the linear damping's coefficient from 0 to 50, the angular rate from 0
+/// to 20 /s.
+#[test]
+fn the_sliders_ends_say_their_values_in_the_readouts_units() {
+    use rubber_band_box::game::input::panel::SliderEnd;
+    let mut game = Game::stepping();
+    game.update(1);
+    let world = game.world();
+    let mut ends: Vec<(String, String)> = world
+        .query::<(&SliderEnd, &Text)>()
+        .iter(world)
+        .map(|(end, text)| (end.0.name().to_owned(), text.0.clone()))
+        .collect();
+    ends.sort();
+    let mut expected: Vec<(String, String)> = [
+        (Parameter::Stiffness, "0.01"),
+        (Parameter::Stiffness, "1.0e12"),
+        (Parameter::Mass, "1.0e-3"),
+        (Parameter::Mass, "1000"),
+        (Parameter::LinearDamping, "b 0"),
+        (Parameter::LinearDamping, "b 50"),
+        (Parameter::AngularDamping, "0 /s"),
+        (Parameter::AngularDamping, "20 /s"),
+    ]
+    .into_iter()
+    .map(|(parameter, text)| (parameter.name().to_owned(), text.to_owned()))
+    .collect();
+    expected.sort();
+    assert_eq!(ends, expected);
+}

@@ -1,6 +1,6 @@
 //! The resources several plugins of the game read, each initialised once, here
 //! ([`SharedPlugin`], added first by the game): the scene's name, the status line, what shows,
-//! and where the panel lies. A leaf: it imports no plugin, so none of its readers imports
+//! and where the panel and the HUD lie. A leaf: it imports no plugin, so none of its readers imports
 //! another for them.
 
 use bevy::prelude::*;
@@ -14,7 +14,8 @@ impl Plugin for SharedPlugin {
         app.init_resource::<SceneName>()
             .init_resource::<StatusMessage>()
             .init_resource::<Overlays>()
-            .init_resource::<ControlsArea>();
+            .init_resource::<ControlsArea>()
+            .init_resource::<HudArea>();
     }
 }
 
@@ -58,6 +59,19 @@ impl ControlsArea {
     pub fn contains(&self, point: Vec2) -> bool {
         self.0.iter().any(|rect| rect.contains(point))
     }
+}
+
+/// Where the HUD's text lies, in logical window pixels: the scene is drawn clear of it (a
+/// press there still pulls the band: the HUD only shows). The HUD writes it after each layout.
+#[derive(Resource, Debug, Default, Clone, PartialEq)]
+pub struct HudArea(pub Vec<Rect>);
+
+/// Where a UI node lies in the window, in logical pixels (what the pointer and the page use):
+/// the node's physical rectangle over the window's scale factor. `ComputedNode`'s inverse
+/// scale factor also divides by the UI scale, which is put back.
+pub fn window_rect(node: &ComputedNode, transform: &UiGlobalTransform, ui_scale: &UiScale) -> Rect {
+    let scale = node.inverse_scale_factor() * ui_scale.0;
+    Rect::from_center_size(transform.translation * scale, node.size() * scale)
 }
 
 /// A value as a person reads it, the one format the HUD and the panel share: whole or to

@@ -19,10 +19,10 @@ use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::input::controls::help_line;
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
-use crate::game::schedule::ScreenSystems;
-use crate::game::shared::Overlays;
-use crate::game::shared::StatusMessage;
-use crate::game::shared::{SceneName, linear_damping_readout, readable};
+use crate::game::schedule::{AfterBevySystems, ScreenSystems};
+use crate::game::shared::{
+    HudArea, Overlays, SceneName, StatusMessage, linear_damping_readout, readable, window_rect,
+};
 use crate::game::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
 use crate::game::stability::StabilityMargins;
 use crate::physics::stability::{Limit, Margin};
@@ -44,6 +44,10 @@ impl Plugin for HudPlugin {
             .add_systems(
                 Update,
                 (show_hud, title::show_state_in_title).in_set(ScreenSystems::Hud),
+            )
+            .add_systems(
+                PostUpdate,
+                publish_area.in_set(AfterBevySystems::AfterLayout),
             );
     }
 }
@@ -534,5 +538,22 @@ fn show_hud(
             text.0 = content;
         }
         colour.set_if_neq(TextColor(line.colour(&readings)));
+    }
+}
+
+/// Where the HUD's shown boxes lie on the window, for the view to fit the scene clear of them.
+fn publish_area(
+    boxes: Query<(&ComputedNode, &UiGlobalTransform, &InheritedVisibility), With<Hud>>,
+    ui_scale: Res<UiScale>,
+    mut area: ResMut<HudArea>,
+) {
+    let rects: Vec<Rect> = boxes
+        .iter()
+        .filter(|(_, _, visibility)| visibility.get())
+        .map(|(node, transform, _)| window_rect(node, transform, &ui_scale))
+        .filter(|rect| !rect.is_empty())
+        .collect();
+    if area.0 != rects {
+        area.0 = rects;
     }
 }

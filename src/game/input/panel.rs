@@ -14,7 +14,9 @@ use bevy::ui_widgets::{
 
 use crate::game::input::controls::{Action, Parameter};
 use crate::game::schedule::{AfterBevySystems, GameSystems, ScreenSystems};
-use crate::game::shared::{ControlsArea, Overlays, SceneName, linear_damping_readout, readable};
+use crate::game::shared::{
+    ControlsArea, Overlays, SceneName, linear_damping_readout, readable, window_rect,
+};
 use crate::physics::{Integrator, Scenario, SceneParams};
 
 pub struct PanelPlugin;
@@ -77,6 +79,10 @@ pub enum PanelButton {
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 pub struct PanelSlider(pub Parameter);
 
+/// The value at one end of a parameter's slider.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SliderEnd(pub Parameter);
+
 /// A text showing a value the panel controls.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 enum Readout {
@@ -89,10 +95,13 @@ const TEXT: Color = Color::srgb(0.9, 0.9, 0.9);
 const BUTTON: Color = Color::srgba(0.16, 0.17, 0.2, 0.9);
 const LIT: Color = Color::srgb(0.2, 0.42, 0.7);
 const BORDER: Color = Color::srgb(0.35, 0.36, 0.42);
-const BODY: Color = Color::srgba(0.0, 0.0, 0.0, 0.7);
+/// Near opaque: a long HUD line under the panel must not read through it.
+const BODY: Color = Color::srgba(0.0, 0.0, 0.0, 0.92);
 const TRACK: Color = Color::srgb(0.25, 0.26, 0.3);
 const THUMB: Color = Color::srgb(0.85, 0.85, 0.9);
 const FONT_SIZE: f32 = 13.0;
+const END_FONT_SIZE: f32 = 10.0;
+const DIM: Color = Color::srgb(0.6, 0.6, 0.65);
 /// Big enough for a fingertip.
 const BUTTON_HEIGHT: f32 = 30.0;
 const SLIDER_WIDTH: f32 = 150.0;
@@ -107,6 +116,17 @@ impl Parameter {
             Self::Mass => (-3.0, 3.0, 0.1),
             Self::LinearDamping => (0.0, 50.0, 0.5),
             Self::AngularDamping => (0.0, 20.0, 0.1),
+        }
+    }
+
+    /// A slider's end as the readout shows the value (the linear damping by its coefficient,
+    /// whose rate depends on the mass).
+    pub fn end_label(self, position: f32) -> String {
+        let value = readable(self.value_at(position));
+        match self {
+            Self::Stiffness | Self::Mass => value,
+            Self::LinearDamping => format!("b {value}"),
+            Self::AngularDamping => format!("{value} /s"),
         }
     }
 
@@ -186,7 +206,7 @@ fn spawn_row(commands: &mut Commands, parent: Entity, title: &str) -> Entity {
         .id();
     if !title.is_empty() {
         commands.spawn((
-            coloured_text(title, Color::srgb(0.6, 0.6, 0.65)),
+            coloured_text(title, DIM),
             Node {
                 width: px(64),
                 ..default()
@@ -203,7 +223,9 @@ fn spawn_panel(mut commands: Commands) {
             Name::new("Panel"),
             Panel,
             // Bottom right, above the help line: the energy graph has the top right. The body
-            // unfolds upward from the button.
+            // unfolds upward from the button, over the HUD's lines where a small window
+            // makes them meet.
+            GlobalZIndex(1),
             Node {
                 position_type: PositionType::Absolute,
                 bottom: px(40),
@@ -306,6 +328,17 @@ fn spawn_panel(mut commands: Commands) {
 
 fn spawn_slider(commands: &mut Commands, row: Entity, parameter: Parameter) {
     let (start, end, step) = parameter.slider();
+    // The track with its ends' values under it, in the readout's units.
+    let column = commands
+        .spawn((
+            Node {
+                flex_direction: FlexDirection::Column,
+                margin: UiRect::vertical(px(3)),
+                ..default()
+            },
+            ChildOf(row),
+        ))
+        .id();
     commands.spawn((
         Name::new(format!("Slider {}", parameter.name())),
         Slider {
@@ -318,11 +351,10 @@ fn spawn_slider(commands: &mut Commands, row: Entity, parameter: Parameter) {
         Node {
             width: px(SLIDER_WIDTH),
             height: px(THUMB_SIZE),
-            margin: UiRect::vertical(px(6)),
             ..default()
         },
         BackgroundColor(TRACK),
-        ChildOf(row),
+        ChildOf(column),
         children![(
             SliderThumb,
             Node {
@@ -334,17 +366,27 @@ fn spawn_slider(commands: &mut Commands, row: Entity, parameter: Parameter) {
             BackgroundColor(THUMB),
         )],
     ));
+    let ends = commands
+        .spawn((
+            Node {
+                width: px(SLIDER_WIDTH),
+                justify_content: JustifyContent::SpaceBetween,
+                ..default()
+            },
+            ChildOf(column),
+        ))
+        .id();
+    for position in [start, end] {
+        commands.spawn((
+            SliderEnd(parameter),
+            Text::new(parameter.end_label(position)),
+            TextFont::from_font_size(END_FONT_SIZE),
+            TextColor(DIM),
+            ChildOf(ends),
+        ));
+    }
 }
 
-/// Where a UI node lies in the window, in logical pixels (what the pointer and the page use):
-/// the node's physical rectangle over the window's scale factor. `ComputedNode`'s inverse
-/// scale factor also divides by the UI scale, which is put back.
-fn window_rect(node: &ComputedNode, transform: &UiGlobalTransform, ui_scale: &UiScale) -> Rect {
-    let scale = node.inverse_scale_factor() * ui_scale.0;
-    Rect::from_center_size(transform.translation * scale, node.size() * scale)
-}
-
-/// What pressing a button does.
 fn press(does: PanelButton, open: &mut PanelOpen, actions: &mut MessageWriter<Action>) {
     match does {
         PanelButton::Fold => open.0 = !open.0,

@@ -10,9 +10,11 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
-use crate::game::ghosts::{GhostKind, Ghosts};
+use crate::game::ghosts::{Ghost, GhostKind, Ghosts};
 use crate::game::schedule::ScreenSystems;
-use crate::game::screen::view::interpolated_state;
+use crate::game::screen::graph::graph_frame;
+use crate::game::screen::plot::plot_footprint;
+use crate::game::screen::view::{interpolated_state, view_area, world_per_pixel};
 use crate::game::shared::Overlays;
 use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox};
 use crate::physics::{Integrator, MassProperties, SCENE_SIZE, SceneParams};
@@ -215,37 +217,123 @@ fn draw_trail(mut gizmos: Gizmos, trail: Res<Trail>) {
     );
 }
 
-/// A ghost's name, drawn above its outline.
+/// A ghost's name, drawn beside its outline.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 struct GhostLabel(GhostKind);
 
+/// The names' size in the world, and on screen at the least (on a phone the scene is small).
 const GHOST_LABEL_SIZE: f32 = 11.0;
+const GHOST_LABEL_PIXELS: f32 = 11.0;
+
+/// Where a column of `lines` names, each `line` high and at most `width` wide, goes beside an outline at `centre` that
+/// reaches `reach` from it: above, below, right or left of it, the first that lies inside the
+/// tutorial's screen and clear of every rectangle of `avoid` (the energy graph, the plot);
+/// above when none does. Returned as the offset from `centre` of the column's first line and
+/// the step to the next (names that coincide, most ghosts on a soft band, keep apart).
+pub fn label_column(
+    centre: Vec2,
+    reach: f32,
+    lines: usize,
+    line: f32,
+    width: f32,
+    avoid: &[Rect],
+) -> (Vec2, Vec2) {
+    let height = lines as f32 * line;
+    let half_line = line / 2.0;
+    let up = Vec2::new(0.0, line);
+    // (The first line's centre, the step), for above, below, right and left.
+    let sides = [
+        (Vec2::new(0.0, reach + half_line), up),
+        (Vec2::new(0.0, -reach - half_line), -up),
+        (
+            Vec2::new(reach + width / 2.0, height / 2.0 - half_line),
+            -up,
+        ),
+        (
+            Vec2::new(-reach - width / 2.0, height / 2.0 - half_line),
+            -up,
+        ),
+    ];
+    let scene = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2());
+    let column = |(first, step): (Vec2, Vec2)| {
+        let last = first + step * (lines.max(1) - 1) as f32;
+        Rect::from_corners(centre + first, centre + last)
+            .inflate(half_line)
+            .union(Rect::from_center_size(
+                centre + first,
+                Vec2::new(width, 0.0),
+            ))
+    };
+    sides
+        .into_iter()
+        .find(|&side| {
+            let rect = column(side);
+            scene.union(rect) == scene && avoid.iter().all(|a| a.intersect(rect).is_empty())
+        })
+        .unwrap_or(sides[0])
+}
 
 /// Each ghost as a thin outline in its colour with its band and its name, between its last
 /// two steps as the live box is drawn; a diverged one crossed out where it froze, with the
 /// step. The ghost of the live box's own integrator is not drawn (it lies under the box).
+#[allow(clippy::too_many_arguments)]
 fn draw_ghosts(
     mut commands: Commands,
     mut gizmos: Gizmos,
     fixed_time: Res<Time<Fixed>>,
     ghosts: Res<Ghosts>,
     integrator: Res<Integrator>,
+    overlays: Res<Overlays>,
+    windows: Query<&Window, With<bevy::window::PrimaryWindow>>,
+    cameras: Query<(&Projection, &GlobalTransform), With<Camera2d>>,
     mut labels: Query<(
         Entity,
         &GhostLabel,
         &mut Text2d,
+        &mut TextFont,
         &mut Transform,
         &mut Visibility,
     )>,
 ) {
     let alpha = fixed_time.overstep_fraction_f64().clamp(0.0, 1.0);
+    let name_of = |ghost: &Ghost| match ghost.diverged_at {
+        Some(step) => format!("{} diverged @{step}", ghost.kind.name()),
+        None => ghost.kind.name().to_owned(),
+    };
+    let view = cameras
+        .iter()
+        .find_map(|(projection, transform)| view_area(projection, transform));
+    let font_size =
+        GHOST_LABEL_SIZE.max(GHOST_LABEL_PIXELS * world_per_pixel(windows.iter().next(), view));
+    let line = font_size * 1.2;
+    // The names keep off the energy graph (with the HUD) and the plot (when on).
+    let mut avoid = Vec::new();
+    if !overlays.hud_hidden
+        && let Some(view) = view
+    {
+        avoid.push(graph_frame(view));
+    }
+    if overlays.plot {
+        avoid.push(plot_footprint());
+    }
+    let widest = ghosts
+        .ghosts
+        .iter()
+        .map(|ghost| name_of(ghost).len())
+        .max()
+        .unwrap_or(0) as f32
+        * font_size
+        * 0.6;
     let mut unlabelled: Vec<GhostKind> = ghosts.ghosts.iter().map(|g| g.kind).collect();
-    for (entity, label, mut text, mut transform, mut visibility) in &mut labels {
+    for (entity, label, mut text, mut font, mut transform, mut visibility) in &mut labels {
         let Some(ghost) = ghosts.ghosts.iter().find(|g| g.kind == label.0) else {
             commands.entity(entity).despawn();
             continue;
         };
         unlabelled.retain(|&kind| kind != label.0);
+        if font.font_size != FontSize::Px(font_size) {
+            font.font_size = FontSize::Px(font_size);
+        }
         let hidden = ghost.kind == GhostKind::Method(*integrator);
         visibility.set_if_neq(if hidden {
             Visibility::Hidden
@@ -273,30 +361,35 @@ fn draw_ghosts(
             let corner = band.attachment(&state).as_vec2();
             gizmos.line_2d(corner, band.anchor.as_vec2(), colour.with_alpha(0.35));
         }
-        let name = match ghost.diverged_at {
-            Some(step) => {
-                let half = size / 2.0;
-                for corner in [half, Vec2::new(half.x, -half.y)] {
-                    let a = centre + rotation * corner;
-                    let b = centre - rotation * corner;
-                    gizmos.line_2d(a, b, colour);
-                }
-                format!("{} diverged @{step}", ghost.kind.name())
+        if ghost.diverged_at.is_some() {
+            let half = size / 2.0;
+            for corner in [half, Vec2::new(half.x, -half.y)] {
+                let a = centre + rotation * corner;
+                let b = centre - rotation * corner;
+                gizmos.line_2d(a, b, colour);
             }
-            None => ghost.kind.name().to_owned(),
-        };
+        }
+        let name = name_of(ghost);
         if text.0 != name {
             text.0 = name;
         }
-        // Stacked by the ghost's place in the list, so that ghosts that coincide (most of
-        // them, on a soft band) keep their names apart.
+        // Each name on its own line of the column, by the ghost's place among those drawn.
         let place = ghosts
             .ghosts
             .iter()
+            .filter(|g| g.kind != GhostKind::Method(*integrator))
             .position(|g| g.kind == ghost.kind)
             .unwrap_or(0);
-        let above = size.y.max(size.x) * 0.75 + place as f32 * (GHOST_LABEL_SIZE + 2.0);
-        transform.translation = (centre + Vec2::new(0.0, above)).extend(2.0);
+        let reach = size.length() / 2.0 + 4.0;
+        let (first, step) = label_column(
+            centre,
+            reach,
+            ghosts.ghosts.len().saturating_sub(1),
+            line,
+            widest,
+            &avoid,
+        );
+        transform.translation = (centre + first + step * place as f32).extend(2.0);
     }
     for kind in unlabelled {
         commands.spawn((

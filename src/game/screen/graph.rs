@@ -7,6 +7,7 @@ use bevy::prelude::*;
 use crate::game::hud::history::EnergyHistory;
 use crate::game::hud::{BAND_ENERGY_COLOUR, KINETIC_COLOUR, TOTAL_COLOUR};
 use crate::game::schedule::ScreenSystems;
+use crate::game::screen::view::view_area;
 use crate::game::shared::Overlays;
 use crate::physics::{Energies, SCENE_SIZE};
 
@@ -34,6 +35,13 @@ fn hud_shown(overlays: Res<Overlays>) -> bool {
 const GRAPH_SIZE: Vec2 = Vec2::new(200.0, 80.0);
 const GRAPH_MARGIN: f32 = 8.0;
 
+/// The graph's frame in the world: the top-right corner of the tutorial's screen or of the
+/// view, whichever is lower.
+pub fn graph_frame(view: Rect) -> Rect {
+    let top_right = view.max.min(SCENE_SIZE.as_vec2() / 2.0) - Vec2::splat(GRAPH_MARGIN);
+    Rect::from_corners(top_right - GRAPH_SIZE, top_right)
+}
+
 /// Kinetic, band and total energy over the last seconds, in the top-right corner of the
 /// tutorial's screen or of the view, whichever is lower (on a tall phone the view reaches far
 /// above the scene, where the HUD is), scaled so that the largest total in view reaches the top.
@@ -42,15 +50,10 @@ fn draw_energy_graph(
     history: Res<EnergyHistory>,
     camera: Single<(&Projection, &GlobalTransform), With<Camera2d>>,
 ) {
-    let (Projection::Orthographic(projection), transform) = *camera else {
+    let Some(view) = view_area(camera.0, camera.1) else {
         return;
     };
-    // The view's area in the world: the camera may sit off the origin (the scene fitted to
-    // the part of the window the panel leaves free).
-    let centre = transform.translation().truncate();
-    let area = Rect::from_corners(projection.area.min + centre, projection.area.max + centre);
-    let top_right = area.max.min(SCENE_SIZE.as_vec2() / 2.0) - Vec2::splat(GRAPH_MARGIN);
-    let frame = Rect::from_corners(top_right - GRAPH_SIZE, top_right);
+    let frame = graph_frame(view);
     gizmos.rect_2d(
         Isometry2d::from_translation(frame.center()),
         GRAPH_SIZE,

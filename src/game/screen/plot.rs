@@ -10,6 +10,7 @@ use bevy::window::PrimaryWindow;
 
 use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::schedule::ScreenSystems;
+use crate::game::screen::view::{view_area, world_per_pixel};
 use crate::game::shared::Overlays;
 use crate::physics::{Integrator, SCENE_SIZE, SceneParams};
 
@@ -73,6 +74,16 @@ pub fn plot_frame() -> Rect {
     Rect::from_corners(min, min + PLOT_SIZE)
 }
 
+/// What the plot takes of the world with its captions above and below and the names to the
+/// right of its points: where the ghosts' names must not go.
+pub fn plot_footprint() -> Rect {
+    let frame = plot_frame();
+    Rect::from_corners(
+        frame.min - Vec2::new(0.0, 2.0 * LABEL_SIZE),
+        frame.max + Vec2::new(9.0 * LABEL_SIZE, 3.0 * LABEL_SIZE),
+    )
+}
+
 /// A point's place in `frame`: each axis's decade clamped into the frame; a diverged ghost at
 /// the right edge.
 pub fn place(point: &PlotPoint, frame: Rect) -> Vec2 {
@@ -118,30 +129,14 @@ enum PlotCaption {
 }
 
 /// The names' size on screen, in window pixels, however small the view makes the scene.
-const LABEL_PIXELS: f32 = 11.0;
-
-/// World units a window pixel spans now (the view fits the scene to the window).
-fn world_per_pixel(
-    windows: &Query<&Window, With<PrimaryWindow>>,
-    cameras: &Query<&Projection, With<Camera2d>>,
-) -> f32 {
-    let width = windows.iter().next().map(|w| w.width());
-    let area = cameras.iter().find_map(|projection| match projection {
-        Projection::Orthographic(orthographic) => Some(orthographic.area.width()),
-        _ => None,
-    });
-    match (width, area) {
-        (Some(width), Some(area)) if width > 0.0 && area > 0.0 => area / width,
-        _ => 1.0,
-    }
-}
+pub const LABEL_PIXELS: f32 = 11.0;
 
 #[allow(clippy::too_many_arguments)]
 fn draw_plot(
     mut commands: Commands,
     mut gizmos: Gizmos,
     windows: Query<&Window, With<PrimaryWindow>>,
-    cameras: Query<&Projection, With<Camera2d>>,
+    cameras: Query<(&Projection, &GlobalTransform), With<Camera2d>>,
     overlays: Res<Overlays>,
     ghosts: Res<Ghosts>,
     params: Res<SceneParams>,
@@ -166,7 +161,10 @@ fn draw_plot(
     >,
 ) {
     // On a phone the scene is drawn small: the names keep their size on screen.
-    let font_size = LABEL_SIZE.max(LABEL_PIXELS * world_per_pixel(&windows, &cameras));
+    let view = cameras
+        .iter()
+        .find_map(|(projection, transform)| view_area(projection, transform));
+    let font_size = LABEL_SIZE.max(LABEL_PIXELS * world_per_pixel(windows.iter().next(), view));
     let shown = overlays.plot && !overlays.hud_hidden;
     if captions.is_empty() {
         for caption in [PlotCaption::Across, PlotCaption::Up, PlotCaption::Reference] {

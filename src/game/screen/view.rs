@@ -1,5 +1,5 @@
 //! The camera that keeps the tutorial's 640 x 480 scene in view at any window size, in the
-//! part of the window the on-screen panel leaves free, and the interpolation that draws the
+//! part of the window the on-screen panel and the HUD leave free, and the interpolation that draws the
 //! box between fixed steps so that motion is smooth at any display rate (as Bevy's
 //! `physics_in_fixed_timestep` example does).
 
@@ -7,7 +7,7 @@ use bevy::camera::ScalingMode;
 use bevy::prelude::*;
 
 use crate::game::schedule::{AfterStepsSystems, ScreenSystems};
-use crate::game::shared::ControlsArea;
+use crate::game::shared::{ControlsArea, HudArea};
 use crate::game::simulation::{Band, RenderSnapshots};
 use crate::physics::{BodyState, SCENE_SIZE};
 
@@ -62,23 +62,70 @@ fn scale_ui_to_window(
     }
 }
 
-/// The part of the window the on-screen controls leave free, in logical window pixels (origin
-/// at the top left): the whole window if the scene, fitted to it, lies clear of every
-/// control; else the larger (for the scene) of the areas left of and above the controls.
-pub fn free_area(window: Vec2, controls: &[Rect]) -> Rect {
+/// The part of the window the scene is fitted to, in logical window pixels (origin at the top
+/// left): of the rectangles bounded by the window's and the covered rectangles' edges, the one
+/// whose fitted scene is the largest and lies clear of every covered rectangle (the panel's,
+/// the HUD's); among equals, the largest (the whole window when nothing is in the way). With
+/// no such rectangle, the whole window.
+pub fn free_area(window: Vec2, covered: &[Rect]) -> Rect {
     let whole = Rect::from_corners(Vec2::ZERO, window);
-    let Some(bounds) = controls.iter().copied().reduce(|a, b| a.union(b)) else {
-        return whole;
+    let covered: Vec<Rect> = covered
+        .iter()
+        .map(|rect| rect.intersect(whole))
+        .filter(|rect| !rect.is_empty())
+        .collect();
+    let edges = |along: fn(Vec2) -> f32| {
+        let mut edges: Vec<f32> = covered
+            .iter()
+            .flat_map(|rect| [along(rect.min), along(rect.max)])
+            .chain([0.0, along(window)])
+            .collect();
+        edges.sort_by(f32::total_cmp);
+        edges.dedup();
+        edges
     };
-    if fitted_scene(whole).intersect(bounds).is_empty() {
-        return whole;
+    let (xs, ys) = (edges(|v| v.x), edges(|v| v.y));
+    let mut best: Option<(f32, f32, Rect)> = None;
+    for (i, &left) in xs.iter().enumerate() {
+        for &right in &xs[i + 1..] {
+            for (j, &top) in ys.iter().enumerate() {
+                for &bottom in &ys[j + 1..] {
+                    let area = Rect::new(left, top, right, bottom);
+                    if !clear_of(fitted_scene(area), &covered) {
+                        continue;
+                    }
+                    let key = (scene_scale(area), area.width() * area.height());
+                    if best.is_none_or(|(scale, size, _)| key > (scale, size)) {
+                        best = Some((key.0, key.1, area));
+                    }
+                }
+            }
+        }
     }
-    let left = Rect::from_corners(Vec2::ZERO, Vec2::new(bounds.min.x.max(0.0), window.y));
-    let above = Rect::from_corners(Vec2::ZERO, Vec2::new(window.x, bounds.min.y.max(0.0)));
-    if scene_scale(left) >= scene_scale(above) {
-        left
-    } else {
-        above
+    best.map_or(whole, |(_, _, area)| area)
+}
+
+/// Whether `scene` lies clear of every rectangle of `covered` (touching is clear).
+pub fn clear_of(scene: Rect, covered: &[Rect]) -> bool {
+    covered.iter().all(|rect| rect.intersect(scene).is_empty())
+}
+
+/// The area to fit the scene to this frame: the present one while its scene stays in the
+/// window and clear of what covers it, and nothing else fits the scene more than 5% larger
+/// (the HUD's lines change width with their numbers: the scene does not follow each digit);
+/// else the free area.
+pub fn area_to_fit(window: Vec2, covered: &[Rect], present: Option<Rect>) -> Rect {
+    let free = free_area(window, covered);
+    let whole = Rect::from_corners(Vec2::ZERO, window);
+    match present {
+        Some(present)
+            if whole.union(present) == whole
+                && clear_of(fitted_scene(present), covered)
+                && scene_scale(free) <= scene_scale(present) * 1.05 =>
+        {
+            present
+        }
+        _ => free,
     }
 }
 
@@ -101,18 +148,22 @@ pub fn fitted_scene(area: Rect) -> Rect {
 fn fit_scene_to_free_area(
     window: Single<&Window, With<bevy::window::PrimaryWindow>>,
     controls: Res<ControlsArea>,
+    hud: Res<HudArea>,
+    mut present: Local<Option<Rect>>,
     camera: Single<(&mut Projection, &mut Transform), With<Camera2d>>,
 ) {
     if controls.0.is_empty() {
         return;
     }
     let size = window.size();
-    let free = free_area(size, &controls.0);
+    let covered: Vec<Rect> = controls.0.iter().chain(&hud.0).copied().collect();
+    let free = area_to_fit(size, &covered, *present);
     let scale = scene_scale(free);
     // A window with no room (minimised) leaves the camera as it is.
     if scale.is_nan() || scale <= 0.0 {
         return;
     }
+    *present = Some(free);
     let (mut projection, mut transform) = camera.into_inner();
     let offset = free.center() - size / 2.0;
     let position = Vec3::new(-offset.x / scale, offset.y / scale, transform.translation.z);
@@ -125,6 +176,27 @@ fn fit_scene_to_free_area(
     {
         orthographic.scaling_mode = ScalingMode::WindowSize;
         orthographic.scale = 1.0 / scale;
+    }
+}
+
+/// The part of the world the camera shows: it may sit off the origin (the scene fitted to the
+/// part of the window the panel and the HUD leave free).
+pub fn view_area(projection: &Projection, transform: &GlobalTransform) -> Option<Rect> {
+    let Projection::Orthographic(projection) = projection else {
+        return None;
+    };
+    let centre = transform.translation().truncate();
+    Some(Rect::from_corners(
+        projection.area.min + centre,
+        projection.area.max + centre,
+    ))
+}
+
+/// World units a window pixel spans now: the view's width in the world over the window's.
+pub fn world_per_pixel(window: Option<&Window>, view: Option<Rect>) -> f32 {
+    match (window.map(Window::width), view.map(|view| view.width())) {
+        (Some(width), Some(area)) if width > 0.0 && area > 0.0 => area / width,
+        _ => 1.0,
     }
 }
 
