@@ -66,6 +66,10 @@ export function publish_playback(steps, hash, recorded, matched) {
 export function publish_panel(json) {
   api().panel = JSON.parse(json);
 }
+
+export function publish_scene(x, y, width, height) {
+  api().scene = [x, y, width, height];
+}
 "#)]
 extern "C" {
     /// Offers `text` as a download; the file's name.
@@ -92,4 +96,8 @@ extern "C" {
     /// `window.rubberBandBox.panel`: each panel button's label and where it lies on the page
     /// (CSS pixels: x, y, width, height), so that a test can click what a player clicks.
     pub fn publish_panel(json: &str);
+
+    /// `window.rubberBandBox.scene`: where the tutorial's 640 x 480 screen is drawn on the
+    /// page (CSS pixels: x, y, width, height), so that a test can find the world on it.
+    pub fn publish_scene(x: f32, y: f32, width: f32, height: f32);
 }

@@ -163,7 +163,14 @@ fn fit_scene_to_free_area(
     if scale.is_nan() || scale <= 0.0 {
         return;
     }
-    *present = Some(free);
+    if *present != Some(free) {
+        #[cfg(target_arch = "wasm32")]
+        {
+            let scene = fitted_scene(free);
+            crate::game::web::publish_scene(scene.min.x, scene.min.y, scene.width(), scene.height());
+        }
+        *present = Some(free);
+    }
     let (mut projection, mut transform) = camera.into_inner();
     let offset = free.center() - size / 2.0;
     let position = Vec3::new(-offset.x / scale, offset.y / scale, transform.translation.z);
