@@ -21,7 +21,12 @@ use rubber_band_box::physics::SCENE_SIZE;
 /// compute its projection, so it goes: the test's camera (as bevy_render would compute it)
 /// maps the pointer.
 fn screen_game() -> Game {
-    let mut game = Game::with(Duration::from_millis(10), add_the_screen);
+    screen_game_with(add_the_screen)
+}
+
+/// [`screen_game`], with what `plugins` adds.
+fn screen_game_with(plugins: impl FnOnce(&mut App)) -> Game {
+    let mut game = Game::with(Duration::from_millis(10), plugins);
     let world = game.world();
     let views: Vec<Entity> = world
         .query::<(Entity, &Name)>()
@@ -575,4 +580,71 @@ fn the_ghosts_names_keep_off_the_graph_and_the_plot() {
     let under_graph = Vec2::new(graph.center().x, graph.min.y - 50.0);
     let place = label_column(under_graph, reach, lines, line, width, &avoid);
     assert!(clear(&names(under_graph, place)), "on the graph");
+}
+
+/// The same, from Bevy's own layout of the panel and the HUD (no renderer): at a desktop's
+/// and both phones' sizes, the ghosts' list on, the panel folded and open, the scene the
+/// camera shows lies inside the window and clear of every rectangle the panel and the HUD
+/// published, and those are the real ones (the fold button, the HUD's column).
+#[test]
+fn the_laid_out_panel_and_hud_leave_the_scene_clear() {
+    use rubber_band_box::game::input::panel::PanelOpen;
+    use rubber_band_box::game::shared::{ControlsArea, HudArea};
+    let mut game = screen_game_with(|app| {
+        add_the_layout(app);
+        add_the_screen(app);
+    });
+    game.tap_key(KeyCode::KeyG);
+    for size in [
+        UVec2::new(960, 720),
+        UVec2::new(390, 844),
+        UVec2::new(844, 390),
+    ] {
+        for open in [false, true] {
+            game.resize(size);
+            game.world().resource_mut::<PanelOpen>().0 = open;
+            // Laid out, published, fitted: a frame each.
+            game.update(4);
+            let name = format!("{size}, panel open: {open}");
+            let world = game.world();
+            let controls = world.resource::<ControlsArea>().0.clone();
+            let hud = world.resource::<HudArea>().0.clone();
+            assert!(
+                !controls.is_empty() && hud.len() >= 3,
+                "{name}: laid out: {controls:?} {hud:?}"
+            );
+            // The HUD's column starts at its top left corner, below it the ghosts' list.
+            assert!(
+                hud.iter()
+                    .any(|r| r.min.x < 10.0 && r.min.y < 10.0 && r.height() > 50.0)
+            );
+            let window = size.as_vec2();
+            let mut cameras = world.query_filtered::<(&Projection, &Transform), With<Camera2d>>();
+            let (projection, transform) = cameras.single(world).unwrap();
+            let Projection::Orthographic(orthographic) = projection else {
+                panic!("{name}: the camera is orthographic");
+            };
+            // World to window: a world unit is 1 / scale pixels, the camera at the centre.
+            let pixels = 1.0 / orthographic.scale;
+            let centre = window / 2.0
+                + Vec2::new(-transform.translation.x, transform.translation.y) * pixels;
+            let scene = Rect::from_center_size(centre, SCENE_SIZE.as_vec2() * pixels);
+            let inside = Rect::from_corners(Vec2::ZERO, window);
+            assert!(
+                scene.width() > 150.0,
+                "{name}: the scene is drawn ({scene:?})"
+            );
+            assert!(
+                inside.union(scene).size().distance(inside.size()) < 0.01,
+                "{name}: {scene:?} leaves the window"
+            );
+            for covering in controls.iter().chain(&hud) {
+                let overlap = scene.intersect(*covering);
+                assert!(
+                    overlap.is_empty() || overlap.width().min(overlap.height()) < 0.01,
+                    "{name}: {scene:?} lies under {covering:?}"
+                );
+            }
+        }
+    }
 }

@@ -294,3 +294,76 @@ fn the_sliders_ends_say_their_values_in_the_readouts_units() {
     expected.sort();
     assert_eq!(ends, expected);
 }
+
+/// The panel's buttons where Bevy's own UI layout puts them (no renderer): what a window
+/// shows, read back as the page and the pointer read it.
+fn laid_out_game() -> Game {
+    let mut game = Game::with(Duration::from_millis(10), add_the_layout);
+    game.update(2);
+    game
+}
+
+/// Where the button that does `does` lies on the window, as laid out.
+fn laid_out(game: &mut Game, does: PanelButton) -> Rect {
+    let world = game.world();
+    let scale = world.resource::<UiScale>().0;
+    let mut buttons = world.query::<(&PanelButton, &ComputedNode, &UiGlobalTransform)>();
+    let (_, node, transform) = buttons
+        .iter(world)
+        .find(|(b, _, _)| **b == does)
+        .unwrap_or_else(|| panic!("no button for {does:?}"));
+    let s = node.inverse_scale_factor() * scale;
+    Rect::from_center_size(transform.translation * s, node.size() * s)
+}
+
+/// A phone's tap, the way the game takes it: a finger's `TouchInput` at the place Bevy's UI
+/// layout gave the button (`tap_buttons` reads the touches; picking misses a new finger's
+/// first press in the browser). The fold button unfolds the panel, the laid-out pause button
+/// pauses the game, and neither press grabs the box; the panel's own footprint
+/// (`ControlsArea`, published after the layout) covers both buttons, and a finger beside the
+/// panel still pulls.
+#[test]
+fn a_finger_taps_a_laid_out_button_and_never_grabs_the_box() {
+    let mut game = laid_out_game();
+    let fold = laid_out(&mut game, PanelButton::Fold);
+    assert!(
+        fold.width() > 20.0 && fold.height() >= 30.0,
+        "laid out: {fold:?}"
+    );
+    // Bottom right of the 1280 x 720 window.
+    assert!(fold.max.x <= 1280.0 && fold.min.x > 1000.0 && fold.max.y > 600.0);
+    let area = game.world().resource::<ControlsArea>().clone();
+    assert!(area.contains(fold.center()), "{area:?} holds {fold:?}");
+
+    let tap = |game: &mut Game, id: u64, at: Vec2| {
+        game.touch_screen(id, TouchPhase::Started, at);
+        game.update(1);
+        let grabbed = !game.bands().is_empty();
+        game.touch_screen(id, TouchPhase::Ended, at);
+        game.update(2);
+        grabbed
+    };
+    assert!(!game.world().resource::<PanelOpen>().0);
+    assert!(!tap(&mut game, 1, fold.center()), "the tap grabbed the box");
+    assert!(
+        game.world().resource::<PanelOpen>().0,
+        "the tap unfolded it"
+    );
+
+    let pause = laid_out(&mut game, PanelButton::Send(Action::TogglePause));
+    assert!(pause.width() > 20.0, "unfolded, the pause button has room");
+    let area = game.world().resource::<ControlsArea>().clone();
+    assert!(area.contains(pause.center()), "{area:?} holds {pause:?}");
+    let paused = |game: &mut Game| game.world().resource::<Time<Virtual>>().is_paused();
+    assert!(!paused(&mut game));
+    assert!(
+        !tap(&mut game, 2, pause.center()),
+        "the tap grabbed the box"
+    );
+    assert!(paused(&mut game), "the tap paused the game");
+
+    // A finger on the scene, clear of the panel, pulls.
+    game.touch(3, TouchPhase::Started, DVec2::new(-100.0, 50.0));
+    game.update(1);
+    assert_eq!(game.bands().len(), 1, "a finger beside the panel pulls");
+}

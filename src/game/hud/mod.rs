@@ -541,16 +541,19 @@ fn show_hud(
     }
 }
 
-/// Where the HUD's shown boxes lie on the window, for the view to fit the scene clear of them.
+/// Where the HUD's shown boxes lie on the window, for the view to fit the scene clear of them
+/// (none while H hides the HUD; a box with nothing to show, the ghosts' list while they are
+/// off, has no size).
 fn publish_area(
-    boxes: Query<(&ComputedNode, &UiGlobalTransform, &InheritedVisibility), With<Hud>>,
+    boxes: Query<(&ComputedNode, &UiGlobalTransform), With<Hud>>,
+    overlays: Res<Overlays>,
     ui_scale: Res<UiScale>,
     mut area: ResMut<HudArea>,
 ) {
     let rects: Vec<Rect> = boxes
         .iter()
-        .filter(|(_, _, visibility)| visibility.get())
-        .map(|(node, transform, _)| window_rect(node, transform, &ui_scale))
+        .filter(|_| !overlays.hud_hidden)
+        .map(|(node, transform)| window_rect(node, transform, &ui_scale))
         .filter(|rect| !rect.is_empty())
         .collect();
     if area.0 != rects {

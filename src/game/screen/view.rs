@@ -167,7 +167,12 @@ fn fit_scene_to_free_area(
         #[cfg(target_arch = "wasm32")]
         {
             let scene = fitted_scene(free);
-            crate::game::web::publish_scene(scene.min.x, scene.min.y, scene.width(), scene.height());
+            crate::game::web::publish_scene(
+                scene.min.x,
+                scene.min.y,
+                scene.width(),
+                scene.height(),
+            );
         }
         *present = Some(free);
     }
