@@ -317,6 +317,8 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
             .to_owned()
     };
     assert!(row("rk4").ends_with("UNSTABLE: k<1.0e5"), "{ghosts}");
+    // A limit under 1e4 reads whole: explicit Euler's at the tutorial's damping and 100 Hz.
+    assert!(row("euler").ends_with("UNSTABLE: k<221"), "{ghosts}");
     assert!(row("implicit").ends_with("any k"), "{ghosts}");
 }
 
@@ -365,4 +367,124 @@ fn the_hud_takes_no_press() {
         let pickable = pickable.expect("every HUD node says how it is picked");
         assert!(!pickable.should_block_lower && !pickable.is_hoverable);
     }
+}
+
+/// Each line's colour: the energy lines in the energy graph's colours (the HUD is its legend),
+/// the integrator line and the stability line in the warning colour exactly when the live
+/// method diverged or is past its limit, the heading, the replay line, the ghosts' list and
+/// the help line dim, the rest plain text.
+#[test]
+fn each_line_has_its_colour() {
+    use rubber_band_box::game::hud::{BAND_ENERGY_COLOUR, KINETIC_COLOUR, TOTAL_COLOUR};
+    use rubber_band_box::physics::stability::{Limit, Margin};
+    let calm = readings();
+    let colour = |line: HudLine, r: &HudReadings| line.colour(r);
+    assert_eq!(colour(HudLine::KineticLinear, &calm), KINETIC_COLOUR);
+    assert_eq!(colour(HudLine::KineticRotational, &calm), KINETIC_COLOUR);
+    assert_eq!(colour(HudLine::BandPotential, &calm), BAND_ENERGY_COLOUR);
+    assert_eq!(colour(HudLine::Total, &calm), TOTAL_COLOUR);
+    let text = colour(HudLine::SceneName, &calm);
+    let dim = colour(HudLine::EnergyHeading, &calm);
+    assert_ne!(text, dim);
+    for line in [HudLine::Help, HudLine::Replay, HudLine::Ghosts] {
+        assert_eq!(colour(line, &calm), dim, "{line:?}");
+    }
+    for line in [
+        HudLine::Integrator,
+        HudLine::Clock,
+        HudLine::Parameters,
+        HudLine::Stability,
+        HudLine::Ledger,
+        HudLine::Residual,
+    ] {
+        assert_eq!(colour(line, &calm), text, "{line:?}");
+    }
+    // Diverged: the integrator line warns, in a colour of its own.
+    let diverged = HudReadings {
+        divergence: Some((Integrator::Euler, 12)),
+        ..readings()
+    };
+    let warning = colour(HudLine::Integrator, &diverged);
+    for other in [text, dim, KINETIC_COLOUR, BAND_ENERGY_COLOUR, TOTAL_COLOUR] {
+        assert_ne!(warning, other);
+    }
+    assert_eq!(colour(HudLine::Stability, &diverged), text);
+    // Past the live method's limit: the stability line warns; within it, it does not.
+    let margin = |integrator: Integrator, holds: bool| Margin {
+        integrator,
+        omega_dt: 0.5,
+        spectral_radius: if holds { 0.9 } else { 1.1 },
+        holds,
+        stiffest: Limit::UpTo(100.0),
+        limit_omega_dt: Some(0.3),
+    };
+    let past = HudReadings {
+        integrator: Integrator::Euler,
+        margins: vec![margin(Integrator::Euler, false)],
+        ..readings()
+    };
+    assert_eq!(colour(HudLine::Stability, &past), warning);
+    assert_eq!(colour(HudLine::Integrator, &past), text);
+    // Another method past its limit is the ghosts' list's business, not the live line's.
+    let other = HudReadings {
+        integrator: Integrator::Euler,
+        margins: vec![
+            margin(Integrator::Euler, true),
+            margin(Integrator::Rk4, false),
+        ],
+        ..readings()
+    };
+    assert_eq!(colour(HudLine::Stability, &other), text);
+}
+
+/// The residual said against the energy that passed through, once some has: 2e-6 J of error
+/// in 100 J moved by the hand and 50 J damped out is 1.3e-8 of it.
+#[test]
+fn the_residual_is_said_against_the_energy_through() {
+    let mut ledger = EnergyLedger::starting_at(0.0);
+    ledger.hand(100.0);
+    ledger.dissipated = 50.0;
+    let r = HudReadings {
+        ledger,
+        residual: 2e-6,
+        ..readings()
+    };
+    assert_eq!(
+        HudLine::Residual.text(&r),
+        "  integrator's error +2.00e-6 (1.3e-8 of energy through)"
+    );
+}
+
+/// A ghost's work: its substeps and evaluations when it took more than one substep, its
+/// evaluations alone when it took one; the steps its budget capped, if any.
+#[test]
+fn a_ghosts_work_says_its_substeps_when_there_are_several() {
+    use rubber_band_box::game::hud::GhostReading;
+    let ghost = |name: &'static str, substeps: u32, evaluations: u32, capped: u64| GhostReading {
+        name,
+        live: false,
+        distance: Some(1e-3),
+        residual: 0.0,
+        substeps,
+        evaluations,
+        ns_per_step: 100.0,
+        diverged_at: None,
+        capped,
+    };
+    let r = HudReadings {
+        ghosts: vec![ghost("rk4", 1, 4, 0), ghost("reference", 3, 72, 5)],
+        ..readings()
+    };
+    let list = HudLine::Ghosts.text(&r);
+    let row = |name: &str| {
+        list.lines()
+            .find(|line| line.trim_start().starts_with(name))
+            .unwrap_or_else(|| panic!("{name} in\n{list}"))
+            .to_owned()
+    };
+    assert!(row("rk4").contains(" 4 evals"), "{list}");
+    assert!(!row("rk4").contains("substeps"), "{list}");
+    assert!(row("reference").contains("3 substeps, 72 evals"), "{list}");
+    assert!(row("reference").contains("capped 5 steps"), "{list}");
+    assert!(!row("rk4").contains("capped"), "{list}");
 }

@@ -46,13 +46,9 @@ impl Plugin for SimulationPlugin {
             .add_systems(
                 FixedUpdate,
                 (
-                    (book_hand_work, accumulate_band_force, accumulate_damping)
-                        .chain()
-                        .in_set(PhysicsSystems::Accumulate),
+                    accumulate.in_set(PhysicsSystems::Accumulate),
                     integrate.in_set(PhysicsSystems::Integrate),
-                    (publish_snapshots, settle_books, end_taps, count_step)
-                        .chain()
-                        .in_set(PhysicsSystems::Publish),
+                    publish.in_set(PhysicsSystems::Publish),
                 ),
             );
     }
@@ -142,7 +138,7 @@ pub struct EnergyBooks {
 /// Kinetic and band energy of every body, with the bands as they are now.
 pub fn mechanical_energies(
     params: &SceneParams,
-    bodies: &Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    bodies: &Bodies,
     bands: &Query<&Band>,
 ) -> Energies {
     let kinetic: Energies = bodies
@@ -164,28 +160,17 @@ pub fn mechanical_energies(
     Energies { band, ..kinetic }
 }
 
-fn book_hand_work(
-    params: Res<SceneParams>,
-    bodies: Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
-    bands: Query<&Band>,
-    mut books: ResMut<EnergyBooks>,
-) {
-    let now = mechanical_energies(&params, &bodies, &bands).total();
-    let settled = books.settled;
-    books.ledger.open_step(settled, now);
-}
-
-fn settle_books(
-    params: Res<SceneParams>,
-    bodies: Query<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>,
-    bands: Query<&Band>,
-    mut books: ResMut<EnergyBooks>,
-) {
-    let energies = mechanical_energies(&params, &bodies, &bands);
-    books.energies = energies;
-    books.settled = Some(energies.total());
-    books.residual = books.ledger.residual(energies.total());
-}
+/// The bodies the energy books count: their state and mass.
+pub type Bodies<'w, 's> = Query<
+    'w,
+    's,
+    (
+        &'static LinearState,
+        &'static AngularState,
+        &'static MassProperties,
+    ),
+    With<RigidBox>,
+>;
 
 /// Puts every schedule the app has now on the single-threaded executor: for one box the
 /// multi-threaded one costs many times more per tick (docs/benchmarks.md). The benchmarks
@@ -273,14 +258,27 @@ fn reset_bodies_and_books(
     *books = EnergyBooks::default();
 }
 
-/// Band force k·(anchor − corner) at the corner, and its torque r × F.
-fn accumulate_band_force(
+/// Before the step, in one system (a system a step costs about as much as the box's physics,
+/// docs/benchmarks.md): the hand's work since the last step booked, then on each body the
+/// band's force k·(anchor − corner) at its corner with its torque r × F, and damping's force
+/// −b·v and torque −c·I·ω.
+fn accumulate(
     params: Res<SceneParams>,
     bands: Query<&Band>,
-    mut bodies: Query<(&LinearState, &AngularState, &mut ForceAccumulator)>,
+    energies: Bodies,
+    mut bodies: Query<(
+        &LinearState,
+        &AngularState,
+        &MassProperties,
+        &mut ForceAccumulator,
+    )>,
+    mut books: ResMut<EnergyBooks>,
 ) {
+    let now = mechanical_energies(&params, &energies, &bands).total();
+    let settled = books.settled;
+    books.ledger.open_step(settled, now);
     for band in &bands {
-        let Ok((linear, angular, mut accumulator)) = bodies.get_mut(band.body) else {
+        let Ok((linear, angular, _, mut accumulator)) = bodies.get_mut(band.body) else {
             continue;
         };
         if accumulator.band.is_some() {
@@ -293,18 +291,6 @@ fn accumulate_band_force(
             .wrench(&body_state(linear, angular), params.stiffness);
         accumulator.band = Some(band.ends);
     }
-}
-
-/// Damping force −b·v and damping torque −c·I·ω.
-fn accumulate_damping(
-    params: Res<SceneParams>,
-    mut bodies: Query<(
-        &LinearState,
-        &AngularState,
-        &MassProperties,
-        &mut ForceAccumulator,
-    )>,
-) {
     for (linear, angular, mass, mut accumulator) in &mut bodies {
         accumulator.forces.damping += damping_wrench(
             &body_state(linear, angular),
@@ -373,20 +359,30 @@ fn integrate(
     }
 }
 
-fn publish_snapshots(mut bodies: Query<(&LinearState, &AngularState, &mut RenderSnapshots)>) {
-    for (linear, angular, mut snapshots) in &mut bodies {
+/// After the step, in one system: the render snapshots moved on, the energy books settled
+/// (the energies now, the residual), a tap's band removed after its one step, the step
+/// counted.
+#[allow(clippy::too_many_arguments)]
+fn publish(
+    mut commands: Commands,
+    params: Res<SceneParams>,
+    bands: Query<&Band>,
+    taps: Query<Entity, (With<Band>, With<Tap>)>,
+    energies: Bodies,
+    mut snapshots: Query<(&LinearState, &AngularState, &mut RenderSnapshots)>,
+    mut books: ResMut<EnergyBooks>,
+    mut steps: ResMut<StepCount>,
+) {
+    for (linear, angular, mut snapshots) in &mut snapshots {
         snapshots.previous = snapshots.current;
         snapshots.current = body_state(linear, angular);
     }
-}
-
-/// A tap's band has had its one step: remove it.
-fn end_taps(mut commands: Commands, taps: Query<Entity, (With<Band>, With<Tap>)>) {
+    let energies = mechanical_energies(&params, &energies, &bands);
+    books.energies = energies;
+    books.settled = Some(energies.total());
+    books.residual = books.ledger.residual(energies.total());
     for band in &taps {
         commands.entity(band).despawn();
     }
-}
-
-fn count_step(mut steps: ResMut<StepCount>) {
     steps.0 += 1;
 }
