@@ -7,9 +7,9 @@
 # Two runs:
 # - core (the default): src/physics/ against the core's tests (tests/core.rs,
 #   tests/integrators.rs without the soak, tests/cli.rs). Results in mutants.out/.
-# - game: the game layer's logic (src/game/input/{controls,pointer,panel}.rs,
-#   src/game/simulation.rs, src/game/hud/) against the headless game's tests (controls,
-#   panel, hud, schedule, lab, draw, play, replay, signals). Results in mutants-game.out/.
+# - game: the game layer (src/game/input/{controls,pointer,panel}.rs, src/game/simulation.rs,
+#   src/game/hud/), each file against the headless tests that drive it (the groups below).
+#   Results in mutants-game.out/: the lists summed, and each group's own run beside them.
 #
 # It mutates a throw-away git worktree of HEAD in place, with a target folder of its own:
 # cargo names our crate's artifacts the same whatever folder it sits in, so a mutant built in
@@ -17,8 +17,8 @@
 # first run builds the dependencies once (about as long as a first `cargo test`), later ones
 # reuse them. The working tree is never touched.
 #
-# Usage: .ci/mutants.sh [core|game] [cargo-mutants options; default: the run's files]
-# (`--iterate` skips what the previous run of that kind caught.)
+# Usage: .ci/mutants.sh [core|game] [cargo-mutants options; core's default: its files]
+# (core: `--iterate` skips what the previous run caught.)
 # Never edit this file while it runs: bash reads a script as it goes, and a run's results are
 # copied out of its worktree by the last lines (an hour's results were lost that way once).
 set -euo pipefail
@@ -31,40 +31,56 @@ case "${1:-}" in
         shift
         ;;
 esac
-if [ "$kind" = core ]; then
-    out=mutants.out
-    # The targets go to the build as well as the test (-C): building every test target for
-    # each mutant would double its time. The soak would multiply it by ten (the invariant
-    # tests cover what it checks, over fewer steps).
-    targets=(-C --test=core -C --test=integrators -C --test=cli)
-    test_args=(-- --skip soak)
-    defaults=(--file 'src/physics/**/*.rs')
-    timeout=15
-else
-    out=mutants-game.out
-    targets=()
-    for test in controls panel hud schedule lab draw play replay signals; do
-        targets+=(-C "--test=$test")
-    done
-    test_args=()
-    # The layout (the panel's and the HUD's spawn functions) is the screen's look, not logic.
-    defaults=(--file src/game/input/controls.rs --file src/game/input/pointer.rs
-        --file src/game/input/panel.rs --file src/game/simulation.rs
-        --file 'src/game/hud/*.rs' --exclude-re 'spawn_')
-    timeout=60
-fi
-if [ $# -eq 0 ]; then set -- "${defaults[@]}"; fi
 work="$(mktemp -d)/tree"
 git worktree add --detach --quiet "$work" HEAD
 trap 'git worktree remove --force "$work"' EXIT
-# The previous results, so that `--iterate` tests only what they did not catch.
-if [ -d "$out" ]; then cp -r "$out" "$work/mutants.out"; fi
-(
-    cd "$work"
-    cargo mutants --in-place --no-shuffle --timeout "$timeout" "${targets[@]}" "$@" \
-        -- "${test_args[@]}" || true
-)
-rm -rf "$out"
-cp -r "$work/mutants.out" "$out"
+if [ "$kind" = core ]; then
+    out=mutants.out
+    if [ $# -eq 0 ]; then set -- --file 'src/physics/**/*.rs'; fi
+    # The previous results, so that `--iterate` tests only what they did not catch.
+    if [ -d "$out" ]; then cp -r "$out" "$work/mutants.out"; fi
+    (
+        cd "$work"
+        # The targets go to the build as well as the test (-C): building every test target
+        # for each mutant would double its time. The soak would multiply it by ten (the
+        # invariant tests cover what it checks, over fewer steps).
+        cargo mutants --in-place --no-shuffle --timeout 15 \
+            -C --test=core -C --test=integrators -C --test=cli "$@" \
+            -- -- --skip soak || true
+    )
+    rm -rf "$out"
+    cp -r "$work/mutants.out" "$out"
+else
+    # Each file against the tests that drive it (building them all for every mutant would
+    # triple the time): a group a line, its files then its test targets. The layout (the
+    # panel's and the HUD's spawn functions) is tried too, and counted apart (docs/testing.md).
+    out=mutants-game.out
+    groups=(
+        "src/game/input/controls.rs src/game/input/pointer.rs : controls schedule panel"
+        "src/game/simulation.rs : schedule lab hud replay"
+        "src/game/input/panel.rs : panel"
+        "src/game/hud/mod.rs src/game/hud/history.rs src/game/hud/title.rs : hud"
+    )
+    rm -rf "$out"
+    mkdir -p "$out"
+    baseline=run
+    for group in "${groups[@]}"; do
+        files=() targets=()
+        for file in ${group%%:*}; do files+=(--file "$file"); done
+        for test in ${group##*:}; do targets+=(-C "--test=$test"); done
+        name=$(basename "${group%% *}" .rs)
+        (
+            cd "$work"
+            cargo mutants --in-place --no-shuffle --timeout 60 --baseline "$baseline" \
+                "${targets[@]}" "${files[@]}" "$@" --output "$work/$name" || true
+        )
+        # The tree unmutated passed once: the same tree, the same tests.
+        baseline=skip
+        cp -r "$work/$name/mutants.out" "$out/$name"
+        for list in caught missed timeout unviable; do
+            cat "$out/$name/$list.txt" >>"$out/$list.txt" 2>/dev/null || true
+        done
+    done
+fi
 grep -c . "$out"/caught.txt "$out"/missed.txt "$out"/timeout.txt "$out"/unviable.txt \
     2>/dev/null || true
