@@ -163,6 +163,43 @@ fn vectors_and_trail_toggle() {
     assert!(!game.world().resource::<Overlays>().vectors);
 }
 
+/// G shows and hides the ghosts, P the plot (and shows the ghosts, its points), H the HUD;
+/// each toggles only its own overlay.
+#[test]
+fn ghosts_plot_and_hud_toggle() {
+    let mut game = Game::stepping();
+    let overlays = |game: &mut Game| *game.world().resource::<Overlays>();
+    let after = |game: &mut Game, key: KeyCode| {
+        game.tap_key(key);
+        game.update(1);
+        *game.world().resource::<Overlays>()
+    };
+    assert_eq!(overlays(&mut game), Overlays::default());
+    let shown = after(&mut game, KeyCode::KeyG);
+    assert_eq!(
+        shown,
+        Overlays {
+            ghosts: true,
+            ..default()
+        }
+    );
+    assert_eq!(after(&mut game, KeyCode::KeyG), Overlays::default());
+    // The plot brings the ghosts; hiding it leaves them.
+    let plotted = after(&mut game, KeyCode::KeyP);
+    assert!(
+        plotted.plot && plotted.ghosts && !plotted.hud_hidden,
+        "{plotted:?}"
+    );
+    let unplotted = after(&mut game, KeyCode::KeyP);
+    assert!(!unplotted.plot && unplotted.ghosts, "{unplotted:?}");
+    let hidden = after(&mut game, KeyCode::KeyH);
+    assert!(
+        hidden.hud_hidden && hidden.ghosts && !hidden.plot,
+        "{hidden:?}"
+    );
+    assert!(!after(&mut game, KeyCode::KeyH).hud_hidden);
+}
+
 /// The keys are listed once (`CONTROLS`): README's table, the help line and the title hint
 /// are all written from that list, so none can name a key the game does not read or miss one.
 #[test]

@@ -471,8 +471,19 @@ fn a_ghosts_work_says_its_substeps_when_there_are_several() {
         diverged_at: None,
         capped,
     };
+    use rubber_band_box::physics::stability::{Limit, Margin};
+    // A limit of exactly 1e4 is the first in powers of ten.
+    let rk4_margin = Margin {
+        integrator: Integrator::Rk4,
+        omega_dt: 0.1,
+        spectral_radius: 0.9,
+        holds: true,
+        stiffest: Limit::UpTo(1e4),
+        limit_omega_dt: Some(2.8),
+    };
     let r = HudReadings {
         ghosts: vec![ghost("rk4", 1, 4, 0), ghost("reference", 3, 72, 5)],
+        margins: vec![rk4_margin],
         ..readings()
     };
     let list = HudLine::Ghosts.text(&r);
@@ -487,4 +498,33 @@ fn a_ghosts_work_says_its_substeps_when_there_are_several() {
     assert!(row("reference").contains("3 substeps, 72 evals"), "{list}");
     assert!(row("reference").contains("capped 5 steps"), "{list}");
     assert!(!row("rk4").contains("capped"), "{list}");
+    assert!(row("rk4").ends_with("k<1.0e4"), "{list}");
+}
+
+/// Read from the game: the step and its rate from the fixed clock, and the ghosts' list marks
+/// the live box's own integrator, and only it, as live.
+#[test]
+fn the_clock_and_the_live_ghost_come_from_the_game() {
+    let mut game = Game::stepping();
+    game.update(1);
+    let clock = game.hud(HudLine::Clock);
+    assert!(clock.starts_with("step 10.00 ms (100 Hz)"), "{clock}");
+    // The ghosts' list has no box while they are off, one while they are on.
+    let display = |game: &mut Game| {
+        let world = game.world();
+        world
+            .query::<(&HudLine, &Node)>()
+            .iter(world)
+            .find(|(line, _)| **line == HudLine::Ghosts)
+            .map(|(_, node)| node.display)
+            .unwrap()
+    };
+    assert_eq!(display(&mut game), Display::None);
+    game.tap_key(KeyCode::KeyG);
+    game.update(2);
+    assert_eq!(display(&mut game), Display::Flex);
+    let list = game.hud(HudLine::Ghosts);
+    let live: Vec<&str> = list.lines().filter(|l| l.contains("(live)")).collect();
+    assert_eq!(live.len(), 1, "{list}");
+    assert!(live[0].trim_start().starts_with("auto (live)"), "{list}");
 }

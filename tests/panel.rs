@@ -192,17 +192,30 @@ fn sliders_set_parameters_through_validation() {
         1e12,
         "clamped to the range"
     );
+    // Two significant digits, as a person reads them: 10^2.5 is 316.2..., set as 320.
+    game.world().trigger(SetSliderValue {
+        entity: k,
+        change: SliderValueChange::Absolute(2.5),
+    });
+    game.update(2);
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 320.0);
+    // A key moves the slider too: ten times stiffer, a decade along.
+    game.tap_key(KeyCode::BracketRight);
+    game.update(2);
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 3200.0);
+    let shown = game.world().get::<SliderValue>(k).unwrap().0;
+    assert!((shown - 3200f32.log10()).abs() < 1e-4, "{shown}");
 
     // The mass slider itself moved: `SetSliderValue` ends in the same `ValueChange` from the
     // slider that a drag sends, which `move_slider` turns into `Action::Set`. A good value
-    // first (10^1), so that "the old value" differs from the scene's start (5 kg).
+    // first (10^2), so that "the old value" differs from the scene's start (5 kg).
     let mass_slider = slider(&mut game, Parameter::Mass);
     game.world().trigger(SetSliderValue {
         entity: mass_slider,
-        change: SliderValueChange::Absolute(1.0),
+        change: SliderValueChange::Absolute(2.0),
     });
     game.update(2);
-    assert_eq!(game.world().resource::<SceneParams>().mass, 10.0);
+    assert_eq!(game.world().resource::<SceneParams>().mass, 100.0);
     // NaN is the one position the slider's clamp lets through (every other in -3..3 is a
     // valid mass), and the scene refuses it.
     game.world().trigger(SetSliderValue {
@@ -210,11 +223,11 @@ fn sliders_set_parameters_through_validation() {
         change: SliderValueChange::Absolute(f32::NAN),
     });
     game.update(2);
-    assert_eq!(game.world().resource::<SceneParams>().mass, 10.0);
+    assert_eq!(game.world().resource::<SceneParams>().mass, 100.0);
     let said = game.world().resource::<StatusMessage>().0.clone().unwrap();
     assert!(said.starts_with("refused: mass"), "{said}");
     let shown = game.world().get::<SliderValue>(mass_slider).unwrap().0;
-    assert!((shown - 1.0).abs() < 1e-4, "{shown}");
+    assert!((shown - 2.0).abs() < 1e-4, "{shown}");
 }
 
 /// A press where the panel lies is the panel's: no band; beside it, the band.
@@ -279,17 +292,17 @@ fn the_sliders_ends_say_their_values_in_the_readouts_units() {
         .collect();
     ends.sort();
     let mut expected: Vec<(String, String)> = [
-        (Parameter::Stiffness, "0.01"),
-        (Parameter::Stiffness, "1.0e12"),
-        (Parameter::Mass, "1.0e-3"),
-        (Parameter::Mass, "1000"),
-        (Parameter::LinearDamping, "b 0"),
-        (Parameter::LinearDamping, "b 50"),
-        (Parameter::AngularDamping, "0 /s"),
-        (Parameter::AngularDamping, "20 /s"),
+        ("k", "0.01"),
+        ("k", "1.0e12"),
+        ("mass", "1.0e-3"),
+        ("mass", "1000"),
+        ("linear damping", "b 0"),
+        ("linear damping", "b 50"),
+        ("angular damping", "0 /s"),
+        ("angular damping", "20 /s"),
     ]
     .into_iter()
-    .map(|(parameter, text)| (parameter.name().to_owned(), text.to_owned()))
+    .map(|(name, text)| (name.to_owned(), text.to_owned()))
     .collect();
     expected.sort();
     assert_eq!(ends, expected);
@@ -344,6 +357,12 @@ fn a_finger_taps_a_laid_out_button_and_never_grabs_the_box() {
         grabbed
     };
     assert!(!game.world().resource::<PanelOpen>().0);
+    // Folded, the body's buttons have no size: a tap elsewhere reaches none of them.
+    tap(&mut game, 5, Vec2::new(300.0, 300.0));
+    assert!(!game.world().resource::<PanelOpen>().0);
+    assert!(!game.world().resource::<Time<Virtual>>().is_paused());
+    assert_eq!(*game.world().resource::<Integrator>(), Integrator::Auto);
+    assert_eq!(*game.world().resource::<Overlays>(), Overlays::default());
     assert!(!tap(&mut game, 1, fold.center()), "the tap grabbed the box");
     assert!(
         game.world().resource::<PanelOpen>().0,
@@ -366,4 +385,131 @@ fn a_finger_taps_a_laid_out_button_and_never_grabs_the_box() {
     game.touch(3, TouchPhase::Started, DVec2::new(-100.0, 50.0));
     game.update(1);
     assert_eq!(game.bands().len(), 1, "a finger beside the panel pulls");
+}
+
+/// What the panel lights says what is on: the live integrator's button and the scene's, the
+/// shown overlays' and the HUD's, the fold button while open; the pause button says "resume"
+/// while paused.
+#[test]
+fn the_lit_buttons_say_what_is_on() {
+    let mut game = Game::stepping();
+    game.update(1);
+    let lit = |game: &mut Game| -> Vec<PanelButton> {
+        let world = game.world();
+        // Reset is never lit: its colour is the unlit one.
+        let unlit = world
+            .query::<(&PanelButton, &BackgroundColor)>()
+            .iter(world)
+            .find(|(b, _)| **b == PanelButton::Send(Action::Reset))
+            .map(|(_, c)| c.0)
+            .unwrap();
+        world
+            .query::<(&PanelButton, &BackgroundColor)>()
+            .iter(world)
+            .filter(|(_, c)| c.0 != unlit)
+            .map(|(b, _)| *b)
+            .collect()
+    };
+    let mut on = lit(&mut game);
+    on.sort_by_key(|b| format!("{b:?}"));
+    let mut expected = vec![
+        PanelButton::Send(Action::Integrator(Integrator::Auto)),
+        PanelButton::Send(Action::Scene(0)),
+        PanelButton::Send(Action::ToggleHud),
+    ];
+    expected.sort_by_key(|b| format!("{b:?}"));
+    assert_eq!(on, expected, "auto, the tutorial and the HUD at the start");
+
+    *game.world().resource_mut::<Integrator>() = Integrator::Rk4;
+    game.world().resource_mut::<SceneName>().0 = "stiff".to_owned();
+    game.world().resource_mut::<Overlays>().hud_hidden = true;
+    game.world().resource_mut::<Overlays>().ghosts = true;
+    game.world().resource_mut::<PanelOpen>().0 = true;
+    game.update(1);
+    let on = lit(&mut game);
+    for button in [
+        PanelButton::Send(Action::Integrator(Integrator::Rk4)),
+        PanelButton::Send(Action::Scene(2)),
+        PanelButton::Send(Action::ToggleGhosts),
+        PanelButton::Fold,
+    ] {
+        assert!(on.contains(&button), "{button:?} lit: {on:?}");
+    }
+    for button in [
+        PanelButton::Send(Action::Integrator(Integrator::Auto)),
+        PanelButton::Send(Action::Scene(0)),
+        PanelButton::Send(Action::ToggleHud),
+    ] {
+        assert!(!on.contains(&button), "{button:?} not lit: {on:?}");
+    }
+
+    let label = |game: &mut Game| -> String {
+        let world = game.world();
+        let children = world
+            .query::<(&PanelButton, &Children)>()
+            .iter(world)
+            .find(|(b, _)| **b == PanelButton::Send(Action::TogglePause))
+            .map(|(_, c)| c[0])
+            .unwrap();
+        world.get::<Text>(children).unwrap().0.clone()
+    };
+    assert_eq!(label(&mut game), "pause");
+    game.world().resource_mut::<Time<Virtual>>().pause();
+    game.update(1);
+    assert_eq!(label(&mut game), "resume");
+}
+
+/// While a finger is on the screen its taps are `tap_buttons`' (read from the touches):
+/// picking's own press of the same tap is ignored, so a tap never acts twice.
+#[test]
+fn a_picking_press_while_a_finger_is_down_is_ignored() {
+    let mut game = Game::stepping();
+    game.touch_screen(4, TouchPhase::Started, Vec2::new(20.0, 700.0));
+    game.update(1);
+    let pause = button(&mut game, PanelButton::Send(Action::TogglePause));
+    click(&mut game, pause, PointerId::Touch(4));
+    game.update(1);
+    assert!(!game.world().resource::<Time<Virtual>>().is_paused());
+    game.touch_screen(4, TouchPhase::Ended, Vec2::new(20.0, 700.0));
+    game.update(2);
+    click(&mut game, pause, PointerId::Mouse);
+    game.update(1);
+    assert!(game.world().resource::<Time<Virtual>>().is_paused());
+}
+
+/// Each slider's thumb lies where its value does along the track (150 px less the 18 px
+/// thumb): k = 1e5 halfway along 1e-2 .. 1e12, the mass of 5 kg at log10(5) along 1e-3 .. 1e3.
+#[test]
+fn each_thumb_lies_where_its_value_does() {
+    use bevy::ui_widgets::SliderThumb;
+    let mut game = Game::stepping();
+    let k = slider(&mut game, Parameter::Stiffness);
+    game.world().trigger(SetSliderValue {
+        entity: k,
+        change: SliderValueChange::Absolute(5.0),
+    });
+    game.update(2);
+    let thumb_left = |game: &mut Game, parameter: Parameter| -> f32 {
+        let entity = slider(game, parameter);
+        let world = game.world();
+        let children: Vec<Entity> = world.get::<Children>(entity).unwrap().to_vec();
+        let node = children
+            .iter()
+            .find(|&&child| world.get::<SliderThumb>(child).is_some())
+            .and_then(|&child| world.get::<Node>(child))
+            .expect("the slider's thumb");
+        match node.left {
+            Val::Px(left) => left,
+            other => panic!("{other:?}"),
+        }
+    };
+    let track = 150.0 - 18.0;
+    let k_left = thumb_left(&mut game, Parameter::Stiffness);
+    assert!((k_left - 0.5 * track).abs() < 1e-3, "{k_left}");
+    let mass_left = thumb_left(&mut game, Parameter::Mass);
+    let expected = (5f32.log10() + 3.0) / 6.0 * track;
+    assert!(
+        (mass_left - expected).abs() < 1e-3,
+        "{mass_left} against {expected}"
+    );
 }

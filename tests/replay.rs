@@ -719,3 +719,33 @@ fn a_recording_stops_at_its_step_cap_and_the_game_goes_on() {
         "three steps more, then none"
     );
 }
+
+/// A replay that starts away from the centre is drawn from its start: the box put there has
+/// both render snapshots at the start, so the first frame drawn never slides in from the
+/// centre (after one step, the previous snapshot is still the start).
+#[test]
+fn a_replay_starting_away_from_the_centre_is_drawn_from_its_start() {
+    use rubber_band_box::game::simulation::RenderSnapshots;
+    use rubber_band_box::physics::AutoSettings;
+    use rubber_band_box::replay::Settings;
+    let params = SceneParams::tutorial();
+    let settings = Settings::new(&params, 0.01, Integrator::Auto);
+    let mut start = BodyState::at_rest(DVec2::new(120.0, -40.0));
+    start.angular.orientation = 0.7;
+    let mut replay = Replay::start("tutorial", settings, AutoSettings::default(), start);
+    let mut stepper = replay.stepper().unwrap();
+    for _ in 0..3 {
+        stepper.step(0.01);
+        replay.push_step(None, &stepper.state);
+    }
+    let mut game = Game::stepping();
+    playback::open(game.world(), replay);
+    game.update(1);
+    let world = game.world();
+    let snapshots = *world
+        .query_filtered::<&RenderSnapshots, With<RigidBox>>()
+        .single(world)
+        .unwrap();
+    assert_eq!(snapshots.previous, start);
+    assert_eq!(snapshots.current.linear.position, DVec2::new(120.0, -40.0));
+}

@@ -617,3 +617,79 @@ fn the_screens_plugins_join_the_frame_without_an_ambiguity() {
     game.update(5);
     assert!(game.steps() >= 5, "the frame ran");
 }
+
+/// At most one band after the pointer's system, whatever was there: of two bands on the box
+/// (none of the game's paths makes a second), one is removed.
+#[test]
+fn of_two_bands_one_is_removed() {
+    let mut game = Game::stepping();
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(1);
+    let held = game.the_band();
+    let mut second = held;
+    second.ends.anchor = DVec2::new(-150.0, -90.0);
+    game.world().spawn(second);
+    assert_eq!(game.bands().len(), 2);
+    game.update(1);
+    let left = game.the_band();
+    assert!([held.ends.anchor, second.ends.anchor].contains(&left.ends.anchor));
+}
+
+/// A step the integrator cannot take is refused and named by its number: explicit Euler on a
+/// band of k = 1e12 diverges within a few steps; the step said is the one counted, the box
+/// keeps its last sane state, and each later step refused is named in turn.
+#[test]
+fn a_divergence_names_the_step_it_refused() {
+    let mut game = Game::stepping();
+    *game.world().resource_mut::<Integrator>() = Integrator::Euler;
+    game.world().resource_mut::<SceneParams>().stiffness = 1e12;
+    game.press_at(DVec2::new(200.0, 100.0));
+    let mut first = None;
+    for _ in 0..50 {
+        game.update(1);
+        if let Some((integrator, step)) = game.world().resource::<StepStats>().divergence {
+            assert_eq!(integrator, Integrator::Euler);
+            assert_eq!(
+                step,
+                game.steps(),
+                "the refused step is the one just counted"
+            );
+            first = Some(step);
+            break;
+        }
+    }
+    let first = first.expect("explicit Euler diverges at k = 1e12");
+    assert!(first >= 1);
+    let (linear, angular) = game.state();
+    assert!(linear.position.is_finite() && angular.orientation.is_finite());
+    game.update(3);
+    let steps = game.steps();
+    assert_eq!(
+        game.world().resource::<StepStats>().divergence,
+        Some((Integrator::Euler, steps)),
+        "the latest refused step"
+    );
+}
+
+/// A step that runs out of `auto`'s budget falls back to `implicit` and is counted: each such
+/// step adds one to the fall-backs, a step that does not adds none.
+#[test]
+fn fall_backs_are_counted_a_step_each() {
+    let mut game = Game::stepping();
+    game.world().resource_mut::<SceneParams>().stiffness = 1e9;
+    game.press_at(DVec2::new(200.0, 100.0));
+    game.update(1);
+    let mut last = game.world().resource::<StepStats>().fallbacks;
+    for _ in 0..3 {
+        game.update(1);
+        let stats = game.world().resource::<StepStats>();
+        assert!(stats.fell_back, "k = 1e9 is over auto's budget at 100 Hz");
+        assert_eq!(stats.fallbacks, last + 1);
+        last = stats.fallbacks;
+    }
+    game.world().resource_mut::<SceneParams>().stiffness = 20.0;
+    game.update(2);
+    let stats = game.world().resource::<StepStats>();
+    assert!(!stats.fell_back);
+    assert_eq!(stats.fallbacks, last);
+}

@@ -175,15 +175,15 @@ pub fn drive_band(
 ) {
     // Play this frame's actions on a small model first, then touch the world once, so that
     // several actions in one frame never leave two bands behind.
+    // The band kept: taken away by a press (a new band replaces it) or a release.
     let mut existing_band = existing.iter().next().map(|(entity, band)| (entity, *band));
-    let mut remove_existing = false;
     let mut fresh: Option<Band> = None;
     let mut tap: Option<Band> = None;
 
     for action in actions.read() {
         match *action {
             PointerAction::Press(at) => {
-                remove_existing |= existing_band.take().is_some();
+                existing_band = None;
                 let Ok((body, linear, angular, mass)) = boxes.single() else {
                     continue;
                 };
@@ -203,7 +203,7 @@ pub fn drive_band(
                 if let Some(band) = fresh.take() {
                     tap = Some(band);
                 } else {
-                    remove_existing |= existing_band.take().is_some();
+                    existing_band = None;
                 }
             }
         }
@@ -211,7 +211,7 @@ pub fn drive_band(
 
     for (entity, mut band) in &mut existing {
         match existing_band {
-            Some((kept, updated)) if kept == entity && !remove_existing => {
+            Some((kept, updated)) if kept == entity => {
                 band.set_if_neq(updated);
             }
             _ => commands.entity(entity).despawn(),
