@@ -18,7 +18,7 @@
 # reuse them. The working tree is never touched.
 #
 # Usage: .ci/mutants.sh [core|game] [cargo-mutants options; core's default: its files]
-# (core: `--iterate` skips what the previous run caught.)
+# (`--iterate` skips what the previous run of that kind caught.)
 # Never edit this file while it runs: bash reads a script as it goes, and a run's results are
 # copied out of its worktree by the last lines (an hour's results were lost that way once).
 set -euo pipefail
@@ -59,8 +59,11 @@ else
         "src/game/input/controls.rs src/game/input/pointer.rs : controls schedule panel"
         "src/game/simulation.rs : schedule lab hud replay"
         "src/game/input/panel.rs : panel"
-        "src/game/hud/mod.rs src/game/hud/history.rs src/game/hud/title.rs : hud"
+        "src/game/hud/mod.rs src/game/hud/history.rs src/game/hud/title.rs : hud controls schedule draw"
     )
+    # The previous results, so that `--iterate` tests only what they did not catch.
+    previous=$(mktemp -d)
+    if [ -d "$out" ]; then cp -r "$out"/. "$previous"/; fi
     rm -rf "$out"
     mkdir -p "$out"
     baseline=run
@@ -69,6 +72,10 @@ else
         for file in ${group%%:*}; do files+=(--file "$file"); done
         for test in ${group##*:}; do targets+=(-C "--test=$test"); done
         name=$(basename "${group%% *}" .rs)
+        if [ -d "$previous/$name" ]; then
+            mkdir -p "$work/$name"
+            cp -r "$previous/$name" "$work/$name/mutants.out"
+        fi
         (
             cd "$work"
             cargo mutants --in-place --no-shuffle --timeout 60 --baseline "$baseline" \
