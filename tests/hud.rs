@@ -528,3 +528,59 @@ fn the_clock_and_the_live_ghost_come_from_the_game() {
     assert_eq!(live.len(), 1, "{list}");
     assert!(live[0].trim_start().starts_with("auto (live)"), "{list}");
 }
+
+/// The history's edges: a sample at the latest one's time is not a clock going back; a sample
+/// one spacing after the latest is kept, as is the oldest while it is no more than a span old.
+#[test]
+fn the_history_keeps_its_edges() {
+    let spacing = EnergyHistory::SPAN / EnergyHistory::SAMPLES as f64;
+    let mut history = EnergyHistory::default();
+    history.record(5.0, Energies::default());
+    history.record(6.0, Energies::default());
+    history.record(6.0, Energies::default());
+    assert_eq!(
+        history.samples.len(),
+        2,
+        "the same time again is not time going back"
+    );
+
+    let mut history = EnergyHistory::default();
+    history.record(0.0, Energies::default());
+    history.record(spacing, Energies::default());
+    assert_eq!(history.samples.len(), 2, "one spacing apart is kept");
+
+    let mut history = EnergyHistory::default();
+    history.record(0.0, Energies::default());
+    history.record(EnergyHistory::SPAN, Energies::default());
+    assert_eq!(
+        history.samples.front().map(|s| s.0),
+        Some(0.0),
+        "a span old is kept"
+    );
+}
+
+/// The window title, the HUD's essentials while it is hidden: `auto`'s substeps and
+/// fall-backs, which no other integrator has, then k, the rate, the time scale.
+#[test]
+fn the_title_says_autos_substeps_and_no_one_elses() {
+    let mut game = Game::stepping();
+    game.update(2);
+    let title = |game: &mut Game| {
+        let window = game.window;
+        game.world().get::<Window>(window).unwrap().title.clone()
+    };
+    let auto = title(&mut game);
+    assert!(auto.starts_with("Rubber Band Box: auto ("), "{auto}");
+    assert!(
+        auto.contains(" 0 fall-backs), k 20, 100 Hz, time ×1"),
+        "{auto}"
+    );
+    *game.world().resource_mut::<Integrator>() = Integrator::Rk4;
+    game.update(1);
+    let rk4 = title(&mut game);
+    assert!(
+        rk4.starts_with("Rubber Band Box: rk4, k 20, 100 Hz"),
+        "{rk4}"
+    );
+    assert!(!rk4.contains("substep"), "{rk4}");
+}

@@ -513,3 +513,21 @@ fn each_thumb_lies_where_its_value_does() {
         "{mass_left} against {expected}"
     );
 }
+
+/// A slider follows its value however it changed: at k = 10 (1 along its logarithmic track)
+/// and then k set to 0.1 elsewhere (a scene, a replay), it moves to -1.
+#[test]
+fn a_slider_follows_its_value_set_elsewhere() {
+    let mut game = Game::stepping();
+    let k = slider(&mut game, Parameter::Stiffness);
+    game.world().trigger(SetSliderValue {
+        entity: k,
+        change: SliderValueChange::Absolute(1.0),
+    });
+    game.update(2);
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 10.0);
+    game.world().resource_mut::<SceneParams>().stiffness = 0.1;
+    game.update(2);
+    let shown = game.world().get::<SliderValue>(k).unwrap().0;
+    assert!((shown + 1.0).abs() < 1e-4, "{shown}");
+}
