@@ -170,34 +170,32 @@ fn slider(game: &mut Game, parameter: Parameter) -> Entity {
         .unwrap()
 }
 
+/// The slider moved to `position` along its track as a drag moves it (`SetSliderValue` ends in
+/// the slider's own `ValueChange`), and two frames for the controls to apply it.
+fn move_slider_to(game: &mut Game, slider: Entity, position: f32) {
+    game.world().trigger(SetSliderValue {
+        entity: slider,
+        change: SliderValueChange::Absolute(position),
+    });
+    game.update(2);
+}
+
 /// k's slider is logarithmic (1e-2 to 1e12); a value the scene refuses is kept out, with a
 /// message, and the slider keeps showing the value in force.
 #[test]
 fn sliders_set_parameters_through_validation() {
     let mut game = Game::stepping();
     let k = slider(&mut game, Parameter::Stiffness);
-    game.world().trigger(SetSliderValue {
-        entity: k,
-        change: SliderValueChange::Absolute(5.0),
-    });
-    game.update(2);
+    move_slider_to(&mut game, k, 5.0);
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 1e5);
-    game.world().trigger(SetSliderValue {
-        entity: k,
-        change: SliderValueChange::Absolute(40.0),
-    });
-    game.update(2);
+    move_slider_to(&mut game, k, 40.0);
     assert_eq!(
         game.world().resource::<SceneParams>().stiffness,
         1e12,
         "clamped to the range"
     );
     // Two significant digits, as a person reads them: 10^2.5 is 316.2..., set as 320.
-    game.world().trigger(SetSliderValue {
-        entity: k,
-        change: SliderValueChange::Absolute(2.5),
-    });
-    game.update(2);
+    move_slider_to(&mut game, k, 2.5);
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 320.0);
     // A key moves the slider too: ten times stiffer, a decade along.
     game.tap_key(KeyCode::BracketRight);
@@ -210,19 +208,11 @@ fn sliders_set_parameters_through_validation() {
     // slider that a drag sends, which `move_slider` turns into `Action::Set`. A good value
     // first (10^2), so that "the old value" differs from the scene's start (5 kg).
     let mass_slider = slider(&mut game, Parameter::Mass);
-    game.world().trigger(SetSliderValue {
-        entity: mass_slider,
-        change: SliderValueChange::Absolute(2.0),
-    });
-    game.update(2);
+    move_slider_to(&mut game, mass_slider, 2.0);
     assert_eq!(game.world().resource::<SceneParams>().mass, 100.0);
     // NaN is the one position the slider's clamp lets through (every other in -3..3 is a
     // valid mass), and the scene refuses it.
-    game.world().trigger(SetSliderValue {
-        entity: mass_slider,
-        change: SliderValueChange::Absolute(f32::NAN),
-    });
-    game.update(2);
+    move_slider_to(&mut game, mass_slider, f32::NAN);
     assert_eq!(game.world().resource::<SceneParams>().mass, 100.0);
     let said = game.world().resource::<StatusMessage>().0.clone().unwrap();
     assert!(said.starts_with("refused: mass"), "{said}");
@@ -484,11 +474,7 @@ fn each_thumb_lies_where_its_value_does() {
     use bevy::ui_widgets::SliderThumb;
     let mut game = Game::stepping();
     let k = slider(&mut game, Parameter::Stiffness);
-    game.world().trigger(SetSliderValue {
-        entity: k,
-        change: SliderValueChange::Absolute(5.0),
-    });
-    game.update(2);
+    move_slider_to(&mut game, k, 5.0);
     let thumb_left = |game: &mut Game, parameter: Parameter| -> f32 {
         let entity = slider(game, parameter);
         let world = game.world();
@@ -520,11 +506,7 @@ fn each_thumb_lies_where_its_value_does() {
 fn a_slider_follows_its_value_set_elsewhere() {
     let mut game = Game::stepping();
     let k = slider(&mut game, Parameter::Stiffness);
-    game.world().trigger(SetSliderValue {
-        entity: k,
-        change: SliderValueChange::Absolute(1.0),
-    });
-    game.update(2);
+    move_slider_to(&mut game, k, 1.0);
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 10.0);
     game.world().resource_mut::<SceneParams>().stiffness = 0.1;
     game.update(2);

@@ -23,13 +23,10 @@ use crate::game::schedule::{AfterBevySystems, ScreenSystems};
 use crate::game::shared::{
     HudArea, Overlays, SceneName, StatusMessage, linear_damping_readout, readable, window_rect,
 };
-use crate::game::simulation::{Band, EnergyBooks, RigidBox, StepStats, mechanical_energies};
+use crate::game::simulation::{Band, Bodies, EnergyBooks, StepStats, mechanical_energies};
 use crate::game::stability::StabilityMargins;
 use crate::physics::stability::{Limit, Margin};
-use crate::physics::{
-    AngularState, Energies, EnergyLedger, Integrator, LinearState, MassProperties, Scenario,
-    SceneParams,
-};
+use crate::physics::{Energies, EnergyLedger, Integrator, Scenario, SceneParams};
 pub use history::EnergyHistory;
 
 pub struct HudPlugin;
@@ -371,16 +368,7 @@ pub struct HudSources<'w, 's> {
     scene: Res<'w, SceneName>,
     ghosts: Res<'w, Ghosts>,
     margins: Res<'w, StabilityMargins>,
-    boxes: Query<
-        'w,
-        's,
-        (
-            &'static LinearState,
-            &'static AngularState,
-            &'static MassProperties,
-        ),
-        With<RigidBox>,
-    >,
+    boxes: Bodies<'w, 's>,
     bands: Query<'w, 's, &'static Band>,
 }
 

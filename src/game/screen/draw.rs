@@ -10,7 +10,7 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
-use crate::game::ghosts::{Ghost, GhostKind, Ghosts};
+use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::graph::graph_frame;
 use crate::game::screen::plot::plot_footprint;
@@ -296,10 +296,15 @@ fn draw_ghosts(
     )>,
 ) {
     let alpha = fixed_time.overstep_fraction_f64().clamp(0.0, 1.0);
-    let name_of = |ghost: &Ghost| match ghost.diverged_at {
-        Some(step) => format!("{} diverged @{step}", ghost.kind.name()),
-        None => ghost.kind.name().to_owned(),
-    };
+    // Each ghost's name, in the list's order, written once a frame.
+    let names: Vec<String> = ghosts
+        .ghosts
+        .iter()
+        .map(|ghost| match ghost.diverged_at {
+            Some(step) => format!("{} diverged @{step}", ghost.kind.name()),
+            None => ghost.kind.name().to_owned(),
+        })
+        .collect();
     let view = cameras
         .iter()
         .find_map(|(projection, transform)| view_area(projection, transform));
@@ -316,17 +321,15 @@ fn draw_ghosts(
     if overlays.plot {
         avoid.push(plot_footprint());
     }
-    let widest = ghosts
-        .ghosts
-        .iter()
-        .map(|ghost| name_of(ghost).len())
-        .max()
-        .unwrap_or(0) as f32
-        * font_size
-        * 0.6;
+    let widest = names.iter().map(String::len).max().unwrap_or(0) as f32 * font_size * 0.6;
     let mut unlabelled: Vec<GhostKind> = ghosts.ghosts.iter().map(|g| g.kind).collect();
     for (entity, label, mut text, mut font, mut transform, mut visibility) in &mut labels {
-        let Some(ghost) = ghosts.ghosts.iter().find(|g| g.kind == label.0) else {
+        let Some((index, ghost)) = ghosts
+            .ghosts
+            .iter()
+            .enumerate()
+            .find(|(_, g)| g.kind == label.0)
+        else {
             commands.entity(entity).despawn();
             continue;
         };
@@ -369,9 +372,8 @@ fn draw_ghosts(
                 gizmos.line_2d(a, b, colour);
             }
         }
-        let name = name_of(ghost);
-        if text.0 != name {
-            text.0 = name;
+        if text.0 != names[index] {
+            text.0.clone_from(&names[index]);
         }
         // Each name on its own line of the column, by the ghost's place among those drawn.
         let place = ghosts

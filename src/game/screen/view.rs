@@ -150,6 +150,7 @@ fn fit_scene_to_free_area(
     controls: Res<ControlsArea>,
     hud: Res<HudArea>,
     mut present: Local<Option<Rect>>,
+    mut fitted_to: Local<Option<(Vec2, Vec<Rect>)>>,
     camera: Single<(&mut Projection, &mut Transform), With<Camera2d>>,
 ) {
     if controls.0.is_empty() {
@@ -157,6 +158,13 @@ fn fit_scene_to_free_area(
     }
     let size = window.size();
     let covered: Vec<Rect> = controls.0.iter().chain(&hud.0).copied().collect();
+    // The search is for a frame whose window or boxes moved, not for every frame.
+    if fitted_to
+        .as_ref()
+        .is_some_and(|(fitted, boxes)| *fitted == size && *boxes == covered)
+    {
+        return;
+    }
     let free = area_to_fit(size, &covered, *present);
     let scale = scene_scale(free);
     // A window with no room (minimised) leaves the camera as it is.
@@ -176,6 +184,7 @@ fn fit_scene_to_free_area(
         }
         *present = Some(free);
     }
+    *fitted_to = Some((size, covered));
     let (mut projection, mut transform) = camera.into_inner();
     let offset = free.center() - size / 2.0;
     let position = Vec3::new(-offset.x / scale, offset.y / scale, transform.translation.z);
