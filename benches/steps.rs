@@ -1,4 +1,5 @@
-//! Criterion benchmarks: one core step per integrator; one headless `App` fixed step with the
+//! Criterion benchmarks: one core step per integrator; `auto` on the stiff pulls the report
+//! sets against the peers; one headless `App` fixed step with the
 //! box and its band beside an empty `App` (the ECS floor); N boxes each with a band; and a
 //! scene's step with the ghosts on and off.
 //!
@@ -19,8 +20,11 @@ use rubber_band_box::game::shared::SharedPlugin;
 use rubber_band_box::game::simulation::{
     Band, RigidBox, SimulationPlugin, rigid_box, run_single_threaded,
 };
+use rubber_band_box::measure::references::StiffCase;
 use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
-use rubber_band_box::physics::{BandEnds, BodyState, Integrator, Scenario, SceneParams, Stepper};
+use rubber_band_box::physics::{
+    BandEnds, BodyState, Integrator, Run, Scenario, SceneParams, Stepper,
+};
 
 fn core_step(c: &mut Criterion) {
     let mut group = c.benchmark_group("core_step");
@@ -42,6 +46,32 @@ fn core_step(c: &mut Criterion) {
                     stepper.state = start;
                     steps = 0;
                 }
+            })
+        });
+    }
+    group.finish();
+}
+
+/// `auto` on the stiff pulls the side-by-side times against the peers (docs/peers.md): one
+/// iteration is the case's whole run, its ticks from the scene's start.
+fn stiff_auto(c: &mut Criterion) {
+    let mut group = c.benchmark_group("stiff_auto");
+    for (k, rate) in [
+        (1e5, 100.0),
+        (1e6, 100.0),
+        (1e6, 64.0),
+        (1e7, 100.0),
+        (1e7, 64.0),
+    ] {
+        let case = StiffCase::new(k, rate);
+        let dt = 1.0 / rate;
+        group.bench_function(format!("k{k:e}/{rate}Hz/{}ticks", case.ticks), |b| {
+            b.iter(|| {
+                let mut run = Run::of(&case.scenario, Integrator::Auto, dt).expect("valid");
+                for _ in 0..case.ticks {
+                    run.advance().expect("stable");
+                }
+                black_box(run.stepper.state)
             })
         });
     }
@@ -183,5 +213,5 @@ fn circle_the_anchor(mut bands: Query<&mut Band>, mut step: Local<u32>) {
     }
 }
 
-criterion_group!(benches, core_step, app_tick, many_boxes, ghosts);
+criterion_group!(benches, core_step, stiff_auto, app_tick, many_boxes, ghosts);
 criterion_main!(benches);

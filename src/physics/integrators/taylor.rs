@@ -16,7 +16,7 @@
 use bevy::math::DVec2;
 
 use super::engine_state::{
-    COMPONENTS, DISSIPATED, RELATIVE_TOLERANCE, error_weights, pack, unpack,
+    COMPONENTS, Components, DISSIPATED, RELATIVE_TOLERANCE, error_weights, pack, unpack,
 };
 use crate::physics::body::BodyState;
 use crate::physics::forces::ForceModel;
@@ -26,7 +26,6 @@ use crate::physics::maths;
 pub const MAX_ORDER: usize = 24;
 
 const N: usize = COMPONENTS;
-type Series = [f64; MAX_ORDER + 1];
 
 /// The longest step, as rate times step, at which every truncation from order 2 up of the
 /// fastest decay e^(−λh) still shrinks (as RK4's stability limit of 2.78 bounds its own).
@@ -106,11 +105,16 @@ pub fn integrate(
     let longest = STABLE_RATE_TIMES_STEP / model.fastest_rate(state).max(f64::MIN_POSITIVE);
 
     let mut y = pack(state);
-    let mut series: [Series; N] = [[0.0; MAX_ORDER + 1]; N];
-    let mut arm_x: Series = [0.0; MAX_ORDER + 1];
-    let mut arm_y: Series = [0.0; MAX_ORDER + 1];
-    let mut to_anchor_x: Series = [0.0; MAX_ORDER + 1];
-    let mut to_anchor_y: Series = [0.0; MAX_ORDER + 1];
+    // The series, an order a row: row n holds every component's n-th coefficient, so that
+    // a row is written at once and the sums at the end run over all components together.
+    let mut series: [Components; MAX_ORDER + 1] = [[0.0; N]; MAX_ORDER + 1];
+    // Each order's operands of the products, in pairs so that one multiply-add serves two
+    // sums (see [`Operands`]).
+    let mut operands = [Operands::default(); MAX_ORDER + 1];
+    // The anchor's share of the offset's series past order 0 (zero, of the anchor's sign).
+    let anchor_past_start = [0.0 * anchor.y, 0.0 * anchor.x];
+    let arm_of =
+        |cos: f64, sin: f64| [cos * local.x - sin * local.y, sin * local.x + cos * local.y];
     let mut remaining = dt;
     let mut steps = 0u32;
     let mut orders = 0u32;
@@ -119,80 +123,88 @@ pub fn integrate(
             return None;
         }
         steps += 1;
-        for (s, &value) in series.iter_mut().zip(&y) {
-            s[0] = value;
-        }
-        let size = weighted_max(&weights, |i| y[i].abs());
+        series[0] = y;
+        // Order 0: the step's start. `newest` is the latest order's operands, carried in
+        // registers from one order to the next rather than read back from memory.
+        let first = Operands {
+            omega: y[7],
+            sin_cos: [y[3], y[2]],
+            arm: arm_of(y[2], y[3]),
+            to_anchor: [anchor.y - y[1], anchor.x - y[0]],
+            velocity: [y[5], y[6]],
+        };
+        operands[0] = first;
+        let mut newest = first;
+        let size = weighted_max(&weights, &y);
         let tolerance = settings.tolerance + RELATIVE_TOLERANCE * size;
         // Jorba and Zou: the step at which each of the last two terms reaches the tolerance.
-        let step_allowed = |terms: &Series, top: usize| {
-            let mut h = f64::INFINITY;
+        // The smaller of the two roots is taken as logarithms, then one exponential: two
+        // `ln` and an `exp` cost less than two `pow`.
+        let step_allowed = |series: &[Components; MAX_ORDER + 1], top: usize| {
+            let mut log_h = f64::INFINITY;
             for n in [top - 1, top] {
-                if terms[n] > 0.0 {
-                    h = h.min(maths::powf(tolerance / terms[n], 1.0 / n as f64));
+                let term = weighted_max(&weights, &series[n]);
+                if term > 0.0 {
+                    log_h = log_h.min(maths::ln(tolerance / term) / n as f64);
                 }
             }
-            h * SAFETY
+            maths::exp(log_h) * SAFETY
         };
-        let mut terms: Series = [0.0; MAX_ORDER + 1];
         // (remaining / SAFETY)^top, the step that would end the fixed step, as a power.
         let reach_step = remaining / SAFETY;
         let mut reach_power = 1.0;
         // The series stops early where a lower order already reaches the end of the fixed
         // step (a soft band: a few orders instead of all of them).
         let mut used = order;
-        let [x, yy, c, s, theta, vx, vy, om, e] = &mut series;
         for n in 0..order {
-            // The corner's arm R(θ) r and the anchor's offset a − x, at order n.
-            arm_x[n] = c[n] * local.x - s[n] * local.y;
-            arm_y[n] = s[n] * local.x + c[n] * local.y;
-            let origin = if n == 0 { 1.0 } else { 0.0 };
-            to_anchor_x[n] = origin * anchor.x - x[n];
-            to_anchor_y[n] = origin * anchor.y - yy[n];
-            // The products at order n: ω·sin, ω·cos, the torque's arm × (a − x), and the
-            // damping power's |v|² and ω².
-            let (mut omega_sin, mut omega_cos, mut lever) = (0.0, 0.0, 0.0);
-            {
-                // Slices of length n + 1, so that no index below is checked.
-                let (o, sn, cs) = (&om[..=n], &s[..=n], &c[..=n]);
-                let (ax, ay) = (&arm_x[..=n], &arm_y[..=n]);
-                let (tx, ty) = (&to_anchor_x[..=n], &to_anchor_y[..=n]);
-                for j in 0..=n {
-                    let m = n - j;
-                    omega_sin += o[j] * sn[m];
-                    omega_cos += o[j] * cs[m];
-                    lever += ax[j] * ty[m] - ay[j] * tx[m];
-                }
-            }
-            let speed_squared = square(vx, n) + square(vy, n);
-            let spin_squared = square(om, n);
+            // Never past the arrays (order <= MAX_ORDER): lets the compiler drop the checks.
+            let n = n.min(MAX_ORDER - 1);
+            let products = Products::at(n, &operands, &first, &newest);
             let over = 1.0 / (n + 1) as f64;
-            x[n + 1] = vx[n] * over;
-            yy[n + 1] = vy[n] * over;
-            c[n + 1] = -omega_sin * over;
-            s[n + 1] = omega_cos * over;
-            theta[n + 1] = om[n] * over;
-            let force_x = k * (to_anchor_x[n] - arm_x[n]) - linear_damping * vx[n];
-            let force_y = k * (to_anchor_y[n] - arm_y[n]) - linear_damping * vy[n];
-            vx[n + 1] = force_x * inverse_mass * over;
-            vy[n + 1] = force_y * inverse_mass * over;
-            om[n + 1] = (k * lever - angular_damping * om[n]) * inverse_inertia * over;
-            e[n + 1] = (linear_damping * speed_squared + angular_damping * spin_squared) * over;
+            let Operands {
+                omega,
+                arm: [arm_x, arm_y],
+                to_anchor: [to_anchor_y, to_anchor_x],
+                velocity: [velocity_x, velocity_y],
+                ..
+            } = newest;
+            let position_x = velocity_x * over;
+            let position_y = velocity_y * over;
+            let cos = -products.omega_sin * over;
+            let sin = products.omega_cos * over;
+            let theta = omega * over;
+            let force_x = k * (to_anchor_x - arm_x) - linear_damping * velocity_x;
+            let force_y = k * (to_anchor_y - arm_y) - linear_damping * velocity_y;
+            let vx = force_x * inverse_mass * over;
+            let vy = force_y * inverse_mass * over;
+            let om = (k * products.lever - angular_damping * omega) * inverse_inertia * over;
+            let (speed_squared, spin_squared) = (products.speed_squared, products.spin_squared);
+            let e = (linear_damping * speed_squared + angular_damping * spin_squared) * over;
+            series[n + 1] = [position_x, position_y, cos, sin, theta, vx, vy, om, e];
+            newest = Operands {
+                omega: om,
+                sin_cos: [sin, cos],
+                arm: arm_of(cos, sin),
+                to_anchor: [
+                    anchor_past_start[0] - position_y,
+                    anchor_past_start[1] - position_x,
+                ],
+                velocity: [vx, vy],
+            };
+            operands[n + 1] = newest;
             let top = n + 1;
-            let coefficients = [
-                x[top], yy[top], c[top], s[top], theta[top], vx[top], vy[top], om[top], 0.0,
-            ];
-            terms[top] = weighted_max(&weights, |i| coefficients[i].abs());
             // Whether the last two terms are within the tolerance at the end of the fixed
-            // step: Jorba and Zou's step reaches it (compared without roots).
+            // step: Jorba and Zou's step reaches it (compared without roots). The terms are
+            // weighed only where the step could end here: a stiff band's never does.
             reach_power *= reach_step;
-            if (MIN_ORDER..order).contains(&top)
-                && longest >= remaining
-                && terms[top] * reach_power <= tolerance
-                && terms[top - 1] * reach_power <= tolerance * reach_step
-            {
-                used = top;
-                break;
+            if (MIN_ORDER..order).contains(&top) && longest >= remaining {
+                let term = |n: usize| weighted_max(&weights, &series[n]);
+                if term(top) * reach_power <= tolerance
+                    && term(top - 1) * reach_power <= tolerance * reach_step
+                {
+                    used = top;
+                    break;
+                }
             }
         }
         orders += used as u32;
@@ -200,15 +212,13 @@ pub fn integrate(
         let mut h = if early {
             remaining
         } else {
-            step_allowed(&terms, used).min(longest)
+            step_allowed(&series, used).min(longest)
         };
         let last = early || h >= remaining;
         if last {
             h = remaining;
         }
-        for (value, s) in y.iter_mut().zip(&series) {
-            *value = horner(&s[..=used], h);
-        }
+        y = horner(&series[..=used], h);
         if !y.iter().all(|v| v.is_finite()) {
             return None;
         }
@@ -225,24 +235,115 @@ pub fn integrate(
     })
 }
 
-/// The n-th Taylor coefficient of a square: Σ a[j] a[n − j], each pair once.
-fn square(a: &Series, n: usize) -> f64 {
-    let mut twice = 0.0;
-    for j in 0..n.div_ceil(2) {
-        twice += a[j] * a[n - j];
+type Pair = [f64; 2];
+
+/// acc + a·b, lane by lane: written so that the compiler makes it one vector multiply and add
+/// where the machine has them (x86-64's SSE2); the same operations, so the same bits, where it
+/// does not (wasm).
+#[inline(always)]
+fn mul_add(acc: Pair, a: Pair, b: Pair) -> Pair {
+    [acc[0] + a[0] * b[0], acc[1] + a[1] * b[1]]
+}
+
+#[inline(always)]
+fn add(a: Pair, b: Pair) -> Pair {
+    [a[0] + b[0], a[1] + b[1]]
+}
+
+/// One order's operands of the Cauchy products: ω, [sin, cos], the corner's arm R(θ) r as
+/// [x, y], the offset to the anchor a − x swapped, [y, x] (so that the torque's cross product
+/// arm × (a − x) is a lane-by-lane product and one subtraction), and the velocity [vx, vy].
+#[derive(Clone, Copy, Default)]
+struct Operands {
+    omega: f64,
+    sin_cos: Pair,
+    arm: Pair,
+    to_anchor: Pair,
+    velocity: Pair,
+}
+
+/// The Cauchy products the n-th coefficients need: ω·sin, ω·cos, the torque's arm × (a − x),
+/// and the damping power's |v|² and ω².
+struct Products {
+    omega_sin: f64,
+    omega_cos: f64,
+    lever: f64,
+    speed_squared: f64,
+    spin_squared: f64,
+}
+
+impl Products {
+    /// Each sum Σ f[j] g[n − j] is taken from its middle term out to its ends, the terms
+    /// (j, n − j) and (n − j, j) together: the ends hold the newest order, found only by the
+    /// previous one, so the middle's additions run while that order is still being computed,
+    /// and what waits on it is two multiply-adds, on operands kept in registers. The two ends
+    /// of each pair go to separate sums, which halves the chain again.
+    #[inline(always)]
+    fn at(
+        n: usize,
+        operands: &[Operands; MAX_ORDER + 1],
+        first: &Operands,
+        newest: &Operands,
+    ) -> Self {
+        let n = n.min(MAX_ORDER);
+        let zero = [0.0; 2];
+        let (mut spin_low, mut spin_high) = (zero, zero);
+        let (mut lever_low, mut lever_high) = (zero, zero);
+        let (mut speed, mut spin) = (zero, 0.0);
+        if n.is_multiple_of(2) {
+            let middle = if n == 0 { first } else { &operands[n / 2] };
+            spin_low = mul_add(zero, [middle.omega; 2], middle.sin_cos);
+            lever_low = mul_add(zero, middle.arm, middle.to_anchor);
+            speed = mul_add(zero, middle.velocity, middle.velocity);
+            spin = middle.omega * middle.omega;
+        }
+        let mut add_pair = |low: &Operands, high: &Operands| {
+            spin_low = mul_add(spin_low, [low.omega; 2], high.sin_cos);
+            spin_high = mul_add(spin_high, [high.omega; 2], low.sin_cos);
+            lever_low = mul_add(lever_low, low.arm, high.to_anchor);
+            lever_high = mul_add(lever_high, high.arm, low.to_anchor);
+            // The squares' pairs once, doubled (exactly).
+            let double = [2.0 * low.velocity[0], 2.0 * low.velocity[1]];
+            speed = mul_add(speed, double, high.velocity);
+            spin += 2.0 * low.omega * high.omega;
+        };
+        for low in (1..n.div_ceil(2)).rev() {
+            add_pair(&operands[low], &operands[n - low]);
+        }
+        if n >= 1 {
+            add_pair(first, newest);
+        }
+        let spin_sums = add(spin_low, spin_high);
+        let lever = add(lever_low, lever_high);
+        Self {
+            omega_sin: spin_sums[0],
+            omega_cos: spin_sums[1],
+            lever: lever[0] - lever[1],
+            speed_squared: speed[0] + speed[1],
+            spin_squared: spin,
+        }
     }
-    let middle = if n.is_multiple_of(2) {
-        a[n / 2] * a[n / 2]
-    } else {
-        0.0
-    };
-    2.0 * twice + middle
 }
 
-fn horner(coefficients: &[f64], h: f64) -> f64 {
-    coefficients.iter().rev().fold(0.0, |sum, &c| sum * h + c)
+/// Every component's series summed at `h`, each by Horner's rule.
+fn horner(rows: &[Components], h: f64) -> Components {
+    rows.iter().rev().fold([0.0; N], |sums, row| {
+        std::array::from_fn(|i| sums[i] * h + row[i])
+    })
 }
 
-fn weighted_max(weights: &[f64; N], value: impl Fn(usize) -> f64) -> f64 {
-    (0..N).map(|i| weights[i] * value(i)).fold(0.0, f64::max)
+/// The largest of weights[i]·|values[i]| over the motion's components (the energy is not
+/// weighed), as a tree of plain comparisons: every order of the series takes one, and the
+/// NaN-aware `f64::max` costs five instructions a comparison. A NaN here needs no care: it
+/// reaches the state, which the step then refuses.
+fn weighted_max(weights: &[f64; N], values: &[f64; N]) -> f64 {
+    let w = |i: usize| weights[i] * values[i].abs();
+    let larger = |a: f64, b: f64| if a > b { a } else { b };
+    let pairs = [
+        larger(w(0), w(1)),
+        larger(w(2), w(3)),
+        larger(w(4), w(5)),
+        larger(w(6), w(7)),
+    ];
+    larger(larger(pairs[0], pairs[1]), larger(pairs[2], pairs[3]))
 }
