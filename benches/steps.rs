@@ -182,10 +182,7 @@ fn ghost_app(scene: &str, stiffness: Option<f64>, ghosts_on: bool) -> App {
             ..default()
         })
         .add_plugins((SharedPlugin, SimulationPlugin, GhostsPlugin))
-        .add_systems(
-            FixedUpdate,
-            circle_the_anchor.before(PhysicsSystems::Accumulate),
-        );
+        .add_systems(FixedUpdate, circle_the_anchor.before(PhysicsSystems::Step));
     app.finish();
     app.cleanup();
     app.update();

@@ -14,7 +14,7 @@ use bevy::prelude::*;
 
 use crate::game::schedule::PhysicsSystems;
 use crate::game::shared::Overlays;
-use crate::game::simulation::{ForceAccumulator, ResetScene, RigidBox, body_state};
+use crate::game::simulation::{Band, ResetScene, RigidBox, acting_band, body_state};
 use crate::physics::{
     AutoSettings, BandEnds, BodyState, EnergyLedger, Integrator, MassProperties, SceneParams,
     StepInfo, Stepper,
@@ -190,7 +190,7 @@ fn restart_on_reset(_reset: On<ResetScene>, mut ghosts: ResMut<Ghosts>) {
     ghosts.restart = true;
 }
 
-/// Before the live box's integration: every ghost takes the same step under the same band,
+/// Before the live box's step: every ghost takes the same step under the same band,
 /// with the settings in force. Switched off, they are dropped, to start again from the live
 /// box when switched on.
 fn step_ghosts(
@@ -200,13 +200,14 @@ fn step_ghosts(
     params: Res<SceneParams>,
     boxes: Query<
         (
+            Entity,
             &crate::physics::LinearState,
             &crate::physics::AngularState,
             &MassProperties,
-            &ForceAccumulator,
         ),
         With<RigidBox>,
     >,
+    bands: Query<&Band>,
 ) {
     if !overlays.ghosts {
         if !ghosts.ghosts.is_empty() {
@@ -214,7 +215,7 @@ fn step_ghosts(
         }
         return;
     }
-    let Ok((linear, angular, mass, accumulator)) = boxes.single() else {
+    let Ok((body, linear, angular, mass)) = boxes.single() else {
         return;
     };
     if ghosts.ghosts.is_empty() || std::mem::take(&mut ghosts.restart) {
@@ -227,9 +228,10 @@ fn step_ghosts(
             .collect();
     }
     let dt = time.timestep().as_secs_f64();
+    let band = acting_band(body, &bands);
     for ghost in &mut ghosts.ghosts {
         ghost.stepper.params = *params;
         ghost.stepper.mass = *mass;
-        ghost.step(accumulator.band, dt);
+        ghost.step(band, dt);
     }
 }

@@ -7,8 +7,9 @@
 //!    of it acts on the very next step: the pointer read, the input acted on, the controls
 //!    applied, the settings' consequences derived;
 //! 2. `FixedUpdate`, zero or more times, [`PhysicsSystems`]: a playback's recorded inputs,
-//!    accumulate, the observers of the step's inputs (the recorder, the ghosts), integrate,
-//!    publish, then the readers of the step's results (the recorder, the HUD's history);
+//!    the observers of the step's inputs (the recorder, the ghosts), the step (accumulate,
+//!    integrate, publish), then the readers of the step's results (the recorder, the HUD's
+//!    history);
 //! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
 //!    interpolated between the last two steps, the end of a playback said;
 //! 4. `Update`, [`ScreenSystems`]: the UI's scale from the window, the HUD's text and the
@@ -41,19 +42,15 @@ pub enum GameSystems {
 pub enum PhysicsSystems {
     /// A playback puts the step's recorded resets, settings and band in place.
     Playback,
-    /// Book the hand's work since the last step in the energy ledger, then sum every force
-    /// and torque on each body into its `ForceAccumulator`.
-    Accumulate,
-    /// Read the step's inputs as the integrator will see them (the recorder, the ghosts);
-    /// write nothing the physics reads.
+    /// Read the step's inputs as the step will take them (the recorder, the ghosts: the band
+    /// that acts, `simulation::acting_band`); write nothing the physics reads.
     Observe,
-    /// Advance each body by one fixed step with the `Integrator` resource, from its
-    /// accumulated forces, then clear the accumulator.
-    Integrate,
-    /// Hand the new state to the rest of the app: the render snapshots, the energy books
-    /// settled (energies by kind, the ledger's residual), taps' bands removed after their one
-    /// step, the step counted.
-    Publish,
+    /// The step, one system: book the hand's work since the last step in the energy ledger,
+    /// sum every force and torque on each body into its `ForceAccumulator`, advance each body
+    /// with the `Integrator` resource, then hand the new state to the rest of the app (the
+    /// render snapshots, the energy books settled, taps' bands removed after their one step,
+    /// the step counted).
+    Step,
     /// Read the step's results (the recorder's state after the step, the HUD's energy
     /// history); write nothing the physics reads.
     AfterStep,
@@ -99,10 +96,8 @@ pub fn order_the_physics(app: &mut App) {
         FixedUpdate,
         (
             PhysicsSystems::Playback,
-            PhysicsSystems::Accumulate,
             PhysicsSystems::Observe,
-            PhysicsSystems::Integrate,
-            PhysicsSystems::Publish,
+            PhysicsSystems::Step,
             PhysicsSystems::AfterStep,
         )
             .chain(),

@@ -1,8 +1,9 @@
 //! The physics plugin: the box's state as components, the band as an entity, and the fixed
-//! step in three of the frame's sets (`schedule::PhysicsSystems`): accumulate forces and
-//! torques (and book the hand's work), integrate (and book what damping took out), publish
-//! (render snapshots, the energy books' settlement, taps ended, the step counted). It owns the
-//! body, the energy books and the step statistics, and puts them back on [`ResetScene`].
+//! step as one system in the frame's `schedule::PhysicsSystems::Step`: the hand's work booked,
+//! forces and torques accumulated, the integration (and what damping took out booked), then
+//! the results published (render snapshots, the energy books settled, taps ended, the step
+//! counted). It owns the body, the energy books and the step statistics, and puts them back on
+//! [`ResetScene`].
 //!
 //! Headless, and usable alone (the benchmarks and the side-by-side with the peers run it
 //! without the rest of the game). Every system is a thin loop over the numerical core in
@@ -43,14 +44,7 @@ impl Plugin for SimulationPlugin {
                     .run_if(resource_changed::<SceneParams>)
                     .in_set(GameSystems::ApplySettings),
             )
-            .add_systems(
-                FixedUpdate,
-                (
-                    accumulate.in_set(PhysicsSystems::Accumulate),
-                    integrate.in_set(PhysicsSystems::Integrate),
-                    publish.in_set(PhysicsSystems::Publish),
-                ),
-            );
+            .add_systems(FixedUpdate, step.in_set(PhysicsSystems::Step));
     }
 }
 
@@ -66,7 +60,8 @@ pub struct ResetScene;
 pub struct RigidBox;
 
 /// What acts on a body during the current step: the summed forces and torques, and the band
-/// whose force the integrator evaluates again at its intermediate states. Empty between steps.
+/// whose force the integrator evaluates again at its intermediate states. Filled and emptied
+/// within the step: empty between steps.
 #[derive(Component, Debug, Default, Clone, Copy, PartialEq)]
 pub struct ForceAccumulator {
     pub forces: Forces,
@@ -141,23 +136,42 @@ pub fn mechanical_energies(
     bodies: &Bodies,
     bands: &Query<&Band>,
 ) -> Energies {
+    energies_of(
+        params,
+        bodies
+            .iter()
+            .map(|(linear, angular, mass)| (body_state(linear, angular), mass)),
+        bands.iter().filter_map(|band| {
+            let (linear, angular, _) = bodies.get(band.body).ok()?;
+            Some((band.ends, body_state(linear, angular)))
+        }),
+    )
+}
+
+/// Kinetic energy of the bodies given, and band energy of the bands given with their body's
+/// state.
+fn energies_of<'m>(
+    params: &SceneParams,
+    bodies: impl Iterator<Item = (BodyState, &'m MassProperties)>,
+    bands: impl Iterator<Item = (BandEnds, BodyState)>,
+) -> Energies {
     let kinetic: Energies = bodies
-        .iter()
-        .map(|(linear, angular, mass)| {
-            Energies::of(&body_state(linear, angular), mass, None, params.stiffness)
-        })
+        .map(|(state, mass)| Energies::of(&state, mass, None, params.stiffness))
         .sum();
     let band = bands
-        .iter()
-        .filter_map(|band| {
-            let (linear, angular, _) = bodies.get(band.body).ok()?;
-            Some(
-                band.ends
-                    .potential_energy(&body_state(linear, angular), params.stiffness),
-            )
-        })
+        .map(|(ends, state)| ends.potential_energy(&state, params.stiffness))
         .sum();
     Energies { band, ..kinetic }
+}
+
+/// The band that acts on `body` in the next step: the first on it (the scene has one band a
+/// body; the pointer never makes a second, and the step ignores one). What the step's
+/// observers (`PhysicsSystems::Observe`: the recorder, the ghosts) read as its input.
+pub fn acting_band(body: Entity, bands: &Query<&Band>) -> Option<BandEnds> {
+    bands
+        .iter()
+        .find(|band| band.body == body)
+        .map(|band| band.ends)
 }
 
 /// The bodies the energy books count: their state and mass.
@@ -258,27 +272,81 @@ fn reset_bodies_and_books(
     *books = EnergyBooks::default();
 }
 
-/// Before the step, in one system (a system a step costs about as much as the box's physics,
-/// docs/benchmarks.md): the hand's work since the last step booked, then on each body the
-/// band's force k·(anchor − corner) at its corner with its torque r × F, and damping's force
-/// −b·v and torque −c·I·ω.
-fn accumulate(
-    params: Res<SceneParams>,
+/// Everything that says how to take a step (the step reads it, and so does the recorder).
+#[derive(SystemParam)]
+pub struct StepSettings<'w> {
+    pub time: Res<'w, Time<Fixed>>,
+    pub params: Res<'w, SceneParams>,
+    pub integrator: Res<'w, Integrator>,
+    pub auto: Res<'w, AutoSettings>,
+}
+
+/// What the step keeps account of: the energy books, the integrator's statistics, the count.
+#[derive(SystemParam)]
+struct StepRecords<'w> {
+    books: ResMut<'w, EnergyBooks>,
+    stats: ResMut<'w, StepStats>,
+    count: ResMut<'w, StepCount>,
+}
+
+/// The bodies the step moves.
+type Moving<'w, 's> = Query<
+    'w,
+    's,
+    (
+        &'static mut LinearState,
+        &'static mut AngularState,
+        &'static MassProperties,
+        &'static mut ForceAccumulator,
+        &'static mut RenderSnapshots,
+    ),
+    With<RigidBox>,
+>;
+
+/// The fixed step, in one system (each system a step costs Bevy about as much again as the
+/// box's physics: docs/peers.md), in three phases:
+/// - accumulate: the hand's work since the last step booked, then on each body the band's
+///   force k·(anchor − corner) at its corner with its torque r × F, and damping's force −b·v
+///   and torque −c·I·ω;
+/// - integrate with the `Integrator` resource (a step that would leave the state non-finite
+///   is refused; damping's share booked; the accumulator emptied);
+/// - publish: the render snapshots moved on, the energy books settled (the energies now, the
+///   residual), a tap's band removed after its one step, the step counted.
+fn step(
+    mut commands: Commands,
+    settings: StepSettings,
     bands: Query<&Band>,
-    energies: Bodies,
-    mut bodies: Query<(
-        &LinearState,
-        &AngularState,
-        &MassProperties,
-        &mut ForceAccumulator,
-    )>,
-    mut books: ResMut<EnergyBooks>,
+    taps: Query<Entity, (With<Band>, With<Tap>)>,
+    mut bodies: Moving,
+    mut records: StepRecords,
 ) {
-    let now = mechanical_energies(&params, &energies, &bands).total();
-    let settled = books.settled;
-    books.ledger.open_step(settled, now);
+    let StepSettings {
+        time,
+        params,
+        integrator,
+        auto,
+    } = settings;
+    let books = &mut *records.books;
+    let stats = &mut *records.stats;
+    let energies_now = |bodies: &Moving| {
+        energies_of(
+            &params,
+            bodies
+                .iter()
+                .map(|(linear, angular, mass, ..)| (body_state(linear, angular), mass)),
+            bands.iter().filter_map(|band| {
+                let (linear, angular, ..) = bodies.get(band.body).ok()?;
+                Some((band.ends, body_state(linear, angular)))
+            }),
+        )
+    };
+
+    // Accumulate.
+    books
+        .ledger
+        .open_step(books.settled, energies_now(&bodies).total());
     for band in &bands {
-        let Ok((linear, angular, _, mut accumulator)) = bodies.get_mut(band.body) else {
+        let Ok((linear, angular, _, mut accumulator, _)) = bodies.get_mut(band.body) else {
             continue;
         };
         if accumulator.band.is_some() {
@@ -288,60 +356,33 @@ fn accumulate(
         }
         accumulator.forces.applied += band
             .ends
-            .wrench(&body_state(linear, angular), params.stiffness);
+            .wrench(&body_state(&linear, &angular), params.stiffness);
         accumulator.band = Some(band.ends);
     }
-    for (linear, angular, mass, mut accumulator) in &mut bodies {
-        accumulator.forces.damping += damping_wrench(
-            &body_state(linear, angular),
-            mass,
-            params.linear_damping,
-            params.angular_damping,
-        );
-    }
-}
 
-/// Everything that says how to take a step.
-#[derive(SystemParam)]
-struct StepSettings<'w> {
-    time: Res<'w, Time<Fixed>>,
-    params: Res<'w, SceneParams>,
-    integrator: Res<'w, Integrator>,
-    auto: Res<'w, AutoSettings>,
-}
-
-fn integrate(
-    settings: StepSettings,
-    steps: Res<StepCount>,
-    mut stats: ResMut<StepStats>,
-    mut books: ResMut<EnergyBooks>,
-    mut bodies: Query<(
-        &mut LinearState,
-        &mut AngularState,
-        &MassProperties,
-        &mut ForceAccumulator,
-    )>,
-) {
-    let StepSettings {
-        time,
-        params,
-        integrator,
-        auto,
-    } = settings;
+    // Integrate.
     let dt = time.timestep().as_secs_f64();
     stats.substeps = 0;
     stats.fell_back = false;
-    for (mut linear, mut angular, mass, mut accumulator) in &mut bodies {
-        let model = params.force_model(*mass, accumulator.band);
+    let step = records.count.0 + 1;
+    for (mut linear, mut angular, mass, mut accumulator, mut snapshots) in &mut bodies {
         let mut state = body_state(&linear, &angular);
-        let info = integrator.step_with(&mut state, &model, accumulator.forces, dt, &auto);
+        let mut forces = accumulator.forces;
+        forces.damping +=
+            damping_wrench(&state, mass, params.linear_damping, params.angular_damping);
+        let model = params.force_model(*mass, accumulator.band);
+        *accumulator = ForceAccumulator::default();
+        let info = integrator.step_with(&mut state, &model, forces, dt, &auto);
         stats.substeps = stats.substeps.max(info.substeps);
         stats.fell_back |= info.fell_back;
         stats.fallbacks += u64::from(info.fell_back);
         // A divergent explicit method (a stiff band) must not put NaN, infinity or an absurd
         // value into a component: refuse the step, keep the last sane state, and say so.
-        if !state.is_sane() {
-            let step = steps.0 + 1;
+        if state.is_sane() {
+            books.ledger.dissipated += info.dissipated;
+            *linear = state.linear;
+            *angular = state.angular;
+        } else {
             if stats.divergence.is_none() {
                 warn!(
                     "integrator {} diverged at step {step}: step refused",
@@ -349,40 +390,19 @@ fn integrate(
                 );
             }
             stats.divergence = Some((*integrator, step));
-            *accumulator = ForceAccumulator::default();
-            continue;
         }
-        books.ledger.dissipated += info.dissipated;
-        *linear = state.linear;
-        *angular = state.angular;
-        *accumulator = ForceAccumulator::default();
-    }
-}
-
-/// After the step, in one system: the render snapshots moved on, the energy books settled
-/// (the energies now, the residual), a tap's band removed after its one step, the step
-/// counted.
-#[allow(clippy::too_many_arguments)]
-fn publish(
-    mut commands: Commands,
-    params: Res<SceneParams>,
-    bands: Query<&Band>,
-    taps: Query<Entity, (With<Band>, With<Tap>)>,
-    energies: Bodies,
-    mut snapshots: Query<(&LinearState, &AngularState, &mut RenderSnapshots)>,
-    mut books: ResMut<EnergyBooks>,
-    mut steps: ResMut<StepCount>,
-) {
-    for (linear, angular, mut snapshots) in &mut snapshots {
+        // Publish, for this body.
         snapshots.previous = snapshots.current;
-        snapshots.current = body_state(linear, angular);
+        snapshots.current = body_state(&linear, &angular);
     }
-    let energies = mechanical_energies(&params, &energies, &bands);
+
+    // Publish.
+    let energies = energies_now(&bodies);
     books.energies = energies;
     books.settled = Some(energies.total());
     books.residual = books.ledger.residual(energies.total());
     for band in &taps {
         commands.entity(band).despawn();
     }
-    steps.0 += 1;
+    records.count.0 = step;
 }

@@ -85,10 +85,7 @@ impl Game {
         ))
         .insert_resource(TimeUpdateStrategy::ManualDuration(frame))
         .init_resource::<AccumulatorAudit>()
-        .add_systems(
-            FixedUpdate,
-            audit_accumulators.after(PhysicsSystems::Integrate),
-        );
+        .add_systems(FixedUpdate, audit_accumulators.after(PhysicsSystems::Step));
 
         let window = app
             .world_mut()
@@ -344,10 +341,8 @@ impl Game {
     /// applied as [`Game::with`] does.
     pub fn keeping_trajectory(frame: Duration, extra: impl FnOnce(&mut App)) -> Self {
         Self::with(frame, |app| {
-            app.init_resource::<Trajectory>().add_systems(
-                FixedUpdate,
-                keep_trajectory.after(PhysicsSystems::Integrate),
-            );
+            app.init_resource::<Trajectory>()
+                .add_systems(FixedUpdate, keep_trajectory.after(PhysicsSystems::Step));
             extra(app);
         })
     }

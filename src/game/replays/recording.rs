@@ -15,8 +15,8 @@ use bevy::prelude::*;
 
 use crate::game::schedule::PhysicsSystems;
 use crate::game::shared::{SceneName, StatusMessage};
-use crate::game::simulation::{ForceAccumulator, ResetScene, RigidBox, body_state};
-use crate::physics::{AngularState, AutoSettings, BandEnds, Integrator, LinearState, SceneParams};
+use crate::game::simulation::{Band, ResetScene, RigidBox, StepSettings, acting_band, body_state};
+use crate::physics::{AngularState, BandEnds, LinearState};
 use crate::replay::{Replay, Settings};
 
 pub struct RecordingPlugin;
@@ -92,23 +92,25 @@ fn note_reset(_reset: On<ResetScene>, mut recorder: ResMut<Recorder>) {
     recorder.reset_pending = true;
 }
 
-/// Before the integration: the settings in force and the band the integrator will use.
+/// Before the step: the settings in force and the band the step will use.
 fn note_step_inputs(
     mut recorder: ResMut<Recorder>,
-    time: Res<Time<Fixed>>,
-    params: Res<SceneParams>,
-    integrator: Res<Integrator>,
-    auto: Res<AutoSettings>,
+    step: StepSettings,
     scene: Res<SceneName>,
-    boxes: Query<(&LinearState, &AngularState, &ForceAccumulator), With<RigidBox>>,
+    boxes: Query<(Entity, &LinearState, &AngularState), With<RigidBox>>,
+    bands: Query<&Band>,
 ) {
-    let Ok((linear, angular, accumulator)) = boxes.single() else {
+    let Ok((body, linear, angular)) = boxes.single() else {
         return;
     };
-    let settings = Settings::new(&params, time.timestep().as_secs_f64(), *integrator);
+    let settings = Settings::new(
+        &step.params,
+        step.time.timestep().as_secs_f64(),
+        *step.integrator,
+    );
     let recorder = &mut *recorder;
     let replay = recorder.replay.get_or_insert_with(|| {
-        Replay::start(&scene.0, settings, *auto, body_state(linear, angular))
+        Replay::start(&scene.0, settings, *step.auto, body_state(linear, angular))
     });
     if replay.is_full() {
         warn_once!("the recording is full: later steps are not recorded");
@@ -118,11 +120,11 @@ fn note_step_inputs(
         replay.push_reset();
     }
     replay.push_settings(settings);
-    recorder.band = accumulator.band;
+    recorder.band = acting_band(body, &bands);
     recorder.step_noted = true;
 }
 
-/// After the integration: the state the step left (refused steps included, as the game kept it).
+/// After the step: the state the step left (refused steps included, as the game kept it).
 fn note_step_result(
     mut recorder: ResMut<Recorder>,
     boxes: Query<(&LinearState, &AngularState), With<RigidBox>>,
