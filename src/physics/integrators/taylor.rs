@@ -126,12 +126,13 @@ pub fn integrate(
         series[0] = y;
         // Order 0: the step's start. `newest` is the latest order's operands, carried in
         // registers from one order to the next rather than read back from memory.
-        let first = Operands {
-            omega: y[7],
-            sin_cos: [y[3], y[2]],
-            arm: arm_of(y[2], y[3]),
-            to_anchor: [anchor.y - y[1], anchor.x - y[0]],
-            velocity: [y[5], y[6]],
+        let first = {
+            let [arm_x, arm_y] = arm_of(y[2], y[3]);
+            Operands {
+                left: [y[7], y[7], arm_x, arm_y],
+                right: [y[3], y[2], anchor.y - y[1], anchor.x - y[0]],
+                square: [y[5], y[6], y[7], 0.0],
+            }
         };
         operands[0] = first;
         let mut newest = first;
@@ -161,13 +162,10 @@ pub fn integrate(
             let n = n.min(MAX_ORDER - 1);
             let products = Products::at(n, &operands, &first, &newest);
             let over = 1.0 / (n + 1) as f64;
-            let Operands {
-                omega,
-                arm: [arm_x, arm_y],
-                to_anchor: [to_anchor_y, to_anchor_x],
-                velocity: [velocity_x, velocity_y],
-                ..
-            } = newest;
+            let omega = newest.omega();
+            let [_, _, arm_x, arm_y] = newest.left;
+            let [_, _, to_anchor_y, to_anchor_x] = newest.right;
+            let [velocity_x, velocity_y, ..] = newest.square;
             let position_x = velocity_x * over;
             let position_y = velocity_y * over;
             let cos = -products.omega_sin * over;
@@ -181,15 +179,16 @@ pub fn integrate(
             let (speed_squared, spin_squared) = (products.speed_squared, products.spin_squared);
             let e = (linear_damping * speed_squared + angular_damping * spin_squared) * over;
             series[n + 1] = [position_x, position_y, cos, sin, theta, vx, vy, om, e];
+            let [arm_x, arm_y] = arm_of(cos, sin);
             newest = Operands {
-                omega: om,
-                sin_cos: [sin, cos],
-                arm: arm_of(cos, sin),
-                to_anchor: [
+                left: [om, om, arm_x, arm_y],
+                right: [
+                    sin,
+                    cos,
                     anchor_past_start[0] - position_y,
                     anchor_past_start[1] - position_x,
                 ],
-                velocity: [vx, vy],
+                square: [vx, vy, om, 0.0],
             };
             operands[n + 1] = newest;
             let top = n + 1;
@@ -235,31 +234,34 @@ pub fn integrate(
     })
 }
 
-type Pair = [f64; 2];
+type Quad = [f64; 4];
 
-/// acc + a·b, lane by lane: written so that the compiler makes it one vector multiply and add
-/// where the machine has them (x86-64's SSE2); the same operations, so the same bits, where it
-/// does not (wasm).
+/// acc + a·b, lane by lane: written so that the compiler makes it vector multiplies and adds
+/// where the machine has them (two SSE2 instructions each on any x86-64); the same
+/// operations, so the same bits, one lane at a time where it has none (wasm).
 #[inline(always)]
-fn mul_add(acc: Pair, a: Pair, b: Pair) -> Pair {
-    [acc[0] + a[0] * b[0], acc[1] + a[1] * b[1]]
+fn mul_add(acc: Quad, a: Quad, b: Quad) -> Quad {
+    std::array::from_fn(|i| acc[i] + a[i] * b[i])
 }
 
-#[inline(always)]
-fn add(a: Pair, b: Pair) -> Pair {
-    [a[0] + b[0], a[1] + b[1]]
-}
-
-/// One order's operands of the Cauchy products: ω, [sin, cos], the corner's arm R(θ) r as
-/// [x, y], the offset to the anchor a − x swapped, [y, x] (so that the torque's cross product
-/// arm × (a − x) is a lane-by-lane product and one subtraction), and the velocity [vx, vy].
+/// One order's operands of the Cauchy products, in lanes, so that one multiply-add serves four
+/// sums: `left` × `right` is [ω·sin, ω·cos, arm x · (a − x) y, arm y · (a − x) x] (the torque's
+/// cross product arm × (a − x) is then the difference of the last two lanes), and `square` ×
+/// `square` is [vx², vy², ω², 0], the damping power's.
 #[derive(Clone, Copy, Default)]
 struct Operands {
-    omega: f64,
-    sin_cos: Pair,
-    arm: Pair,
-    to_anchor: Pair,
-    velocity: Pair,
+    /// [ω, ω, arm x, arm y], the corner's arm R(θ) r.
+    left: Quad,
+    /// [sin, cos, (a − x) y, (a − x) x], the offset to the anchor swapped.
+    right: Quad,
+    /// [vx, vy, ω, 0].
+    square: Quad,
+}
+
+impl Operands {
+    fn omega(&self) -> f64 {
+        self.left[0]
+    }
 }
 
 /// The Cauchy products the n-th coefficients need: ω·sin, ω·cos, the torque's arm × (a − x),
@@ -286,26 +288,19 @@ impl Products {
         newest: &Operands,
     ) -> Self {
         let n = n.min(MAX_ORDER);
-        let zero = [0.0; 2];
-        let (mut spin_low, mut spin_high) = (zero, zero);
-        let (mut lever_low, mut lever_high) = (zero, zero);
-        let (mut speed, mut spin) = (zero, 0.0);
+        let zero = [0.0; 4];
+        let (mut low_ends, mut high_ends, mut squares) = (zero, zero, zero);
         if n.is_multiple_of(2) {
             let middle = if n == 0 { first } else { &operands[n / 2] };
-            spin_low = mul_add(zero, [middle.omega; 2], middle.sin_cos);
-            lever_low = mul_add(zero, middle.arm, middle.to_anchor);
-            speed = mul_add(zero, middle.velocity, middle.velocity);
-            spin = middle.omega * middle.omega;
+            low_ends = mul_add(zero, middle.left, middle.right);
+            squares = mul_add(zero, middle.square, middle.square);
         }
         let mut add_pair = |low: &Operands, high: &Operands| {
-            spin_low = mul_add(spin_low, [low.omega; 2], high.sin_cos);
-            spin_high = mul_add(spin_high, [high.omega; 2], low.sin_cos);
-            lever_low = mul_add(lever_low, low.arm, high.to_anchor);
-            lever_high = mul_add(lever_high, high.arm, low.to_anchor);
+            low_ends = mul_add(low_ends, low.left, high.right);
+            high_ends = mul_add(high_ends, high.left, low.right);
             // The squares' pairs once, doubled (exactly).
-            let double = [2.0 * low.velocity[0], 2.0 * low.velocity[1]];
-            speed = mul_add(speed, double, high.velocity);
-            spin += 2.0 * low.omega * high.omega;
+            let double = low.square.map(|factor| 2.0 * factor);
+            squares = mul_add(squares, double, high.square);
         };
         for low in (1..n.div_ceil(2)).rev() {
             add_pair(&operands[low], &operands[n - low]);
@@ -313,14 +308,13 @@ impl Products {
         if n >= 1 {
             add_pair(first, newest);
         }
-        let spin_sums = add(spin_low, spin_high);
-        let lever = add(lever_low, lever_high);
+        let sums: Quad = std::array::from_fn(|i| low_ends[i] + high_ends[i]);
         Self {
-            omega_sin: spin_sums[0],
-            omega_cos: spin_sums[1],
-            lever: lever[0] - lever[1],
-            speed_squared: speed[0] + speed[1],
-            spin_squared: spin,
+            omega_sin: sums[0],
+            omega_cos: sums[1],
+            lever: sums[2] - sums[3],
+            speed_squared: squares[0] + squares[1],
+            spin_squared: squares[2],
         }
     }
 }
