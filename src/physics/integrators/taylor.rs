@@ -158,8 +158,6 @@ pub fn integrate(
         // step (a soft band: a few orders instead of all of them).
         let mut used = order;
         for n in 0..order {
-            // Never past the arrays (order <= MAX_ORDER): lets the compiler drop the checks.
-            let n = n.min(MAX_ORDER - 1);
             let products = Products::at(n, &operands, &first, &newest);
             let over = 1.0 / (n + 1) as f64;
             let omega = newest.omega();
