@@ -228,6 +228,56 @@ fn the_ghosts_are_outlined_in_their_colours_but_the_live_integrators() {
     assert_eq!(outlines(&drawn(&mut game), BOX_OUTLINE).len(), 1);
 }
 
+/// The ghosts' names stand in one column, a line apart, however far the ghosts drift from one
+/// another: a column beside each ghost's own outline put names over each other (seen in the
+/// browser, where rk4's name vanished under implicit's on the stiff scene).
+#[test]
+fn the_ghosts_names_stand_in_one_column_a_line_apart() {
+    use rubber_band_box::game::screen::draw::GhostLabel;
+    let mut game = screen_game();
+    game.update(1);
+    game.tap_key(KeyCode::Digit3);
+    game.tap_key(KeyCode::KeyG);
+    game.update(150);
+    let world = game.world();
+    let mut shown: Vec<(GhostKind, Vec3)> = world
+        .query::<(&GhostLabel, &Transform, &Visibility)>()
+        .iter(world)
+        .filter(|(_, _, visibility)| **visibility != Visibility::Hidden)
+        .map(|(label, transform, _)| (label.0, transform.translation))
+        .collect();
+    assert_eq!(
+        shown.len(),
+        Integrator::ALL.len(),
+        "every ghost's but the live one's"
+    );
+    let ghosts = world.resource::<rubber_band_box::game::ghosts::Ghosts>();
+    let apart = ghosts
+        .ghosts
+        .iter()
+        .map(|ghost| ghost.stepper.state.linear.position)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(low, high), p| {
+            (low.min(p.x), high.max(p.x))
+        });
+    assert!(
+        apart.1 - apart.0 > 1.0,
+        "the ghosts have drifted apart: {apart:?}"
+    );
+    shown.sort_by(|a, b| a.1.y.total_cmp(&b.1.y));
+    for pair in shown.windows(2) {
+        assert!(
+            (pair[0].1.x - pair[1].1.x).abs() < 1e-3,
+            "one column: {shown:?}"
+        );
+        let gap = pair[1].1.y - pair[0].1.y;
+        let first_gap = shown[1].1.y - shown[0].1.y;
+        assert!(
+            gap > 1.0 && (gap - first_gap).abs() < 1e-3,
+            "a line apart: {shown:?}"
+        );
+    }
+}
+
 #[test]
 fn the_vectors_and_the_trail_are_drawn_only_when_on() {
     let velocity = LinearRgba::from(Color::srgb(0.3, 0.9, 0.4));

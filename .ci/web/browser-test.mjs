@@ -253,8 +253,14 @@ try {
   const plainFrame = await frameMs(page);
   await page.keyboard.press("g");
   await page.waitForTimeout(1500);
-  const rk4 = pixels(await shot("ghosts"), green).length;
-  check(rk4 > 50 && withoutGhosts < 5, `G draws the ghosts on the stiff scene (${rk4} pixels of rk4's green, ${withoutGhosts} before G)`);
+  // rk4's outline can lie under the box and the other ghosts in any one frame (it follows the
+  // box closely): the most of it seen in three frames 0.4 s apart.
+  let rk4 = 0;
+  for (const i of [0, 1, 2]) {
+    if (i > 0) await page.waitForTimeout(400);
+    rk4 = Math.max(rk4, pixels(await shot(i === 0 ? "ghosts" : `ghosts-${i}`), green).length);
+  }
+  check(rk4 > 50 && withoutGhosts < 5, `G draws the ghosts on the stiff scene (at most ${rk4} pixels of rk4's green in three frames, ${withoutGhosts} before G)`);
   // P plots them: each ghost a point in its colour, with its name, inside the plot's frame at
   // the left of the scene (world x -312..-92, y -105..25).
   const plotScene = await sceneOn(page);

@@ -10,7 +10,7 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
-use crate::game::ghosts::{GhostKind, Ghosts};
+use crate::game::ghosts::{Ghost, GhostKind, Ghosts};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::graph::graph_frame;
 use crate::game::screen::plot::plot_footprint;
@@ -219,7 +219,7 @@ fn draw_trail(mut gizmos: Gizmos, trail: Res<Trail>) {
 
 /// A ghost's name, drawn beside its outline.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
-struct GhostLabel(GhostKind);
+pub struct GhostLabel(pub GhostKind);
 
 /// The names' size in the world, and on screen at the least (on a phone the scene is small).
 const GHOST_LABEL_SIZE: f32 = 11.0;
@@ -322,6 +322,30 @@ fn draw_ghosts(
         avoid.push(plot_footprint());
     }
     let widest = names.iter().map(String::len).max().unwrap_or(0) as f32 * font_size * 0.6;
+    // One column for every name, beside the reference, which follows the live box: a column
+    // beside each ghost's own outline would start a few px from the next one's, and the names
+    // of two ghosts close together would be drawn over each other.
+    let interpolated = |ghost: &Ghost| {
+        RenderSnapshots {
+            previous: ghost.previous,
+            current: ghost.stepper.state,
+        }
+        .interpolate(if ghost.diverged_at.is_some() {
+            1.0
+        } else {
+            alpha
+        })
+    };
+    let column_beside = ghosts
+        .ghosts
+        .iter()
+        .find(|ghost| ghost.kind == GhostKind::Reference)
+        .map(|reference| {
+            (
+                interpolated(reference).linear.position.as_vec2(),
+                reference.stepper.mass.size().as_vec2().length() / 2.0 + 4.0,
+            )
+        });
     let mut unlabelled: Vec<GhostKind> = ghosts.ghosts.iter().map(|g| g.kind).collect();
     for (entity, label, mut text, mut font, mut transform, mut visibility) in &mut labels {
         let Some((index, ghost)) = ghosts
@@ -346,15 +370,7 @@ fn draw_ghosts(
         if hidden {
             continue;
         }
-        let state = RenderSnapshots {
-            previous: ghost.previous,
-            current: ghost.stepper.state,
-        }
-        .interpolate(if ghost.diverged_at.is_some() {
-            1.0
-        } else {
-            alpha
-        });
+        let state = interpolated(ghost);
         let colour = ghost.kind.colour().with_alpha(0.8);
         let centre = state.linear.position.as_vec2();
         let rotation = Rot2::radians(state.angular.orientation as f32);
@@ -382,16 +398,16 @@ fn draw_ghosts(
             .filter(|g| g.kind != GhostKind::Method(*integrator))
             .position(|g| g.kind == ghost.kind)
             .unwrap_or(0);
-        let reach = size.length() / 2.0 + 4.0;
+        let (beside, reach) = column_beside.unwrap_or((centre, size.length() / 2.0 + 4.0));
         let (first, step) = label_column(
-            centre,
+            beside,
             reach,
             ghosts.ghosts.len().saturating_sub(1),
             line,
             widest,
             &avoid,
         );
-        transform.translation = (centre + first + step * place as f32).extend(2.0);
+        transform.translation = (beside + first + step * place as f32).extend(2.0);
     }
     for kind in unlabelled {
         commands.spawn((
