@@ -336,15 +336,17 @@ fn draw_ghosts(
             alpha
         })
     };
-    let column_beside = ghosts
+    // (Where the first name goes, the step to the next.) The list always holds the reference.
+    let column = ghosts
         .ghosts
         .iter()
         .find(|ghost| ghost.kind == GhostKind::Reference)
         .map(|reference| {
-            (
-                interpolated(reference).linear.position.as_vec2(),
-                reference.stepper.mass.size().as_vec2().length() / 2.0 + 4.0,
-            )
+            let beside = interpolated(reference).linear.position.as_vec2();
+            let reach = reference.stepper.mass.size().as_vec2().length() / 2.0 + 4.0;
+            let lines = ghosts.ghosts.len().saturating_sub(1);
+            let (first, step) = label_column(beside, reach, lines, line, widest, &avoid);
+            (beside + first, step)
         });
     let mut unlabelled: Vec<GhostKind> = ghosts.ghosts.iter().map(|g| g.kind).collect();
     for (entity, label, mut text, mut font, mut transform, mut visibility) in &mut labels {
@@ -398,16 +400,9 @@ fn draw_ghosts(
             .filter(|g| g.kind != GhostKind::Method(*integrator))
             .position(|g| g.kind == ghost.kind)
             .unwrap_or(0);
-        let (beside, reach) = column_beside.unwrap_or((centre, size.length() / 2.0 + 4.0));
-        let (first, step) = label_column(
-            beside,
-            reach,
-            ghosts.ghosts.len().saturating_sub(1),
-            line,
-            widest,
-            &avoid,
-        );
-        transform.translation = (beside + first + step * place as f32).extend(2.0);
+        if let Some((first, step)) = column {
+            transform.translation = (first + step * place as f32).extend(2.0);
+        }
     }
     for kind in unlabelled {
         commands.spawn((
