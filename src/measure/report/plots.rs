@@ -1,7 +1,9 @@
 //! The report's two plots, drawn with plotters as SVG: cost against error per work scene
 //! (`work_precision.svg`) and cost and error against the band's stiffness (`stiffness.svg`).
 //! `run` draws them from the work-precision and stiffness sweeps; the side-by-side adds the
-//! contenders' lines ([`ExtraLines`]).
+//! contenders' lines ([`ExtraLines`]). Each method has the core's colour
+//! ([`Integrator::colour`]), the game's too; each panel's legend stands in a strip of its own
+//! beside the axes, where no data is.
 
 use std::error::Error;
 use std::ops::Range;
@@ -25,13 +27,10 @@ pub struct Line {
 
 impl Line {
     fn of(integrator: Integrator, points: Vec<(f64, f64)>) -> Self {
-        let index = Integrator::ALL
-            .iter()
-            .position(|&i| i == integrator)
-            .unwrap_or(0);
+        let [r, g, b] = integrator.colour();
         Self {
             label: integrator.name().to_owned(),
-            colour: Palette99::pick(index).to_rgba(),
+            colour: RGBColor(r, g, b).to_rgba(),
             triangles: false,
             points,
         }
@@ -47,7 +46,10 @@ pub struct ExtraLines {
     pub stiffness: [Vec<Line>; 2],
 }
 
-/// One log-log panel: a line with dots per integrator, a legend, and red crosses.
+/// The width of a panel's legend strip, at the right of its axes.
+const LEGEND_WIDTH: u32 = 200;
+
+/// One log-log panel: a line with dots per integrator, a legend beside it, and red crosses.
 struct Panel<'a> {
     title: String,
     x: (&'a str, Range<f64>),
@@ -60,7 +62,10 @@ fn draw_panel(
     area: &DrawingArea<SVGBackend<'_>, Shift>,
     panel: Panel,
 ) -> Result<(), Box<dyn Error>> {
-    let mut chart = ChartBuilder::on(area)
+    let width = area.dim_in_pixel().0;
+    let (area, legend) = area.split_horizontally(width.saturating_sub(LEGEND_WIDTH));
+    draw_legend(&legend, &panel.lines)?;
+    let mut chart = ChartBuilder::on(&area)
         .caption(panel.title, ("sans-serif", 20))
         .margin(12)
         .x_label_area_size(45)
@@ -77,10 +82,7 @@ fn draw_panel(
         .draw()?;
     for line in panel.lines {
         let colour = line.colour;
-        chart
-            .draw_series(LineSeries::new(line.points.clone(), colour.stroke_width(2)))?
-            .label(line.label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
+        chart.draw_series(LineSeries::new(line.points.clone(), colour.stroke_width(2)))?;
         if line.triangles {
             chart.draw_series(
                 line.points
@@ -96,12 +98,30 @@ fn draw_panel(
         }
     }
     chart.draw_series(panel.crosses.iter().map(|&p| Cross::new(p, 5, RED)))?;
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()?;
+    Ok(())
+}
+
+/// A panel's legend, in its strip: each line's mark (a dot or a triangle on a stroke) and
+/// name, top to bottom, level with the axes' top.
+fn draw_legend(
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+    lines: &[Line],
+) -> Result<(), Box<dyn Error>> {
+    let style = ("sans-serif", 13).into_font().color(&BLACK);
+    for (index, line) in lines.iter().enumerate() {
+        let y = 48 + 20 * index as i32;
+        let colour = line.colour;
+        area.draw(&PathElement::new(
+            vec![(4, y), (28, y)],
+            colour.stroke_width(2),
+        ))?;
+        if line.triangles {
+            area.draw(&TriangleMarker::new((16, y), 6, colour.filled()))?;
+        } else {
+            area.draw(&Circle::new((16, y), 3, colour.filled()))?;
+        }
+        area.draw(&Text::new(line.label.clone(), (34, y - 8), style.clone()))?;
+    }
     Ok(())
 }
 

@@ -77,6 +77,20 @@ impl Integrator {
         }
     }
 
+    /// Its colour (sRGB), one table for every figure: the game's ghosts, table and plot, and
+    /// the report's charts. Read on the game's dark background and the report's white one.
+    pub fn colour(self) -> [u8; 3] {
+        match self {
+            Self::Euler => [225, 87, 89],
+            Self::Symplectic => [242, 142, 43],
+            Self::Verlet => [222, 186, 40],
+            Self::Rk4 => [89, 161, 79],
+            Self::Implicit => [78, 159, 214],
+            Self::Seed => [176, 122, 161],
+            Self::Auto => [255, 111, 176],
+        }
+    }
+
     /// Order of accuracy of the global error.
     pub fn order(self) -> u32 {
         match self {
