@@ -48,12 +48,15 @@ struct Drawn {
     closed: bool,
 }
 
-/// What the gizmos drew in the last frame.
+/// What the scene's gizmos drew in the last frame.
 fn drawn(game: &mut Game) -> Vec<Drawn> {
+    drawn_in::<DefaultGizmoConfigGroup>(game)
+}
+
+/// What the gizmos of group `G` drew in the last frame (the charts': `ChartGizmos`).
+fn drawn_in<G: 'static>(game: &mut Game) -> Vec<Drawn> {
     let world = game.world();
-    let handle = world.resource::<GizmoHandles>().handles()
-        [&TypeId::of::<DefaultGizmoConfigGroup>()]
-        .clone();
+    let handle = world.resource::<GizmoHandles>().handles()[&TypeId::of::<G>()].clone();
     let Some(handle) = handle else {
         return Vec::new();
     };
@@ -319,38 +322,64 @@ fn the_vectors_and_the_trail_are_drawn_only_when_on() {
     assert!(trail[0].points.len() >= 9, "{}", trail[0].points.len());
 }
 
-/// On a phone the HUD and the panel shrink with the window, to 0.6 at the least; at the
-/// game's own size and above they are at 1.
+/// On a phone the text shrinks a little with the window, to 0.85 at the least (text a
+/// person can still read); at the game's own size and above it is at 1.
 #[test]
-fn the_ui_scales_down_with_a_small_window_to_no_less_than_0_6() {
-    use rubber_band_box::game::screen::view::ui_scale_for;
+fn the_ui_scales_down_with_a_small_window_to_no_less_than_0_85() {
+    use rubber_band_box::game::layout::ui_scale_for;
     assert_eq!(ui_scale_for(Vec2::new(960.0, 720.0)), 1.0);
     assert_eq!(ui_scale_for(Vec2::new(1920.0, 1080.0)), 1.0);
-    assert_eq!(ui_scale_for(Vec2::new(720.0, 720.0)), 0.75);
-    assert_eq!(ui_scale_for(Vec2::new(390.0, 844.0)), 0.6);
+    assert_eq!(ui_scale_for(Vec2::new(648.0, 648.0)), 0.9);
+    assert_eq!(ui_scale_for(Vec2::new(390.0, 844.0)), 0.85);
     let mut game = screen_game();
     game.update(1);
     assert_eq!(game.world().resource::<UiScale>().0, 1.0);
     game.resize(UVec2::new(390, 844));
     game.update(1);
-    assert_eq!(game.world().resource::<UiScale>().0, 0.6);
-    game.resize(UVec2::new(720, 540));
+    assert_eq!(game.world().resource::<UiScale>().0, 0.85);
+    game.resize(UVec2::new(648, 648));
     game.update(1);
-    assert_eq!(game.world().resource::<UiScale>().0, 0.75);
+    assert_eq!(game.world().resource::<UiScale>().0, 0.9);
+}
+
+/// The headless game with the screen and Bevy's UI layout: the dock laid out, its charts'
+/// canvases placed (every camera told the window's size, as the renderer would).
+fn laid_out_screen_game(size: UVec2) -> Game {
+    let mut game = screen_game_with(|app| {
+        add_the_layout(app);
+        add_the_screen(app);
+    });
+    game.resize(size);
+    game.update(3);
+    game
+}
+
+/// The plot's canvas and its plotting frame, on the window (the UI's units scaled).
+fn plot_canvas(game: &mut Game) -> (rubber_band_box::game::screen::chart::Canvas, Rect) {
+    use rubber_band_box::game::screen::chart::Canvas;
+    use rubber_band_box::game::screen::plot::{PlotCanvas, plot_frame};
+    let world = game.world();
+    let scale = UiScale(world.resource::<UiScale>().0);
+    let mut canvases =
+        world.query_filtered::<(&ComputedNode, &bevy::ui::UiGlobalTransform), With<PlotCanvas>>();
+    let (node, transform) = canvases.single(world).unwrap();
+    let canvas = Canvas::of(node, transform, &scale);
+    (canvas, plot_frame(canvas.size()))
 }
 
 /// The plot (P): each ghost's point is its own figures, as the HUD lists them (distance from
 /// the reference, and time per step times the step rate), drawn in its colour where the
-/// report's axes put it; a diverged ghost is a cross at the right edge.
+/// report's axes put it in the plot card's canvas; a diverged ghost is a cross at the right
+/// edge.
 #[test]
 fn the_plot_puts_each_ghost_where_its_own_figures_say() {
     use bevy::ecs::system::RunSystemOnce;
     use rubber_band_box::game::ghosts::Ghosts;
     use rubber_band_box::game::hud::HudSources;
-    use rubber_band_box::game::screen::plot::{place, plot_frame, plot_points};
+    use rubber_band_box::game::screen::chart::ChartGizmos;
+    use rubber_band_box::game::screen::plot::{place, plot_points};
 
-    let mut game = screen_game();
-    game.update(1);
+    let mut game = laid_out_screen_game(UVec2::new(1280, 800));
     game.tap_key(KeyCode::KeyP);
     game.press_at(DVec2::new(200.0, 120.0));
     game.update(30);
@@ -377,11 +406,17 @@ fn the_plot_puts_each_ghost_where_its_own_figures_say() {
         assert!(point.cost > 0.0, "{} was timed", listed.name);
         assert_eq!(point.live, point.kind == GhostKind::Method(live));
     }
-    // Drawn: a circle in each ghost's colour around its place.
-    let drawn_now = drawn(&mut game);
-    let frame = plot_frame();
+    // Drawn: a circle in each ghost's colour around its place in the canvas.
+    let (canvas, frame) = plot_canvas(&mut game);
+    assert!(
+        canvas.rect.width() >= 300.0 && canvas.rect.height() >= 200.0,
+        "a chart a person reads on a desktop: {:?}",
+        canvas.rect
+    );
+    let window = Vec2::new(1280.0, 800.0);
+    let drawn_now = drawn_in::<ChartGizmos>(&mut game);
     for point in &points {
-        let at = place(point, frame);
+        let at = canvas.to_chart(place(point, frame), window);
         let colour = point.kind.colour();
         // A circle is a strip of many points around its centre.
         let circle = drawn_now.iter().any(|d| {
@@ -393,7 +428,7 @@ fn the_plot_puts_each_ghost_where_its_own_figures_say() {
                 )
         });
         assert!(circle, "{} at {at}", point.kind.name());
-        assert!(frame.contains(at));
+        assert!(frame.contains(place(point, frame)));
     }
 }
 
@@ -404,10 +439,10 @@ fn close_to(a: Vec2, b: Vec2) -> bool {
 #[test]
 fn a_diverged_ghost_is_a_cross_at_the_plots_right_edge() {
     use rubber_band_box::game::ghosts::Ghosts;
-    use rubber_band_box::game::screen::plot::{place, plot_frame, plot_points};
+    use rubber_band_box::game::screen::chart::ChartGizmos;
+    use rubber_band_box::game::screen::plot::{PlotLabel, place, plot_points};
 
-    let mut game = screen_game();
-    game.update(1);
+    let mut game = laid_out_screen_game(UVec2::new(1280, 800));
     // k = 2e5 at 100 Hz: explicit Euler cannot hold it.
     game.world().resource_mut::<SceneParams>().stiffness = 2e5;
     game.tap_key(KeyCode::KeyP);
@@ -420,10 +455,12 @@ fn a_diverged_ghost_is_a_cross_at_the_plots_right_edge() {
         .find(|p| p.kind == GhostKind::Method(Integrator::Euler))
         .unwrap();
     assert_eq!(euler.error, None, "euler diverged");
-    let at = place(euler, plot_frame());
-    assert_eq!(at.x, plot_frame().max.x);
+    let (canvas, frame) = plot_canvas(&mut game);
+    let placed = place(euler, frame);
+    assert_eq!(placed.x, frame.max.x);
+    let at = canvas.to_chart(placed, Vec2::new(1280.0, 800.0));
     let colour = GhostKind::Method(Integrator::Euler).colour();
-    let strokes = drawn(&mut game)
+    let strokes = drawn_in::<ChartGizmos>(&mut game)
         .into_iter()
         .filter(|d| {
             !d.closed
@@ -433,268 +470,109 @@ fn a_diverged_ghost_is_a_cross_at_the_plots_right_edge() {
         })
         .count();
     assert_eq!(strokes, 2, "a cross");
+    // Its name says so.
+    let world = game.world();
+    let name = world
+        .query::<(&PlotLabel, &Text)>()
+        .iter(world)
+        .find(|(label, _)| label.0 == GhostKind::Method(Integrator::Euler))
+        .map(|(_, text)| text.0.clone())
+        .unwrap();
+    assert_eq!(name, "euler diverged");
     // Off again: nothing of the plot drawn.
     game.tap_key(KeyCode::KeyP);
-    game.update(1);
-    let frame_drawn = drawn(&mut game).into_iter().any(|d| {
-        d.closed && d.points.len() == 4 && close_to(d.points[0], plot_frame().min)
-            || d.points.iter().any(|p| close_to(*p, plot_frame().min))
-    });
-    assert!(!frame_drawn, "the plot's frame is gone");
-}
-
-/// The scene is fitted to the part of the window the panel and the HUD leave free: at a
-/// desktop's size and both phones', with the panel folded (its one button) or open and the
-/// HUD's column, ghosts' list and help line where the game lays them out, the scene's
-/// rectangle lies inside the window and clear of every one of them; with room to spare, or
-/// nothing laid out, it fills the window as before.
-#[test]
-fn the_scene_is_fitted_where_no_control_lies() {
-    use rubber_band_box::game::screen::view::{fitted_scene, free_area, scene_scale};
-    let rect = |x0: f32, y0: f32, x1: f32, y1: f32| Rect::new(x0, y0, x1, y1);
-    // Laid out as the game's and the browser test's screenshots show them (logical window
-    // pixels): the panel, then the HUD's column, ghosts' list and help line.
-    let desktop_hud = [
-        rect(6.0, 6.0, 540.0, 224.0),
-        rect(6.0, 538.0, 662.0, 680.0),
-        rect(6.0, 684.0, 954.0, 714.0),
-    ];
-    let portrait_hud = [
-        rect(4.0, 4.0, 386.0, 146.0),
-        rect(4.0, 684.0, 386.0, 800.0),
-        rect(4.0, 804.0, 386.0, 842.0),
-    ];
-    let landscape_hud = [rect(4.0, 4.0, 480.0, 146.0), rect(4.0, 360.0, 840.0, 388.0)];
-    let cases = [
-        (
-            "desktop, folded",
-            Vec2::new(960.0, 720.0),
-            vec![rect(871.0, 648.0, 952.0, 678.0)],
-            &desktop_hud[..],
-        ),
-        (
-            "desktop, open",
-            Vec2::new(960.0, 720.0),
-            vec![
-                rect(604.0, 150.0, 952.0, 640.0),
-                rect(871.0, 648.0, 952.0, 678.0),
-            ],
-            &desktop_hud[..],
-        ),
-        (
-            "portrait, folded",
-            Vec2::new(390.0, 844.0),
-            vec![rect(335.0, 798.0, 385.0, 818.0)],
-            &portrait_hud[..],
-        ),
-        (
-            "portrait, open",
-            Vec2::new(390.0, 844.0),
-            vec![
-                rect(178.0, 500.0, 386.0, 795.0),
-                rect(335.0, 798.0, 385.0, 818.0),
-            ],
-            &portrait_hud[..],
-        ),
-        (
-            "landscape, open",
-            Vec2::new(844.0, 390.0),
-            vec![
-                rect(560.0, 4.0, 840.0, 350.0),
-                rect(790.0, 355.0, 840.0, 375.0),
-            ],
-            &landscape_hud[..],
-        ),
-    ];
-    for (name, window, controls, hud) in cases {
-        let covered: Vec<Rect> = controls.iter().chain(hud).copied().collect();
-        let free = free_area(window, &covered);
-        let scene = fitted_scene(free);
-        let inside = Rect::from_corners(Vec2::ZERO, window);
-        assert!(
-            scene.width() > 150.0,
-            "{name}: the scene is drawn ({scene:?})"
-        );
-        assert_eq!(inside.union(scene), inside, "{name}: inside the window");
-        for covering in &covered {
-            assert!(
-                scene.intersect(*covering).is_empty(),
-                "{name}: {scene:?} lies under {covering:?}"
-            );
-        }
-        // And no larger scene would have fitted: one 5% larger, centred anywhere on a grid,
-        // meets something or leaves the window.
-        let larger = scene.size() * 1.05;
-        for x in (0..=window.x as usize).step_by(4) {
-            for y in (0..=window.y as usize).step_by(4) {
-                let bigger = Rect::from_center_size(Vec2::new(x as f32, y as f32), larger);
-                let fits = inside.union(bigger) == inside
-                    && covered.iter().all(|c| c.intersect(bigger).is_empty());
-                assert!(!fits, "{name}: {bigger:?} would have fitted too");
-            }
-        }
-    }
-    // Nothing laid out, or a panel that a wide window keeps clear of: the whole window.
-    let window = Vec2::new(960.0, 720.0);
-    assert_eq!(
-        free_area(window, &[]),
-        Rect::from_corners(Vec2::ZERO, window)
-    );
-    let wide = Vec2::new(1280.0, 720.0);
-    let corner = [rect(1191.0, 648.0, 1272.0, 678.0)];
-    assert_eq!(
-        free_area(wide, &corner),
-        Rect::from_corners(Vec2::ZERO, wide)
-    );
-    assert_eq!(scene_scale(free_area(wide, &corner)), 1.5);
-}
-
-/// The scene keeps its place while the HUD's lines change width with their digits: the area
-/// it has is kept while its scene stays clear and nothing fits one more than 5% larger; it
-/// moves as soon as something covers it, and grows when the room is worth it.
-#[test]
-fn the_scene_does_not_follow_each_digit() {
-    use rubber_band_box::game::screen::view::{area_to_fit, fitted_scene, free_area};
-    let window = Vec2::new(960.0, 720.0);
-    let column = |right: f32| Rect::new(6.0, 6.0, right, 224.0);
-    let list = Rect::new(6.0, 538.0, 662.0, 680.0);
-    let first = free_area(window, &[column(540.0), list]);
-    // A digit more or less: kept.
-    for right in [532.0, 548.0] {
-        let covered = [column(right), list];
-        if fitted_scene(first).intersect(covered[0]).is_empty() {
-            assert_eq!(area_to_fit(window, &covered, Some(first)), first);
-        }
-    }
-    // A line that reaches over the scene: it moves clear.
-    let long = [column(800.0), list];
-    assert!(!fitted_scene(first).intersect(long[0]).is_empty());
-    let moved = area_to_fit(window, &long, Some(first));
-    assert!(fitted_scene(moved).intersect(long[0]).is_empty());
-    // The ghosts' list gone: the room below is worth growing into.
-    let grown = area_to_fit(window, &[column(800.0)], Some(moved));
-    assert!(fitted_scene(grown).width() > 1.05 * fitted_scene(moved).width());
-}
-
-/// The ghosts' names go above the box, or where that would lie over the energy graph or the
-/// plot or leave the tutorial's screen, below it, right or left of it.
-#[test]
-fn the_ghosts_names_keep_off_the_graph_and_the_plot() {
-    use rubber_band_box::game::screen::draw::label_column;
-    use rubber_band_box::game::screen::graph::graph_frame;
-    use rubber_band_box::game::screen::plot::plot_footprint;
-    let scene = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2());
-    let graph = graph_frame(scene);
-    let avoid = [graph, plot_footprint()];
-    let (line, width, lines, reach) = (13.0, 80.0, 7, 46.0);
-    // Each name's box, where the column puts it.
-    let names = |centre: Vec2, (first, step): (Vec2, Vec2)| -> Vec<Rect> {
-        (0..lines)
-            .map(|i| {
-                let at = centre + first + step * i as f32;
-                Rect::from_center_size(at, Vec2::new(width, line))
-            })
-            .collect()
-    };
-    let clear = |boxes: &[Rect]| {
-        boxes
+    game.update(2);
+    assert!(
+        drawn_in::<ChartGizmos>(&mut game)
             .iter()
-            .all(|b| scene.union(*b) == scene && avoid.iter().all(|a| a.intersect(*b).is_empty()))
-    };
-    // In the middle, the plot off: above, one line over the other.
-    let (first, step) = label_column(Vec2::ZERO, reach, lines, line, width, &[graph]);
-    assert!(first.x == 0.0 && first.y > reach && step == Vec2::new(0.0, line));
-    // Anywhere the box goes in the scene, the names lie in the scene, off the graph and the
-    // plot, but where no side has room (then above).
-    let mut crowded = 0;
-    let mut moved = 0;
-    for x in (-280..=280).step_by(20) {
-        for y in (-200..=200).step_by(20) {
-            let centre = Vec2::new(x as f32, y as f32);
-            let place = label_column(centre, reach, lines, line, width, &avoid);
-            let above = label_column(centre, reach, lines, line, width, &[]) == place;
-            if clear(&names(centre, place)) {
-                moved += usize::from(!above);
-            } else {
-                assert_eq!(
-                    place.0, first,
-                    "at {centre}: names on the graph or the plot"
-                );
-                crowded += 1;
-            }
-        }
-    }
-    assert!(moved > 50, "{moved} places moved the names off");
-    assert!(crowded < 120, "{crowded} of 609 places found no room");
-    // Just under the graph (where the tutorial's pull takes the box): not above.
-    let under_graph = Vec2::new(graph.center().x, graph.min.y - 50.0);
-    let place = label_column(under_graph, reach, lines, line, width, &avoid);
-    assert!(clear(&names(under_graph, place)), "on the graph");
+            .all(|d| !same_colour(d.colour, colour))
+    );
 }
 
-/// The same, from Bevy's own layout of the panel and the HUD (no renderer): at a desktop's
-/// and both phones' sizes, the ghosts' list on, the panel folded and open, the scene the
-/// camera shows lies inside the window and clear of every rectangle the panel and the HUD
-/// published, and those are the real ones (the fold button, the HUD's column).
+/// The names on the plot: each beside its point or tied to it, none on another name, on a
+/// point's mark or on the axes' text, all inside the frame, however the points crowd.
 #[test]
-fn the_laid_out_panel_and_hud_leave_the_scene_clear() {
-    use rubber_band_box::game::input::panel::PanelOpen;
-    use rubber_band_box::game::shared::{ControlsArea, HudArea};
-    let mut game = screen_game_with(|app| {
-        add_the_layout(app);
-        add_the_screen(app);
-    });
-    game.tap_key(KeyCode::KeyG);
-    for size in [
-        UVec2::new(960, 720),
-        UVec2::new(390, 844),
-        UVec2::new(844, 390),
-    ] {
-        for open in [false, true] {
-            game.resize(size);
-            game.world().resource_mut::<PanelOpen>().0 = open;
-            // Laid out, published, fitted: a frame each.
-            game.update(4);
-            let name = format!("{size}, panel open: {open}");
-            let world = game.world();
-            let controls = world.resource::<ControlsArea>().0.clone();
-            let hud = world.resource::<HudArea>().0.clone();
-            assert!(
-                !controls.is_empty() && hud.len() >= 3,
-                "{name}: laid out: {controls:?} {hud:?}"
-            );
-            // The HUD's column starts at its top left corner, below it the ghosts' list.
-            assert!(
-                hud.iter()
-                    .any(|r| r.min.x < 10.0 && r.min.y < 10.0 && r.height() > 50.0)
-            );
-            let window = size.as_vec2();
-            let mut cameras = world.query_filtered::<(&Projection, &Transform), With<Camera2d>>();
-            let (projection, transform) = cameras.single(world).unwrap();
-            let Projection::Orthographic(orthographic) = projection else {
-                panic!("{name}: the camera is orthographic");
-            };
-            // World to window: a world unit is 1 / scale pixels, the camera at the centre.
-            let pixels = 1.0 / orthographic.scale;
-            let centre = window / 2.0
-                + Vec2::new(-transform.translation.x, transform.translation.y) * pixels;
-            let scene = Rect::from_center_size(centre, SCENE_SIZE.as_vec2() * pixels);
-            let inside = Rect::from_corners(Vec2::ZERO, window);
-            assert!(
-                scene.width() > 150.0,
-                "{name}: the scene is drawn ({scene:?})"
-            );
-            assert!(
-                inside.union(scene).size().distance(inside.size()) < 0.01,
-                "{name}: {scene:?} leaves the window"
-            );
-            for covering in controls.iter().chain(&hud) {
-                let overlap = scene.intersect(*covering);
-                assert!(
-                    overlap.is_empty() || overlap.width().min(overlap.height()) < 0.01,
-                    "{name}: {scene:?} lies under {covering:?}"
-                );
+fn the_plots_names_never_meet() {
+    use rubber_band_box::game::screen::plot::{MARK, place_labels};
+    let bounds = Rect::new(34.0, 18.0, 320.0, 200.0);
+    let obstacles = [
+        Rect::new(0.0, 0.0, 200.0, 14.0),
+        Rect::new(34.0, 202.0, 60.0, 214.0),
+    ];
+    // Seven names on two points (most ghosts agree on a soft band), then spread out.
+    for spread in [0.0, 3.0, 20.0] {
+        let labels: Vec<(Vec2, Vec2)> = (0..7)
+            .map(|i| {
+                let point = Vec2::new(200.0 + spread * i as f32, 100.0 + (i % 2) as f32);
+                (point, Vec2::new(40.0 + 5.0 * i as f32, 13.0))
+            })
+            .collect();
+        let placed = place_labels(&labels, bounds, &obstacles);
+        for (i, rect) in placed.iter().enumerate() {
+            assert!(bounds.union(*rect) == bounds, "{i} in the frame: {rect:?}");
+            for other in placed.iter().skip(i + 1).chain(&obstacles) {
+                assert!(rect.intersect(*other).is_empty(), "{rect:?} on {other:?}");
+            }
+            for (point, _) in &labels {
+                let mark = Rect::from_center_half_size(*point, Vec2::splat(MARK));
+                assert!(rect.intersect(mark).is_empty(), "{rect:?} on a point");
             }
         }
     }
+}
+
+/// The camera keeps the box in view: while the box and the anchor lie well inside the home
+/// frame it stays home; pulled out, it widens so that both lie inside, at every frame,
+/// however fast, and comes home when they do.
+#[test]
+fn the_view_keeps_the_box_and_comes_home() {
+    use rubber_band_box::game::screen::view::{CameraFrame, eased_view, wanted_view};
+    let size = Vec2::new(600.0, 500.0);
+    let frame = CameraFrame::default();
+    let home = frame.home(size);
+    let screen = home.area(size);
+    assert!(
+        screen.width() >= 640.0 && screen.height() >= 480.0,
+        "{screen:?}"
+    );
+    let near = Rect::from_center_size(Vec2::new(50.0, 20.0), Vec2::splat(60.0));
+    assert_eq!(wanted_view(home, size, near), home);
+    let mut shown = home;
+    // A box flung far right and up, then back.
+    for step in 0..200 {
+        let t = step as f32 / 100.0;
+        let centre = if t < 1.0 {
+            Vec2::new(900.0 * t, 500.0 * t)
+        } else {
+            Vec2::new(900.0 * (2.0 - t), 500.0 * (2.0 - t))
+        };
+        let keep = Rect::from_center_size(centre, Vec2::splat(85.0));
+        let wanted = wanted_view(home, size, keep);
+        shown = eased_view(shown, wanted, 0.1, size, keep);
+        let area = shown.area(size);
+        assert!(
+            area.union(keep) == area,
+            "step {step}: {keep:?} out of {area:?}"
+        );
+    }
+    for _ in 0..100 {
+        shown = eased_view(shown, wanted_view(home, size, near), 0.1, size, near);
+    }
+    assert!(shown.centre.distance(home.centre) < 1.0, "{shown:?}");
+    assert!((shown.world_per_pixel / home.world_per_pixel - 1.0).abs() < 0.01);
+}
+
+/// The ghosts' names go above the box, or where that would leave the view, below it, right or
+/// left of it.
+#[test]
+fn the_ghosts_names_stay_in_view() {
+    use rubber_band_box::game::screen::draw::label_column;
+    let (reach, lines, line, width) = (45.0, 7, 13.2, 90.0);
+    let shown = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2());
+    let (first, step) = label_column(Vec2::ZERO, reach, lines, (line, width), shown);
+    assert!(first.x == 0.0 && first.y > reach && step == Vec2::new(0.0, line));
+    // At the top edge: not above.
+    let top = Vec2::new(0.0, 200.0);
+    let (first, _) = label_column(top, reach, lines, (line, width), shown);
+    assert!(first.y < 0.0 || first.x != 0.0, "{first}");
 }

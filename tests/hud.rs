@@ -139,21 +139,23 @@ fn the_hud_follows_the_game() {
     assert!(game.hud(HudLine::Clock).contains("PAUSED"));
 }
 
+/// H hides the dock of instruments (the scene takes the window) and shows it again.
 #[test]
-fn h_hides_and_shows_the_hud() {
+fn h_hides_and_shows_the_dock() {
+    use rubber_band_box::game::layout::Dock;
     let mut game = Game::stepping();
-    let visibilities = |game: &mut Game| {
-        let mut roots = game.world().query_filtered::<&Visibility, With<Hud>>();
-        roots.iter(game.world()).copied().collect::<Vec<_>>()
+    let display = |game: &mut Game| {
+        let mut docks = game.world().query_filtered::<&Node, With<Dock>>();
+        docks.single(game.world()).unwrap().display
     };
     game.update(1);
-    assert_eq!(visibilities(&mut game), [Visibility::Inherited; 3]);
+    assert_eq!(display(&mut game), Display::Flex);
     game.tap_key(HUD);
     game.update(1);
-    assert_eq!(visibilities(&mut game), [Visibility::Hidden; 3]);
+    assert_eq!(display(&mut game), Display::None);
     game.tap_key(HUD);
     game.update(1);
-    assert_eq!(visibilities(&mut game), [Visibility::Inherited; 3]);
+    assert_eq!(display(&mut game), Display::Flex);
 }
 
 #[test]
@@ -251,7 +253,7 @@ fn each_energy_line_says_its_own_reading() {
         dissipated: 0.25,
         ..EnergyLedger::starting_at(0.0)
     };
-    assert_eq!(HudLine::EnergyHeading.text(&r), "energy (mass px^2/s^2)");
+    assert_eq!(HudLine::EnergyHeading.text(&r), "energy (mass · px²/s²)");
     assert_eq!(
         HudLine::KineticLinear.text(&r),
         "  kinetic, linear           1.00"
@@ -287,14 +289,14 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
     // ω = 2 sqrt(k/m) = 4 /s, a step of 10 ms.
     assert_eq!(
         game.hud(HudLine::Stability),
-        "stability: auto at omega*dt 0.04, stable at any k"
+        "stability: auto at ω·dt 0.04, stable at any k"
     );
     *game.world().resource_mut::<Integrator>() = Integrator::Symplectic;
     game.update(1);
     // Semi-implicit Euler at the tutorial's damping: ω²h² + 2γh < 4, so ω·h < 1.99.
     assert_eq!(
         game.hud(HudLine::Stability),
-        "stability: symplectic at omega*dt 0.04 of 1.99: holds k up to 5.0e4"
+        "stability: symplectic at ω·dt 0.04 of 1.99: holds k up to 5.0e4"
     );
     for _ in 0..4 {
         game.tap_key(STIFFER);
@@ -304,7 +306,7 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
     let line = game.hud(HudLine::Stability);
     assert_eq!(
         line,
-        "stability: symplectic at omega*dt 4.00, past its 1.99: UNSTABLE above k 5.0e4"
+        "stability: symplectic at ω·dt 4.00, past its 1.99: UNSTABLE above k 5.0e4"
     );
     game.tap_key(KeyCode::KeyG);
     game.update(2);
@@ -316,9 +318,9 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
             .unwrap_or_else(|| panic!("{name} in\n{ghosts}"))
             .to_owned()
     };
-    assert!(row("rk4").ends_with("UNSTABLE: k<1.0e5"), "{ghosts}");
+    assert!(row("rk4").ends_with("✗ k<1.0e5"), "{ghosts}");
     // A limit under 1e4 reads whole: explicit Euler's at the tutorial's damping and 100 Hz.
-    assert!(row("euler").ends_with("UNSTABLE: k<221"), "{ghosts}");
+    assert!(row("euler").ends_with("✗ k<221"), "{ghosts}");
     assert!(row("implicit").ends_with("any k"), "{ghosts}");
 }
 
@@ -362,7 +364,7 @@ fn the_hud_takes_no_press() {
         .iter(world)
         .map(|pickable| pickable.cloned())
         .collect();
-    assert!(nodes.len() > HudLine::COLUMN.len(), "{}", nodes.len());
+    assert!(nodes.len() > HudLine::SPAWNED.len(), "{}", nodes.len());
     for pickable in nodes {
         let pickable = pickable.expect("every HUD node says how it is picked");
         assert!(!pickable.should_block_lower && !pickable.is_hoverable);
@@ -455,13 +457,15 @@ fn the_residual_is_said_against_the_energy_through() {
     );
 }
 
-/// A ghost's work: its substeps and evaluations when it took more than one substep, its
-/// evaluations alone when it took one; the steps its budget capped, if any.
+/// A ghost's work: its substeps times its evaluations when it took more than one substep,
+/// its evaluations alone when it took one; the steps its budget capped, if any, where a
+/// method says the stiffest band it holds.
 #[test]
 fn a_ghosts_work_says_its_substeps_when_there_are_several() {
     use rubber_band_box::game::hud::GhostReading;
     let ghost = |name: &'static str, substeps: u32, evaluations: u32, capped: u64| GhostReading {
         name,
+        colour: Color::WHITE,
         live: false,
         distance: Some(1e-3),
         residual: 0.0,
@@ -493,10 +497,10 @@ fn a_ghosts_work_says_its_substeps_when_there_are_several() {
             .unwrap_or_else(|| panic!("{name} in\n{list}"))
             .to_owned()
     };
-    assert!(row("rk4").contains(" 4 evals"), "{list}");
-    assert!(!row("rk4").contains("substeps"), "{list}");
-    assert!(row("reference").contains("3 substeps, 72 evals"), "{list}");
-    assert!(row("reference").contains("capped 5 steps"), "{list}");
+    assert!(row("rk4").contains("  100  4  "), "{list}");
+    assert!(!row("rk4").contains('×'), "{list}");
+    assert!(row("reference").contains("  100  3×72  "), "{list}");
+    assert!(row("reference").ends_with("capped 5"), "{list}");
     assert!(!row("rk4").contains("capped"), "{list}");
     assert!(row("rk4").ends_with("k<1.0e4"), "{list}");
 }
@@ -509,20 +513,20 @@ fn the_clock_and_the_live_ghost_come_from_the_game() {
     game.update(1);
     let clock = game.hud(HudLine::Clock);
     assert!(clock.starts_with("step 10.00 ms (100 Hz)"), "{clock}");
-    // The ghosts' list has no box while they are off, one while they are on.
-    let display = |game: &mut Game| {
+    // The ghosts' card is in the dock only while they are on, and opens when they come on.
+    use rubber_band_box::game::layout::{Card, Cards};
+    let offered = |game: &mut Game| {
         let world = game.world();
-        world
-            .query::<(&HudLine, &Node)>()
-            .iter(world)
-            .find(|(line, _)| **line == HudLine::Ghosts)
-            .map(|(_, node)| node.display)
-            .unwrap()
+        let overlays = *world.resource::<rubber_band_box::game::shared::Overlays>();
+        (
+            Card::Ghosts.offered(&overlays),
+            world.resource::<Cards>().is_open(Card::Ghosts),
+        )
     };
-    assert_eq!(display(&mut game), Display::None);
+    assert_eq!(offered(&mut game), (false, false));
     game.tap_key(KeyCode::KeyG);
     game.update(2);
-    assert_eq!(display(&mut game), Display::Flex);
+    assert_eq!(offered(&mut game), (true, true));
     let list = game.hud(HudLine::Ghosts);
     let live: Vec<&str> = list.lines().filter(|l| l.contains("(live)")).collect();
     assert_eq!(live.len(), 1, "{list}");

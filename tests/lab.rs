@@ -142,7 +142,7 @@ fn a_diverged_ghost_freezes_with_its_step() {
     assert_eq!(ghosts.ghosts[0].stepper.state, frozen);
     assert!(
         game.hud(HudLine::Ghosts)
-            .contains(&format!("DIVERGED at step {step}"))
+            .contains(&format!("DIVERGED  @{step}"))
     );
 }
 

@@ -13,9 +13,10 @@ use bevy::ui_widgets::{SetSliderValue, SliderValue, SliderValueChange};
 
 use common::*;
 use rubber_band_box::game::input::controls::{Action, CONTROLS, Parameter};
-use rubber_band_box::game::input::panel::{PanelButton, PanelOpen, PanelSlider};
+use rubber_band_box::game::input::panel::{PanelButton, PanelSlider};
+use rubber_band_box::game::layout::{Card, CardButton, Cards};
 use rubber_band_box::game::shared::SceneName;
-use rubber_band_box::game::shared::{ControlsArea, Overlays, StatusMessage};
+use rubber_band_box::game::shared::{Overlays, StatusMessage};
 use rubber_band_box::physics::Integrator;
 
 fn button(game: &mut Game, does: PanelButton) -> Entity {
@@ -26,6 +27,22 @@ fn button(game: &mut Game, does: PanelButton) -> Entity {
         .find(|(_, b)| **b == does)
         .map(|(entity, _)| entity)
         .unwrap_or_else(|| panic!("no button for {does:?}"))
+}
+
+/// A card's title (the one over the card; a tall window shows the other, its tab).
+fn title(game: &mut Game, card: Card) -> Entity {
+    let world = game.world();
+    let mut titles = world.query::<(Entity, &CardButton)>();
+    titles
+        .iter(world)
+        .filter(|(_, title)| title.0 == card)
+        .map(|(entity, _)| entity)
+        .last()
+        .unwrap_or_else(|| panic!("no title for {card:?}"))
+}
+
+fn open(game: &mut Game, card: Card) -> bool {
+    game.world().resource::<Cards>().is_open(card)
 }
 
 /// What a mouse click (or a finger's tap, `PointerId::Touch`) on `entity` sends through picking.
@@ -72,9 +89,9 @@ fn click(game: &mut Game, entity: Entity, pointer: PointerId) {
 #[test]
 fn a_click_or_a_tap_on_a_button_does_what_its_key_does() {
     let mut game = Game::stepping();
-    let fold = button(&mut game, PanelButton::Fold);
+    let fold = title(&mut game, Card::Controls);
     click(&mut game, fold, PointerId::Mouse);
-    assert!(game.world().resource::<PanelOpen>().0);
+    assert!(open(&mut game, Card::Controls));
 
     let pause = button(&mut game, PanelButton::Send(Action::TogglePause));
     click(&mut game, pause, PointerId::Mouse);
@@ -111,7 +128,7 @@ fn a_click_or_a_tap_on_a_button_does_what_its_key_does() {
     assert_eq!(game.world().resource::<SceneParams>().step_rate_hz, 200.0);
 
     click(&mut game, fold, PointerId::Mouse);
-    assert!(!game.world().resource::<PanelOpen>().0);
+    assert!(!open(&mut game, Card::Controls));
 }
 
 /// Every action a key sends has a button, but for the digits' scenes (each has one) and the
@@ -125,7 +142,7 @@ fn the_panel_reaches_every_control() {
         .iter(world)
         .filter_map(|b| match b {
             PanelButton::Send(action) => Some(*action),
-            PanelButton::Fold => None,
+            PanelButton::Fold(_) => None,
         })
         .collect();
     for control in CONTROLS {
@@ -220,24 +237,27 @@ fn sliders_set_parameters_through_validation() {
     assert!((shown - 2.0).abs() < 1e-4, "{shown}");
 }
 
-/// A press where the panel lies is the panel's: no band; beside it, the band.
+/// A press off the scene's viewport (where the dock and its panel lie) is not the band's:
+/// no band; on the viewport, the band.
 #[test]
-fn a_press_on_the_panel_never_grabs_the_box() {
+fn a_press_off_the_viewport_never_grabs_the_box() {
     let mut game = Game::stepping();
-    let on_panel = Vec2::new(1200.0, 40.0);
-    game.world().resource_mut::<ControlsArea>().0 =
-        vec![Rect::from_center_size(on_panel, Vec2::new(100.0, 60.0))];
-    game.cursor(Some(on_panel));
+    game.world()
+        .resource_mut::<rubber_band_box::game::layout::SceneViewport>()
+        .0 = Some(Rect::new(0.0, 0.0, 1000.0, 720.0));
+    let on_dock = Vec2::new(1200.0, 40.0);
+    game.cursor(Some(on_dock));
     game.mouse(ButtonState::Pressed);
     game.update(2);
     assert!(game.bands().is_empty());
-    game.touch_screen(3, TouchPhase::Started, on_panel);
+    game.touch_screen(3, TouchPhase::Started, on_dock);
     game.update(2);
     assert!(game.bands().is_empty());
-    game.touch_screen(3, TouchPhase::Ended, on_panel);
+    game.touch_screen(3, TouchPhase::Ended, on_dock);
     game.mouse(ButtonState::Released);
     game.update(1);
-    game.press_at(DVec2::new(100.0, 50.0));
+    game.cursor(Some(Vec2::new(500.0, 300.0)));
+    game.mouse(ButtonState::Pressed);
     game.update(1);
     assert_eq!(game.bands().len(), 1);
 }
@@ -306,37 +326,38 @@ fn laid_out_game() -> Game {
     game
 }
 
-/// Where the button that does `does` lies on the window, as laid out.
-fn laid_out(game: &mut Game, does: PanelButton) -> Rect {
+/// Where a laid-out node lies on the window.
+fn rect_of(game: &mut Game, entity: Entity) -> Rect {
     let world = game.world();
     let scale = world.resource::<UiScale>().0;
-    let mut buttons = world.query::<(&PanelButton, &ComputedNode, &UiGlobalTransform)>();
-    let (_, node, transform) = buttons
-        .iter(world)
-        .find(|(b, _, _)| **b == does)
-        .unwrap_or_else(|| panic!("no button for {does:?}"));
+    let node = world.get::<ComputedNode>(entity).unwrap();
+    let transform = world.get::<UiGlobalTransform>(entity).unwrap();
     let s = node.inverse_scale_factor() * scale;
     Rect::from_center_size(transform.translation * s, node.size() * s)
 }
 
+/// Where the button that does `does` lies on the window, as laid out.
+fn laid_out(game: &mut Game, does: PanelButton) -> Rect {
+    let entity = button(game, does);
+    rect_of(game, entity)
+}
+
 /// A phone's tap, the way the game takes it: a finger's `TouchInput` at the place Bevy's UI
 /// layout gave the button (`tap_buttons` reads the touches; picking misses a new finger's
-/// first press in the browser). The fold button unfolds the panel, the laid-out pause button
-/// pauses the game, and neither press grabs the box; the panel's own footprint
-/// (`ControlsArea`, published after the layout) covers both buttons, and a finger beside the
-/// panel still pulls.
+/// first press in the browser). The controls card's title, in the dock at the window's
+/// right, unfolds it; the laid-out pause button pauses the game; neither tap grabs the box,
+/// and a finger on the scene still pulls.
 #[test]
 fn a_finger_taps_a_laid_out_button_and_never_grabs_the_box() {
     let mut game = laid_out_game();
-    let fold = laid_out(&mut game, PanelButton::Fold);
+    let fold = title(&mut game, Card::Controls);
+    let fold = rect_of(&mut game, fold);
     assert!(
-        fold.width() > 20.0 && fold.height() >= 30.0,
+        fold.width() > 20.0 && fold.height() >= 28.0,
         "laid out: {fold:?}"
     );
-    // Bottom right of the 1280 x 720 window.
-    assert!(fold.max.x <= 1280.0 && fold.min.x > 1000.0 && fold.max.y > 600.0);
-    let area = game.world().resource::<ControlsArea>().clone();
-    assert!(area.contains(fold.center()), "{area:?} holds {fold:?}");
+    // The dock's first card, at the right of the 1280 x 720 window.
+    assert!(fold.max.x <= 1280.0 && fold.min.x > 800.0 && fold.min.y < 60.0);
 
     let tap = |game: &mut Game, id: u64, at: Vec2| {
         game.touch_screen(id, TouchPhase::Started, at);
@@ -346,23 +367,18 @@ fn a_finger_taps_a_laid_out_button_and_never_grabs_the_box() {
         game.update(2);
         grabbed
     };
-    assert!(!game.world().resource::<PanelOpen>().0);
+    assert!(!open(&mut game, Card::Controls));
     // Folded, the body's buttons have no size: a tap elsewhere reaches none of them.
     tap(&mut game, 5, Vec2::new(300.0, 300.0));
-    assert!(!game.world().resource::<PanelOpen>().0);
+    assert!(!open(&mut game, Card::Controls));
     assert!(!game.world().resource::<Time<Virtual>>().is_paused());
     assert_eq!(*game.world().resource::<Integrator>(), Integrator::Auto);
     assert_eq!(*game.world().resource::<Overlays>(), Overlays::default());
     assert!(!tap(&mut game, 1, fold.center()), "the tap grabbed the box");
-    assert!(
-        game.world().resource::<PanelOpen>().0,
-        "the tap unfolded it"
-    );
+    assert!(open(&mut game, Card::Controls), "the tap unfolded it");
 
     let pause = laid_out(&mut game, PanelButton::Send(Action::TogglePause));
     assert!(pause.width() > 20.0, "unfolded, the pause button has room");
-    let area = game.world().resource::<ControlsArea>().clone();
-    assert!(area.contains(pause.center()), "{area:?} holds {pause:?}");
     let paused = |game: &mut Game| game.world().resource::<Time<Virtual>>().is_paused();
     assert!(!paused(&mut game));
     assert!(
@@ -371,10 +387,10 @@ fn a_finger_taps_a_laid_out_button_and_never_grabs_the_box() {
     );
     assert!(paused(&mut game), "the tap paused the game");
 
-    // A finger on the scene, clear of the panel, pulls.
+    // A finger on the scene pulls.
     game.touch(3, TouchPhase::Started, DVec2::new(-100.0, 50.0));
     game.update(1);
-    assert_eq!(game.bands().len(), 1, "a finger beside the panel pulls");
+    assert_eq!(game.bands().len(), 1, "a finger on the scene pulls");
 }
 
 /// What the panel lights says what is on: the live integrator's button and the scene's, the
@@ -414,14 +430,12 @@ fn the_lit_buttons_say_what_is_on() {
     game.world().resource_mut::<SceneName>().0 = "stiff".to_owned();
     game.world().resource_mut::<Overlays>().hud_hidden = true;
     game.world().resource_mut::<Overlays>().ghosts = true;
-    game.world().resource_mut::<PanelOpen>().0 = true;
     game.update(1);
     let on = lit(&mut game);
     for button in [
         PanelButton::Send(Action::Integrator(Integrator::Rk4)),
         PanelButton::Send(Action::Scene(2)),
         PanelButton::Send(Action::ToggleGhosts),
-        PanelButton::Fold,
     ] {
         assert!(on.contains(&button), "{button:?} lit: {on:?}");
     }

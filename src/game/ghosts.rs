@@ -56,16 +56,11 @@ impl GhostKind {
         }
     }
 
-    /// Its outline's colour: one per integrator, white for the reference.
+    /// Its colour, the same in its outline, its row of the table and its point on the plot
+    /// (the core's [`Integrator::colour`], as the report's figures): white for the reference.
     pub fn colour(self) -> Color {
         match self {
-            Self::Method(Integrator::Euler) => Color::srgb(0.95, 0.35, 0.3),
-            Self::Method(Integrator::Symplectic) => Color::srgb(0.95, 0.65, 0.2),
-            Self::Method(Integrator::Verlet) => Color::srgb(0.9, 0.9, 0.3),
-            Self::Method(Integrator::Rk4) => Color::srgb(0.4, 0.85, 0.4),
-            Self::Method(Integrator::Implicit) => Color::srgb(0.35, 0.8, 0.95),
-            Self::Method(Integrator::Seed) => Color::srgb(0.75, 0.5, 0.95),
-            Self::Method(Integrator::Auto) => Color::srgb(0.95, 0.5, 0.8),
+            Self::Method(integrator) => crate::game::theme::method_colour(integrator),
             Self::Reference => Color::WHITE,
         }
     }

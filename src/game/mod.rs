@@ -5,7 +5,10 @@
 //! - [`play`]: the play command's set-up, the window, and the run;
 //! - [`schedule`]: the frame's order, every system set declared and ordered in one place;
 //! - [`shared`]: the resources several plugins read (the scene's name, the status line, what
-//!   shows, where the panel lies);
+//!   shows);
+//! - [`theme`]: the fonts, the type scale, the palette and the spacing every text reads;
+//! - [`layout`]: the window's regions: the scene's viewport, the status and hint lines, the
+//!   dock of instrument cards;
 //! - [`simulation`]: the physics plugin that steps the core in `FixedUpdate`;
 //! - [`input`]: the pointer, the keys and the on-screen panel, which all send actions;
 //! - [`replays`]: the game's side of replays and scenes: recording, playback, the scenes on
@@ -13,13 +16,14 @@
 //! - [`ghosts`]: every integrator and a reference stepping beside the live box;
 //! - [`stability`]: each integrator's distance from instability at the present settings;
 //! - [`hud`]: the heads-up display's text, its energy history and the window title;
-//! - [`screen`]: camera, interpolation, drawing and the energy graph (need a window);
+//! - [`screen`]: the cameras, interpolation, drawing and the dock's charts (need a window);
 //! - `web`, in the browser only: the page's side (downloads, files opened, what the page
 //!   reads back).
 
 pub mod ghosts;
 pub mod hud;
 pub mod input;
+pub mod layout;
 pub mod play;
 pub mod replays;
 pub mod schedule;
@@ -27,6 +31,7 @@ pub mod screen;
 pub mod shared;
 pub mod simulation;
 pub mod stability;
+pub mod theme;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
@@ -41,6 +46,8 @@ impl Plugin for GameLogicPlugin {
         schedule::order_the_frame(app);
         app.add_plugins((
             shared::SharedPlugin,
+            theme::ThemePlugin,
+            layout::LayoutPlugin,
             simulation::SimulationPlugin,
             input::pointer::PointerPlugin,
             input::controls::ControlsPlugin,
@@ -60,12 +67,6 @@ pub struct GamePlugin;
 
 impl Plugin for GamePlugin {
     fn build(&self, app: &mut App) {
-        app.add_plugins((
-            GameLogicPlugin,
-            screen::view::ViewPlugin,
-            screen::draw::DrawPlugin,
-            screen::graph::EnergyGraphPlugin,
-            screen::plot::WorkPrecisionPlotPlugin,
-        ));
+        app.add_plugins((GameLogicPlugin, screen::ScreenPlugin));
     }
 }

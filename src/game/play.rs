@@ -9,7 +9,7 @@ use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::ShapePlugin;
 
 use super::GamePlugin;
-use super::screen::view::WINDOW_SIZE;
+use super::layout::WINDOW_SIZE;
 use crate::physics::{Integrator, SceneParams};
 
 /// How to start the game: `play`'s options on the command line, the defaults on the web.
@@ -106,7 +106,7 @@ pub fn play(options: &PlayOptions) -> Result<(), String> {
         // A process-wide signal handler: installed by the game that plays, not by `prepare`.
         super::replays::recording::sigterm::exit_on_sigterm(&mut app);
     }
-    app.insert_resource(ClearColor(Color::BLACK))
+    app.insert_resource(ClearColor(super::theme::colour::BACKGROUND))
         .add_plugins(DefaultPlugins.set(WindowPlugin {
             primary_window: Some(window()),
             ..default()

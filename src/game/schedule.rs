@@ -12,10 +12,12 @@
 //!    history);
 //! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
 //!    interpolated between the last two steps, the end of a playback said;
-//! 4. `Update`, [`ScreenSystems`]: the UI's scale from the window, the HUD's text and the
-//!    window title, the panel, the drawing, then the plot;
-//! 5. `PostUpdate` and `Last`, [`AfterBevySystems`]: after Bevy's UI layout the panel says
-//!    where it lies; after Bevy's window exit systems the recorder saves a game that ends.
+//! 4. `Update`, [`ScreenSystems`]: the regions arranged for the window, the camera placed,
+//!    the HUD's text and the window title, the panel, the drawing and the energy graph, then
+//!    the plot;
+//! 5. `PostUpdate` and `Last`, [`AfterBevySystems`]: after Bevy's UI layout the layout says
+//!    where the scene's viewport lies; after Bevy's window exit systems the recorder saves a
+//!    game that ends.
 //!
 //! [`order_the_physics`] chains the fixed step's sets, and the physics plugin calls it itself
 //! because it also runs without the game (the benchmarks, the side-by-side with the peers);
@@ -67,23 +69,25 @@ pub enum AfterStepsSystems {
 /// The screen's work in `Update`, in this order (the HUD and the panel both write `Text`).
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum ScreenSystems {
-    /// The UI's scale from the window's size (the HUD and the panel shrink on a phone).
+    /// The regions arranged for the window's shape and the cards open, the UI's scale.
     Scale,
+    /// The scene camera zoomed, panned, following the box, placed in the viewport.
+    Camera,
     /// The HUD's text and the window title.
     Hud,
     /// The panel's values and thumbs, read back from the resources.
     Panel,
-    /// The box, the band, the overlays and the energy graph drawn.
+    /// The box, the band and the overlays drawn, and the energy graph (the charts' gizmos
+    /// are the graph's, then the plot's).
     Draw,
-    /// The ghosts' speed against error, over the rest (its labels and the ghosts' are both
-    /// `Text2d`).
+    /// The ghosts' speed against error, in its card.
     Plot,
 }
 
 /// Work that waits for Bevy's own systems.
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum AfterBevySystems {
-    /// In `PostUpdate`, after the UI's layout: where the panel's controls lie.
+    /// In `PostUpdate`, after the UI's layout: where the scene's viewport lies.
     AfterLayout,
     /// In `Last`, after the window's exit systems asked to exit: a game that ends saved.
     AfterExit,
@@ -130,6 +134,7 @@ pub fn order_the_frame(app: &mut App) {
         Update,
         (
             ScreenSystems::Scale,
+            ScreenSystems::Camera,
             ScreenSystems::Hud,
             ScreenSystems::Panel,
             ScreenSystems::Draw,

@@ -1,7 +1,6 @@
 //! The resources several plugins of the game read, each initialised once, here
-//! ([`SharedPlugin`], added first by the game): the scene's name, the status line, what shows,
-//! and where the panel and the HUD lie. A leaf: it imports no plugin, so none of its readers imports
-//! another for them.
+//! ([`SharedPlugin`], added first by the game): the scene's name, the status line and what
+//! shows. A leaf: it imports no plugin, so none of its readers imports another for them.
 
 use bevy::prelude::*;
 
@@ -13,9 +12,7 @@ impl Plugin for SharedPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<SceneName>()
             .init_resource::<StatusMessage>()
-            .init_resource::<Overlays>()
-            .init_resource::<ControlsArea>()
-            .init_resource::<HudArea>();
+            .init_resource::<Overlays>();
     }
 }
 
@@ -41,7 +38,7 @@ pub struct Overlays {
     pub ghosts: bool,
     /// The ghosts' speed against their error, live (`screen::plot`).
     pub plot: bool,
-    /// The HUD (text, energy graph, help line) shows unless hidden.
+    /// The dock of instruments shows unless hidden (H).
     pub hud_hidden: bool,
 }
 
@@ -49,22 +46,6 @@ pub struct Overlays {
 /// value refused), shown on the HUD's replay line until the next.
 #[derive(Resource, Debug, Default, Clone, PartialEq)]
 pub struct StatusMessage(pub Option<String>);
-
-/// Where the on-screen controls lie, in logical window pixels: a press there goes to them, not
-/// to the band. The panel writes it after each layout; the pointer reads it.
-#[derive(Resource, Debug, Default, Clone, PartialEq)]
-pub struct ControlsArea(pub Vec<Rect>);
-
-impl ControlsArea {
-    pub fn contains(&self, point: Vec2) -> bool {
-        self.0.iter().any(|rect| rect.contains(point))
-    }
-}
-
-/// Where the HUD's text lies, in logical window pixels: the scene is drawn clear of it (a
-/// press there still pulls the band: the HUD only shows). The HUD writes it after each layout.
-#[derive(Resource, Debug, Default, Clone, PartialEq)]
-pub struct HudArea(pub Vec<Rect>);
 
 /// Where a UI node lies in the window, in logical pixels (what the pointer and the page use):
 /// the node's physical rectangle over the window's scale factor. `ComputedNode`'s inverse

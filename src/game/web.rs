@@ -1,6 +1,6 @@
 //! The page around the web build: the few things only JavaScript can do (download a file,
 //! ask for one, receive a dropped one) and what the page can read back (a replay's hash, how a
-//! playback ended, where the panel's buttons are). A leaf: no Bevy, no game state; the
+//! playback ended, where the panel's buttons, the viewport, the texts and the box are). A leaf: no Bevy, no game state; the
 //! recorder, the playback and the panel call it.
 
 use wasm_bindgen::prelude::*;
@@ -70,6 +70,18 @@ export function publish_panel(json) {
 export function publish_scene(x, y, width, height) {
   api().scene = [x, y, width, height];
 }
+
+export function publish_viewport(x, y, width, height) {
+  api().viewport = [x, y, width, height];
+}
+
+export function publish_texts(json) {
+  api().texts = JSON.parse(json);
+}
+
+export function publish_box(json) {
+  api().box = JSON.parse(json);
+}
 "#)]
 extern "C" {
     /// Offers `text` as a download; the file's name.
@@ -100,4 +112,15 @@ extern "C" {
     /// `window.rubberBandBox.scene`: where the tutorial's 640 x 480 screen is drawn on the
     /// page (CSS pixels: x, y, width, height), so that a test can find the world on it.
     pub fn publish_scene(x: f32, y: f32, width: f32, height: f32);
+
+    /// `window.rubberBandBox.viewport`: the scene's viewport on the page (CSS pixels: x, y,
+    /// width, height).
+    pub fn publish_viewport(x: f32, y: f32, width: f32, height: f32);
+
+    /// `window.rubberBandBox.texts`: every text shown, `{ text, rect: [x, y, width, height] }`
+    /// (CSS pixels; the part a scrolled dock shows).
+    pub fn publish_texts(json: &str);
+
+    /// `window.rubberBandBox.box`: the box's corners on the page, `[[x, y], ...]` (CSS pixels).
+    pub fn publish_box(json: &str);
 }

@@ -24,9 +24,8 @@ pub use bevy::window::{
 pub use rubber_band_box::game::GameLogicPlugin;
 pub use rubber_band_box::game::hud::{EnergyHistory, Hud, HudLine};
 pub use rubber_band_box::game::input::controls::CYCLE_INTEGRATOR;
-pub use rubber_band_box::game::input::pointer::{Grip, PointerPlugin, PointerSource};
+pub use rubber_band_box::game::input::pointer::{Grip, PointerPlugin, PointerSource, SceneCamera};
 pub use rubber_band_box::game::schedule::PhysicsSystems;
-pub use rubber_band_box::game::screen::view::scene_projection;
 pub use rubber_band_box::game::simulation::{
     Band, EnergyBooks, ForceAccumulator, RigidBox, SimulationPlugin, StepCount, StepStats,
 };
@@ -97,8 +96,15 @@ impl Game {
                 PrimaryWindow,
             ))
             .id();
-        // What bevy_render's camera system would compute for this window.
-        let mut projection = scene_projection();
+        // What bevy_render's camera system would compute for this window, with the tutorial's
+        // 640 x 480 screen fitted to it (as the game's camera does with no dock).
+        let mut projection = Projection::Orthographic(OrthographicProjection {
+            scaling_mode: bevy::camera::ScalingMode::AutoMin {
+                min_width: 640.0,
+                min_height: 480.0,
+            },
+            ..OrthographicProjection::default_2d()
+        });
         projection.update(WINDOW.x as f32, WINDOW.y as f32);
         let mut camera = Camera::default();
         camera.computed.clip_from_view = projection.get_clip_from_view();
@@ -106,8 +112,13 @@ impl Game {
             physical_size: WINDOW,
             scale_factor: 1.0,
         });
-        app.world_mut()
-            .spawn((Camera2d, camera, projection, GlobalTransform::IDENTITY));
+        app.world_mut().spawn((
+            Camera2d,
+            SceneCamera,
+            camera,
+            projection,
+            GlobalTransform::IDENTITY,
+        ));
 
         extra(&mut app);
         // After every plugin, so that it applies to every schedule they made.
@@ -252,12 +263,41 @@ impl Game {
 
     /// What a HUD line says now.
     pub fn hud(&mut self, line: HudLine) -> String {
+        if line == HudLine::Ghosts {
+            return self.ghost_table();
+        }
         let mut lines = self.world().query::<(&HudLine, &Text)>();
         lines
             .iter(self.world())
             .find(|(l, _)| **l == line)
             .map(|(_, text)| text.0.clone())
             .expect("every HUD line is spawned")
+    }
+
+    /// The ghosts' table as its grid shows it: a row a line, the cells two spaces apart.
+    pub fn ghost_table(&mut self) -> String {
+        use rubber_band_box::game::hud::GhostCell;
+        let mut cells: Vec<(GhostCell, String)> = self
+            .world()
+            .query::<(&GhostCell, &Text)>()
+            .iter(self.world())
+            .map(|(cell, text)| (*cell, text.0.clone()))
+            .collect();
+        cells.sort_by_key(|(cell, _)| (cell.row, cell.column));
+        let mut rows: Vec<Vec<String>> = Vec::new();
+        for (cell, text) in cells {
+            if rows.len() <= cell.row {
+                rows.resize(cell.row + 1, Vec::new());
+            }
+            if !text.is_empty() {
+                rows[cell.row].push(text);
+            }
+        }
+        rows.iter()
+            .filter(|row| !row.is_empty())
+            .map(|row| row.join("  "))
+            .collect::<Vec<_>>()
+            .join("\n")
     }
 
     pub fn steps(&mut self) -> u64 {
@@ -359,21 +399,13 @@ pub fn bits(states: &[BodyState]) -> Vec<[u64; 6]> {
 /// The screen's plugins (view, drawing, energy graph, plot) added to a headless game, with
 /// what the renderer would bring for them: assets, and the ones the gizmos' mesh bounds read.
 pub fn add_the_screen(app: &mut App) {
-    use rubber_band_box::game::screen::{
-        draw::DrawPlugin, graph::EnergyGraphPlugin, plot::WorkPrecisionPlotPlugin, view::ViewPlugin,
-    };
+    use rubber_band_box::game::screen::ScreenPlugin;
     if !app.is_plugin_added::<bevy::asset::AssetPlugin>() {
         app.add_plugins(bevy::asset::AssetPlugin::default());
     }
     app.init_asset::<Mesh>()
         .init_asset::<bevy::mesh::skinning::SkinnedMeshInverseBindposes>();
-    app.add_plugins((
-        bevy::gizmos::GizmoPlugin,
-        ViewPlugin,
-        DrawPlugin,
-        EnergyGraphPlugin,
-        WorkPrecisionPlotPlugin,
-    ));
+    app.add_plugins((bevy::gizmos::GizmoPlugin, ScreenPlugin));
 }
 
 /// Bevy's own UI layout, with no renderer: the panel's and the HUD's nodes get their

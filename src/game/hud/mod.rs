@@ -17,14 +17,14 @@ use bevy::prelude::*;
 
 use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::input::controls::help_line;
+use crate::game::layout::{Card, Slot};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
-use crate::game::schedule::{AfterBevySystems, ScreenSystems};
-use crate::game::shared::{
-    HudArea, Overlays, SceneName, StatusMessage, linear_damping_readout, readable, window_rect,
-};
+use crate::game::schedule::ScreenSystems;
+use crate::game::shared::{SceneName, StatusMessage, linear_damping_readout, readable};
 use crate::game::simulation::{Band, Bodies, EnergyBooks, StepStats, mechanical_energies};
 use crate::game::stability::StabilityMargins;
+use crate::game::theme::{self, colour, size, space};
 use crate::physics::stability::{Limit, Margin};
 use crate::physics::{Energies, EnergyLedger, Integrator, Scenario, SceneParams};
 pub use history::EnergyHistory;
@@ -41,27 +41,26 @@ impl Plugin for HudPlugin {
             .add_systems(
                 Update,
                 (show_hud, title::show_state_in_title).in_set(ScreenSystems::Hud),
-            )
-            .add_systems(
-                PostUpdate,
-                publish_area.in_set(AfterBevySystems::AfterLayout),
             );
     }
 }
 
-pub const KINETIC_COLOUR: Color = Color::srgb(0.35, 0.75, 1.0);
-pub const BAND_ENERGY_COLOUR: Color = Color::srgb(1.0, 0.3, 0.8);
-pub const TOTAL_COLOUR: Color = Color::srgb(1.0, 0.85, 0.2);
-const TEXT_COLOUR: Color = Color::srgb(0.9, 0.9, 0.9);
-const DIM_COLOUR: Color = Color::srgb(0.6, 0.6, 0.65);
-const WARNING_COLOUR: Color = Color::srgb(1.0, 0.4, 0.3);
-const BACKDROP_COLOUR: Color = Color::srgba(0.0, 0.0, 0.0, 0.55);
-const FONT_SIZE: f32 = 13.0;
-const HELP_FONT_SIZE: f32 = 12.0;
+pub const KINETIC_COLOUR: Color = colour::KINETIC;
+pub const BAND_ENERGY_COLOUR: Color = colour::BAND_ENERGY;
+pub const TOTAL_COLOUR: Color = colour::TOTAL;
+const TEXT_COLOUR: Color = colour::TEXT;
+const DIM_COLOUR: Color = colour::DIM;
+const WARNING_COLOUR: Color = colour::WARNING;
 
-/// One line of the HUD. Each is a `Text` entity whose content [`HudLine::text`] writes.
+/// One line of the HUD. Each is a `Text` entity whose content [`HudLine::text`] writes, in
+/// the region [`HudLine::slot`] names; the ghosts' table is a grid of cells of its own
+/// ([`ghost_table`]), its text the same cells a row a line.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 pub enum HudLine {
+    /// Over the scene: what a player must always see.
+    Status,
+    /// Under the scene: how to play, in one line.
+    Hint,
     SceneName,
     Integrator,
     Clock,
@@ -80,9 +79,10 @@ pub enum HudLine {
 }
 
 impl HudLine {
-    /// The column's lines, top to bottom (the ghosts' list and the help line sit apart, at
-    /// the bottom).
-    pub const COLUMN: [HudLine; 13] = [
+    /// Every line with an entity of its own, in the order they are spawned.
+    pub const SPAWNED: [HudLine; 16] = [
+        HudLine::Status,
+        HudLine::Hint,
         HudLine::SceneName,
         HudLine::Integrator,
         HudLine::Clock,
@@ -96,7 +96,45 @@ impl HudLine {
         HudLine::Ledger,
         HudLine::Residual,
         HudLine::Replay,
+        HudLine::Help,
     ];
+
+    /// Where the line lies: the status over the scene, the hint under it, the rest in the
+    /// dock's cards.
+    pub fn slot(self) -> Slot {
+        match self {
+            HudLine::Status => Slot::Status,
+            HudLine::Hint => Slot::Hint,
+            HudLine::SceneName
+            | HudLine::Integrator
+            | HudLine::Clock
+            | HudLine::Parameters
+            | HudLine::Replay => Slot::Card(Card::Readouts),
+            HudLine::Stability => Slot::Card(Card::Stability),
+            HudLine::Ghosts => Slot::Card(Card::Ghosts),
+            HudLine::Help => Slot::Card(Card::Controls),
+            HudLine::EnergyHeading
+            | HudLine::KineticLinear
+            | HudLine::KineticRotational
+            | HudLine::BandPotential
+            | HudLine::Total
+            | HudLine::Ledger
+            | HudLine::Residual => Slot::Card(Card::Energy),
+        }
+    }
+
+    /// The line's size and face: figures of one width where numbers stand in columns.
+    fn font(self) -> TextFont {
+        match self {
+            HudLine::Status => theme::text_font(size::TITLE),
+            HudLine::Hint | HudLine::Help => theme::text_font(size::CAPTION),
+            HudLine::KineticLinear
+            | HudLine::KineticRotational
+            | HudLine::BandPotential
+            | HudLine::Total => theme::figures_font(size::READOUT),
+            _ => theme::text_font(size::BODY),
+        }
+    }
 
     /// The line's colour: the energy lines in their graph colours (the graph's legend).
     pub fn colour(self, readings: &HudReadings) -> Color {
@@ -108,9 +146,12 @@ impl HudLine {
             HudLine::Stability if readings.live_margin().is_some_and(|m| !m.holds) => {
                 WARNING_COLOUR
             }
-            HudLine::EnergyHeading | HudLine::Help | HudLine::Replay | HudLine::Ghosts => {
-                DIM_COLOUR
-            }
+            HudLine::Status if readings.divergence.is_some() => WARNING_COLOUR,
+            HudLine::EnergyHeading
+            | HudLine::Help
+            | HudLine::Hint
+            | HudLine::Replay
+            | HudLine::Ghosts => DIM_COLOUR,
             _ => TEXT_COLOUR,
         }
     }
@@ -118,6 +159,8 @@ impl HudLine {
     pub fn text(self, r: &HudReadings) -> String {
         let e = &r.energies;
         match self {
+            HudLine::Status => status_line(r),
+            HudLine::Hint => HINT.to_owned(),
             HudLine::SceneName => {
                 let summary = Scenario::named(&r.scene)
                     .map_or("a recorded game", |scenario| scenario.summary);
@@ -171,7 +214,7 @@ impl HudLine {
                 linear_damping_readout(r.linear_rate * r.mass, r.mass),
                 readable(r.angular_rate)
             ),
-            HudLine::EnergyHeading => "energy (mass px^2/s^2)".to_owned(),
+            HudLine::EnergyHeading => "energy (mass · px²/s²)".to_owned(),
             HudLine::KineticLinear => format!("  kinetic, linear   {}", energy(e.linear)),
             HudLine::KineticRotational => format!("  kinetic, rotation {}", energy(e.rotational)),
             HudLine::BandPotential => format!("  band potential    {}", energy(e.band)),
@@ -208,47 +251,103 @@ impl HudLine {
     }
 }
 
-/// A line per ghost: its distance from the reference, its energy residual, its work and
-/// time per step; empty while the ghosts are off.
-fn ghost_lines(r: &HudReadings) -> String {
+/// The hint under the scene: how to play, in a line a phone can hold.
+pub const HINT: &str = "drag: pull the box · wheel or pinch: zoom · F: frame · H: instruments";
+
+/// The status over the scene: the integrator, k, the step rate, the time scale, the clock;
+/// paused or diverged said.
+fn status_line(r: &HudReadings) -> String {
+    let mut line = format!(
+        "{} · k {} · {} Hz · time ×{} · t {:.1} s",
+        r.integrator,
+        readable(r.stiffness),
+        readable(r.step_rate_hz),
+        readable(r.time_scale),
+        r.simulated_seconds
+    );
+    if r.paused {
+        line += " · PAUSED";
+    }
+    if let Some((diverged, step)) = r.divergence {
+        line += &format!(" · {diverged} DIVERGED at step {step}");
+    }
+    line
+}
+
+/// The ghosts' table's columns.
+pub const GHOST_COLUMNS: [&str; 6] = [
+    "method", "error px", "energy", "ns/step", "evals", "holds k",
+];
+
+/// The ghosts' table: a header and a row per ghost, each cell its text (a row's cells read
+/// left to right): the ghost's distance from the reference, its energy residual, its time
+/// and work per step, and the stiffest band its method holds at this step. Empty while the
+/// ghosts are off.
+pub fn ghost_table(r: &HudReadings) -> Vec<[String; 6]> {
     if r.ghosts.is_empty() {
-        return String::new();
+        return Vec::new();
     }
-    let mut text =
-        "ghosts: distance from the reference, energy residual, work and time per step, k held"
-            .to_owned();
+    let mut rows = vec![GHOST_COLUMNS.map(str::to_owned)];
     for g in &r.ghosts {
-        let live = if g.live { " (live)" } else { "" };
-        let name = format!("{}{live}", g.name);
-        text += &format!("\n  {name:<17}");
-        let margin = r.margins.iter().find(|m| m.integrator.name() == g.name);
-        let margin = margin.map_or(String::new(), |m| format!("  {}", stability_short(m)));
-        if let Some(step) = g.diverged_at {
-            text += &format!("DIVERGED at step {step} (frozen){margin}");
-            continue;
-        }
-        let distance = g.distance.map_or("-".to_owned(), |d| format!("{d:.1e} px"));
-        let work = if g.substeps > 1 {
-            format!("{} substeps, {} evals", g.substeps, g.evaluations)
+        let name = if g.live {
+            format!("{} (live)", g.name)
         } else {
-            format!("{} evals", g.evaluations)
+            g.name.to_owned()
         };
-        text += &format!(
-            "{distance:>10}  {:>+9.1e}  {work:<22} {:>7.0} ns",
-            g.residual, g.ns_per_step
-        );
-        if g.capped > 0 {
-            text += &format!("  capped {} steps", g.capped);
-        }
-        text += &margin;
+        let margin = r.margins.iter().find(|m| m.integrator.name() == g.name);
+        let holds = match (margin, g.capped) {
+            (Some(margin), _) => stability_short(margin),
+            (None, 0) => String::new(),
+            (None, capped) => format!("capped {capped}"),
+        };
+        let work = if g.substeps > 1 {
+            format!("{}×{}", g.substeps, g.evaluations)
+        } else {
+            g.evaluations.to_string()
+        };
+        let row = match g.diverged_at {
+            Some(step) => [
+                name,
+                "DIVERGED".to_owned(),
+                format!("@{step}"),
+                String::new(),
+                String::new(),
+                holds,
+            ],
+            None => [
+                name,
+                g.distance.map_or("-".to_owned(), |d| format!("{d:.1e}")),
+                format!("{:+.1e}", g.residual),
+                format!("{:.0}", g.ns_per_step),
+                work,
+                holds,
+            ],
+        };
+        rows.push(row);
     }
-    text
+    rows
+}
+
+/// The table as text, a row a line, its cells two spaces apart (what a test or a terminal
+/// reads).
+fn ghost_lines(r: &HudReadings) -> String {
+    ghost_table(r)
+        .iter()
+        .map(|row| {
+            row.iter()
+                .filter(|cell| !cell.is_empty())
+                .cloned()
+                .collect::<Vec<_>>()
+                .join("  ")
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 /// The live integrator's margin, said in full: ω·dt now against the method's limit at this
 /// damping, and the stiffest band it holds.
 fn stability_text(margin: &Margin) -> String {
-    let now = format!("{} at omega*dt {:.2}", margin.integrator, margin.omega_dt);
+    let now = format!("{} at ω·dt {:.2}", margin.integrator, margin.omega_dt);
     match margin.stiffest {
         Limit::Any => format!("{now}, stable at any k"),
         Limit::Never => format!("{now}: UNSTABLE at any k without more damping"),
@@ -267,9 +366,9 @@ fn stability_text(margin: &Margin) -> String {
 fn stability_short(margin: &Margin) -> String {
     match (margin.stiffest, margin.holds) {
         (Limit::Any, _) => "any k".to_owned(),
-        (Limit::Never, _) => "no k".to_owned(),
+        (Limit::Never, _) => "✗ no k".to_owned(),
         (Limit::UpTo(k), true) => format!("k<{}", number(k)),
-        (Limit::UpTo(k), false) => format!("UNSTABLE: k<{}", number(k)),
+        (Limit::UpTo(k), false) => format!("✗ k<{}", number(k)),
     }
 }
 
@@ -341,6 +440,8 @@ impl HudReadings {
 #[derive(Debug, Clone, PartialEq)]
 pub struct GhostReading {
     pub name: &'static str,
+    /// Its colour, in its outline, its row and its point.
+    pub colour: Color,
     /// The live box's integrator.
     pub live: bool,
     pub distance: Option<f64>,
@@ -415,6 +516,7 @@ impl HudSources<'_, '_> {
                 .iter()
                 .map(|ghost| GhostReading {
                     name: ghost.kind.name(),
+                    colour: ghost.kind.colour(),
                     live: ghost.kind == GhostKind::Method(*self.integrator),
                     distance: self.ghosts.distance_from_reference(ghost),
                     residual: ghost.residual(),
@@ -430,121 +532,143 @@ impl HudSources<'_, '_> {
     }
 }
 
-/// The HUD's root: hidden with the H key.
+/// A text of the HUD (its lines and its table).
 #[derive(Component, Debug)]
 pub struct Hud;
 
-fn spawn_hud(mut commands: Commands) {
-    // The HUD only shows: a press where it lies over the panel (a long line on a small
-    // screen) goes through to the panel's button.
-    let text = |line: HudLine, size: f32| {
-        (
+/// A cell of the ghosts' table: its row (0 the header) and column.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct GhostCell {
+    pub row: usize,
+    pub column: usize,
+}
+
+/// Rows the table has room for: the header, every integrator and the reference.
+const GHOST_ROWS: usize = Integrator::ALL.len() + 2;
+
+fn spawn_hud(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
+    let slot = |wanted: Slot| {
+        slots
+            .iter()
+            .find(|(_, slot)| **slot == wanted)
+            .map(|(entity, _)| entity)
+    };
+    for line in HudLine::SPAWNED {
+        let Some(parent) = slot(line.slot()) else {
+            continue;
+        };
+        let padding = match line.slot() {
+            Slot::Card(_) => UiRect::axes(px(space::PAD + 2.0), px(1)),
+            _ => UiRect::ZERO,
+        };
+        commands.spawn((
+            Name::new(format!("HUD {line:?}")),
+            Hud,
             line,
             Text::default(),
-            TextFont::from_font_size(size),
+            line.font(),
             TextColor(TEXT_COLOUR),
             Pickable::IGNORE,
-        )
+            Node {
+                padding,
+                ..default()
+            },
+            BackgroundColor(match line.slot() {
+                Slot::Card(_) => colour::CARD,
+                _ => Color::NONE,
+            }),
+            ChildOf(parent),
+        ));
+    }
+    // The ghosts' table: a grid, so that its columns line up in any face.
+    let Some(card) = slot(Slot::Card(Card::Ghosts)) else {
+        return;
     };
-    let column = commands
+    let grid = commands
         .spawn((
-            Name::new("HUD column"),
+            Name::new("Ghosts' table"),
             Hud,
             Pickable::IGNORE,
             Node {
-                position_type: PositionType::Absolute,
-                top: px(6),
-                left: px(6),
-                flex_direction: FlexDirection::Column,
-                padding: UiRect::all(px(6)),
+                display: Display::Grid,
+                grid_template_columns: vec![RepeatedGridTrack::auto(GHOST_COLUMNS.len() as u16)],
+                column_gap: px(space::GAP),
+                padding: UiRect::all(px(space::GAP)),
                 ..default()
             },
-            BackgroundColor(BACKDROP_COLOUR),
+            BackgroundColor(colour::CARD),
+            ChildOf(card),
         ))
         .id();
-    for line in HudLine::COLUMN {
-        commands.spawn((text(line, FONT_SIZE), ChildOf(column)));
+    for row in 0..GHOST_ROWS {
+        for column in 0..GHOST_COLUMNS.len() {
+            let font = if column == 0 || row == 0 {
+                theme::text_font(size::CAPTION)
+            } else {
+                theme::figures_font(size::CAPTION)
+            };
+            commands.spawn((
+                GhostCell { row, column },
+                Text::default(),
+                font,
+                TextColor(if row == 0 { DIM_COLOUR } else { TEXT_COLOUR }),
+                Pickable::IGNORE,
+                Node {
+                    justify_self: if column == 0 {
+                        JustifySelf::Start
+                    } else {
+                        JustifySelf::End
+                    },
+                    ..default()
+                },
+                ChildOf(grid),
+            ));
+        }
     }
-    // Bottom left, above the help line: on a short screen (a phone turned) the HUD's column
-    // and this list together would reach down over the box's start.
-    commands.spawn((
-        Name::new("HUD ghosts"),
-        Hud,
-        text(HudLine::Ghosts, FONT_SIZE),
-        Node {
-            position_type: PositionType::Absolute,
-            bottom: px(40),
-            left: px(6),
-            ..default()
-        },
-        BackgroundColor(BACKDROP_COLOUR),
-    ));
-    commands.spawn((
-        Name::new("HUD help"),
-        Hud,
-        text(HudLine::Help, HELP_FONT_SIZE),
-        Node {
-            position_type: PositionType::Absolute,
-            bottom: px(6),
-            left: px(6),
-            right: px(6),
-            ..default()
-        },
-    ));
 }
 
 fn show_hud(
     sources: HudSources,
-    overlays: Res<Overlays>,
-    mut roots: Query<&mut Visibility, With<Hud>>,
-    mut lines: Query<(&HudLine, &mut Text, &mut TextColor, &mut Node)>,
+    mut lines: Query<(&HudLine, &mut Text, &mut TextColor), Without<GhostCell>>,
+    mut cells: Query<(&GhostCell, &mut Text, &mut TextColor, &mut Node), Without<HudLine>>,
 ) {
-    let visibility = if overlays.hud_hidden {
-        Visibility::Hidden
-    } else {
-        Visibility::Inherited
-    };
-    for mut shown in &mut roots {
-        shown.set_if_neq(visibility);
-    }
     let readings = sources.readings();
-    for (line, mut text, mut colour, mut node) in &mut lines {
+    for (line, mut text, mut colour) in &mut lines {
         // Only write what changed, so change detection (and text layout) stays quiet.
         let content = line.text(&readings);
-        // The ghosts' list has a box of its own: none while the ghosts are off.
-        if *line == HudLine::Ghosts {
-            let display = if content.is_empty() {
-                Display::None
-            } else {
-                Display::Flex
-            };
-            if node.display != display {
-                node.display = display;
-            }
-        }
         if text.0 != content {
             text.0 = content;
         }
         colour.set_if_neq(TextColor(line.colour(&readings)));
     }
-}
-
-/// Where the HUD's shown boxes lie on the window, for the view to fit the scene clear of them
-/// (none while H hides the HUD; a box with nothing to show, the ghosts' list while they are
-/// off, has no size).
-fn publish_area(
-    boxes: Query<(&ComputedNode, &UiGlobalTransform), With<Hud>>,
-    overlays: Res<Overlays>,
-    ui_scale: Res<UiScale>,
-    mut area: ResMut<HudArea>,
-) {
-    let rects: Vec<Rect> = boxes
-        .iter()
-        .filter(|_| !overlays.hud_hidden)
-        .map(|(node, transform)| window_rect(node, transform, &ui_scale))
-        .filter(|rect| !rect.is_empty())
-        .collect();
-    if area.0 != rects {
-        area.0 = rects;
+    let table = ghost_table(&readings);
+    for (cell, mut text, mut colour, mut node) in &mut cells {
+        let content = table
+            .get(cell.row)
+            .map_or("", |row| row[cell.column].as_str());
+        if text.0 != content {
+            text.0 = content.to_owned();
+        }
+        // A row with nothing in it takes no room.
+        let display = if cell.row < table.len() {
+            Display::Flex
+        } else {
+            Display::None
+        };
+        if node.display != display {
+            node.display = display;
+        }
+        let ghost = cell
+            .row
+            .checked_sub(1)
+            .and_then(|index| readings.ghosts.get(index));
+        let wanted = match ghost {
+            None => DIM_COLOUR,
+            Some(g) if g.diverged_at.is_some() && cell.column > 0 => WARNING_COLOUR,
+            Some(g) if cell.column == 0 => g.colour,
+            Some(_) if cell.column == 5 && content.starts_with('✗') => WARNING_COLOUR,
+            Some(_) => TEXT_COLOUR,
+        };
+        colour.set_if_neq(TextColor(wanted));
     }
 }

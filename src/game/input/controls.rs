@@ -45,6 +45,7 @@ pub const SAVE: KeyCode = KeyCode::KeyS;
 pub const OPEN: KeyCode = KeyCode::KeyO;
 pub const GHOSTS: KeyCode = KeyCode::KeyG;
 pub const PLOT: KeyCode = KeyCode::KeyP;
+pub const HOME_VIEW: KeyCode = KeyCode::KeyF;
 /// The named scenes, in the core's order ([`Scenario::NAMES`]).
 pub const SCENE_KEYS: [KeyCode; 10] = [
     KeyCode::Digit1,
@@ -98,6 +99,8 @@ pub enum Action {
     ToggleGhosts,
     TogglePlot,
     ToggleHud,
+    /// The camera back to the tutorial's 640 x 480 frame at once.
+    HomeView,
     Save,
     Open,
     /// The scene at this place in [`Scenario::NAMES`].
@@ -165,7 +168,7 @@ pub struct Control {
 }
 
 /// Every key the game reads, in the order the help line lists them.
-pub const CONTROLS: [Control; 15] = [
+pub const CONTROLS: [Control; 16] = [
     Control {
         keys: &[PAUSE],
         actions: &[Action::TogglePause],
@@ -234,7 +237,7 @@ pub const CONTROLS: [Control; 15] = [
         actions: &[Action::ToggleGhosts],
         label: "G",
         name: "ghosts",
-        effect: "ghosts: every integrator and a reference (Taylor order 24 at 1e-13 px) beside the box under the same band, each outlined in its colour; the HUD lists their distance from the reference, energy residual and cost per step",
+        effect: "ghosts: every integrator and a reference (Taylor order 24 at 1e-13 px) beside the box under the same band, each outlined in its colour; their card lists their distance from the reference, energy residual and cost per step",
     },
     Control {
         keys: &[PLOT],
@@ -248,21 +251,28 @@ pub const CONTROLS: [Control; 15] = [
         actions: &SCENE_ACTIONS,
         label: "1-0",
         name: "scene",
-        effect: "load the named scene at that place in the core's table (the order of `simulate --scene`'s list: 1 the first, 0 the tenth): its parameters and start, its scripted pull played until you press; the HUD names it and says what makes it hard",
+        effect: "load the named scene at that place in the core's table (the order of `simulate --scene`'s list: 1 the first, 0 the tenth): its parameters and start, its scripted pull played until you press; the readouts name it and say what makes it hard",
     },
     Control {
         keys: &[HUD],
         actions: &[Action::ToggleHud],
         label: "H",
-        name: "HUD",
-        effect: "hide / show the HUD and the energy graph",
+        name: "dock",
+        effect: "hide / show the dock of instruments (the scene takes the window)",
+    },
+    Control {
+        keys: &[HOME_VIEW],
+        actions: &[Action::HomeView],
+        label: "F",
+        name: "frame",
+        effect: "the camera back to the tutorial's 640 x 480 frame (the wheel or a pinch zooms, the right button or two fingers pan; the camera follows a box pulled out of view)",
     },
     Control {
         keys: &[SAVE],
         actions: &[Action::Save],
         label: "S",
         name: "save",
-        effect: "save the game so far as a replay (to `--record`'s file, else `replay-<time>.jsonl`; in the browser a download; the HUD shows the name)",
+        effect: "save the game so far as a replay (to `--record`'s file, else `replay-<time>.jsonl`; in the browser a download; the readouts show the name)",
     },
     Control {
         keys: &[OPEN],
@@ -289,6 +299,10 @@ pub fn key_hint() -> String {
     let labels: Vec<&str> = CONTROLS.iter().map(|control| control.label).collect();
     labels.join(" ")
 }
+
+/// The camera back to its home frame: triggered by the controls, observed by the view.
+#[derive(Event, Debug, Clone, Copy)]
+pub struct HomeView;
 
 /// Each key pressed this frame sends its action.
 fn keys_to_actions(keys: Res<ButtonInput<KeyCode>>, mut actions: MessageWriter<Action>) {
@@ -366,6 +380,8 @@ fn apply_actions(
                 c.overlays.ghosts |= c.overlays.plot;
             }
             Action::ToggleHud => c.overlays.hud_hidden = !c.overlays.hud_hidden,
+            // The view puts its camera back ([`HomeView`]).
+            Action::HomeView => commands.trigger(HomeView),
             // The recorder saves and says where ([`crate::game::replays::recording`]).
             Action::Save => commands.trigger(SaveReplay),
             Action::Open => open_replay(&mut c.status),

@@ -2,8 +2,9 @@
 //! own widgets (`bevy_ui_widgets`: buttons and sliders, reached through picking). Each button
 //! sends the same [`Action`] its key sends and each slider an [`Action::Set`], so the panel
 //! holds no state of its own beyond whether it is open: what it shows is read back from the
-//! resources every frame. It folds to one button, and tells the pointer where it lies so that
-//! a press on it never grabs the box.
+//! resources every frame. It is the dock's first card ([`Card::Controls`]); the cards' titles
+//! are buttons too, and fold their cards. It lies outside the scene's viewport, so a press on
+//! it never grabs the box.
 
 use bevy::prelude::*;
 use bevy::ui::UiGlobalTransform;
@@ -13,10 +14,12 @@ use bevy::ui_widgets::{
 };
 
 use crate::game::input::controls::{Action, Parameter};
-use crate::game::schedule::{AfterBevySystems, GameSystems, ScreenSystems};
-use crate::game::shared::{
-    ControlsArea, Overlays, SceneName, linear_damping_readout, readable, window_rect,
-};
+use crate::game::layout::{Card, CardButton, Cards, Shape, Slot};
+#[cfg(target_arch = "wasm32")]
+use crate::game::schedule::AfterBevySystems;
+use crate::game::schedule::{GameSystems, ScreenSystems};
+use crate::game::shared::{Overlays, SceneName, linear_damping_readout, readable, window_rect};
+use crate::game::theme::{self, colour, size, space};
 use crate::physics::{Integrator, Scenario, SceneParams};
 
 pub struct PanelPlugin;
@@ -30,10 +33,7 @@ impl Plugin for PanelPlugin {
         if !app.is_plugin_added::<SliderPlugin>() {
             app.add_plugins(SliderPlugin);
         }
-        // The slider reads it (the UI plugin has it; the headless game does not).
-        app.init_resource::<UiScale>()
-            .init_resource::<PanelOpen>()
-            .add_observer(press_button)
+        app.add_observer(press_button)
             .add_observer(move_slider)
             .add_systems(Startup, spawn_panel)
             .add_systems(RunFixedMainLoop, tap_buttons.in_set(GameSystems::Input))
@@ -42,10 +42,6 @@ impl Plugin for PanelPlugin {
                 (show_state, place_thumbs)
                     .chain()
                     .in_set(ScreenSystems::Panel),
-            )
-            .add_systems(
-                PostUpdate,
-                publish_area.in_set(AfterBevySystems::AfterLayout),
             );
         #[cfg(target_arch = "wasm32")]
         app.add_systems(
@@ -55,23 +51,11 @@ impl Plugin for PanelPlugin {
     }
 }
 
-/// Whether the panel is unfolded.
-#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
-pub struct PanelOpen(pub bool);
-
-/// The panel's root.
-#[derive(Component, Debug)]
-pub struct Panel;
-
-/// The part of the panel that folds away.
-#[derive(Component, Debug)]
-struct PanelBody;
-
 /// What a panel button does.
 #[derive(Component, Debug, Clone, Copy, PartialEq)]
 pub enum PanelButton {
-    /// Fold or unfold the panel.
-    Fold,
+    /// Fold or unfold a card of the dock (its title).
+    Fold(Card),
     Send(Action),
 }
 
@@ -91,17 +75,13 @@ enum Readout {
     TimeScale,
 }
 
-const TEXT: Color = Color::srgb(0.9, 0.9, 0.9);
-const BUTTON: Color = Color::srgba(0.16, 0.17, 0.2, 0.9);
-const LIT: Color = Color::srgb(0.2, 0.42, 0.7);
-const BORDER: Color = Color::srgb(0.35, 0.36, 0.42);
-/// Near opaque: a long HUD line under the panel must not read through it.
-const BODY: Color = Color::srgba(0.0, 0.0, 0.0, 0.92);
-const TRACK: Color = Color::srgb(0.25, 0.26, 0.3);
-const THUMB: Color = Color::srgb(0.85, 0.85, 0.9);
-const FONT_SIZE: f32 = 13.0;
-const END_FONT_SIZE: f32 = 10.0;
-const DIM: Color = Color::srgb(0.6, 0.6, 0.65);
+const TEXT: Color = colour::TEXT;
+const BUTTON: Color = colour::CARD_TITLE;
+const LIT: Color = colour::LIT;
+const BORDER: Color = colour::BORDER;
+const TRACK: Color = colour::TRACK;
+const THUMB: Color = colour::THUMB;
+const DIM: Color = colour::DIM;
 /// Big enough for a fingertip.
 const BUTTON_HEIGHT: f32 = 30.0;
 const SLIDER_WIDTH: f32 = 150.0;
@@ -159,11 +139,11 @@ fn text(value: impl Into<String>) -> impl Bundle {
     coloured_text(value, TEXT)
 }
 
-fn coloured_text(value: impl Into<String>, colour: Color) -> impl Bundle {
+fn coloured_text(value: impl Into<String>, shade: Color) -> impl Bundle {
     (
         Text::new(value),
-        TextFont::from_font_size(FONT_SIZE),
-        TextColor(colour),
+        theme::text_font(size::BODY),
+        TextColor(shade),
     )
 }
 
@@ -198,7 +178,6 @@ fn spawn_row(commands: &mut Commands, parent: Entity, title: &str) -> Entity {
                 flex_direction: FlexDirection::Row,
                 flex_wrap: FlexWrap::Wrap,
                 align_items: AlignItems::Center,
-                max_width: px(340),
                 ..default()
             },
             ChildOf(parent),
@@ -217,40 +196,33 @@ fn spawn_row(commands: &mut Commands, parent: Entity, title: &str) -> Entity {
     row
 }
 
-fn spawn_panel(mut commands: Commands) {
-    let panel = commands
-        .spawn((
-            Name::new("Panel"),
-            Panel,
-            // Bottom right, above the help line: the energy graph has the top right. The body
-            // unfolds upward from the button, over the HUD's lines where a small window
-            // makes them meet.
-            GlobalZIndex(1),
-            Node {
-                position_type: PositionType::Absolute,
-                bottom: px(40),
-                right: px(6),
-                flex_direction: FlexDirection::ColumnReverse,
-                align_items: AlignItems::End,
-                max_height: vh(85),
-                ..default()
-            },
-        ))
-        .id();
-    spawn_button(&mut commands, panel, "controls", PanelButton::Fold);
+fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
+    // The dock's own switch stands on the status line, where a finger finds it with the dock
+    // hidden.
+    if let Some((status, _)) = slots.iter().find(|(_, slot)| **slot == Slot::StatusTools) {
+        spawn_button(
+            &mut commands,
+            status,
+            "instruments",
+            PanelButton::Send(Action::ToggleHud),
+        );
+    }
+    let Some((card, _)) = slots
+        .iter()
+        .find(|(_, slot)| **slot == Slot::Card(Card::Controls))
+    else {
+        return;
+    };
     let body = commands
         .spawn((
-            Name::new("Panel body"),
-            PanelBody,
+            Name::new("Panel"),
             Node {
-                display: Display::None,
                 flex_direction: FlexDirection::Column,
-                padding: UiRect::all(px(6)),
-                overflow: Overflow::scroll_y(),
+                padding: UiRect::all(px(space::PAD)),
                 ..default()
             },
-            BackgroundColor(BODY),
-            ChildOf(panel),
+            BackgroundColor(colour::CARD),
+            ChildOf(card),
         ))
         .id();
 
@@ -261,6 +233,7 @@ fn spawn_panel(mut commands: Commands) {
         ("reset", Action::Reset),
         ("save", Action::Save),
         ("open", Action::Open),
+        ("frame", Action::HomeView),
     ] {
         spawn_button(&mut commands, row, label, PanelButton::Send(action));
     }
@@ -320,7 +293,6 @@ fn spawn_panel(mut commands: Commands) {
         ("plot", Action::TogglePlot),
         ("vectors", Action::ToggleVectors),
         ("trail", Action::ToggleTrail),
-        ("HUD", Action::ToggleHud),
     ] {
         spawn_button(&mut commands, row, label, PanelButton::Send(action));
     }
@@ -380,36 +352,53 @@ fn spawn_slider(commands: &mut Commands, row: Entity, parameter: Parameter) {
         commands.spawn((
             SliderEnd(parameter),
             Text::new(parameter.end_label(position)),
-            TextFont::from_font_size(END_FONT_SIZE),
+            theme::figures_font(size::CAPTION),
             TextColor(DIM),
             ChildOf(ends),
         ));
     }
 }
 
-fn press(does: PanelButton, open: &mut PanelOpen, actions: &mut MessageWriter<Action>) {
+fn press(does: PanelButton, cards: &mut Cards, shape: Shape, actions: &mut MessageWriter<Action>) {
     match does {
-        PanelButton::Fold => open.0 = !open.0,
+        PanelButton::Fold(card) => cards.toggle(card, shape),
         PanelButton::Send(action) => {
             actions.write(action);
         }
     }
 }
 
+/// The window's shape, for a card's title to fold as the dock is laid out.
+fn shape(windows: &Query<&Window, With<bevy::window::PrimaryWindow>>) -> Shape {
+    windows
+        .iter()
+        .next()
+        .map_or(Shape::Wide, |window| Shape::of(window.size()))
+}
+
+/// What a button does: a panel button's own, or a card title's fold.
+fn does(panel: Option<&PanelButton>, card: Option<&CardButton>) -> Option<PanelButton> {
+    panel
+        .copied()
+        .or(card.map(|&CardButton(card)| PanelButton::Fold(card)))
+}
+
 /// A button pressed (a click, or Enter while focused) sends its action. While a finger is on
 /// the screen, touches are [`tap_buttons`]'s.
 fn press_button(
     activate: On<Activate>,
-    buttons: Query<&PanelButton>,
+    buttons: Query<(Option<&PanelButton>, Option<&CardButton>)>,
     touches: Res<Touches>,
-    mut open: ResMut<PanelOpen>,
+    windows: Query<&Window, With<bevy::window::PrimaryWindow>>,
+    mut cards: ResMut<Cards>,
     mut actions: MessageWriter<Action>,
 ) {
     let fingers = touches.iter().next().is_some() || touches.any_just_released();
-    if let Ok(&does) = buttons.get(activate.entity)
+    if let Ok((panel, card)) = buttons.get(activate.entity)
+        && let Some(what) = does(panel, card)
         && !fingers
     {
-        press(does, &mut open, &mut actions);
+        press(what, &mut cards, shape(&windows), &mut actions);
     }
 }
 
@@ -419,17 +408,28 @@ fn press_button(
 fn tap_buttons(
     touches: Res<Touches>,
     ui_scale: Res<UiScale>,
-    buttons: Query<(&PanelButton, &ComputedNode, &UiGlobalTransform)>,
-    mut open: ResMut<PanelOpen>,
+    buttons: Query<(
+        Option<&PanelButton>,
+        Option<&CardButton>,
+        &ComputedNode,
+        &UiGlobalTransform,
+    )>,
+    windows: Query<&Window, With<bevy::window::PrimaryWindow>>,
+    mut cards: ResMut<Cards>,
     mut actions: MessageWriter<Action>,
 ) {
     for touch in touches.iter_just_pressed() {
-        let tapped = buttons.iter().find(|(_, node, transform)| {
+        // A button not displayed has no size.
+        let tapped = buttons.iter().find(|(panel, card, node, transform)| {
             let rect = window_rect(node, transform, &ui_scale);
-            !rect.is_empty() && rect.contains(touch.position())
+            (panel.is_some() || card.is_some())
+                && !rect.is_empty()
+                && rect.contains(touch.position())
         });
-        if let Some((&does, _, _)) = tapped {
-            press(does, &mut open, &mut actions);
+        if let Some((panel, card, ..)) = tapped
+            && let Some(what) = does(panel, card)
+        {
+            press(what, &mut cards, shape(&windows), &mut actions);
         }
     }
 }
@@ -450,7 +450,6 @@ fn move_slider(
 #[allow(clippy::too_many_arguments)]
 fn show_state(
     mut commands: Commands,
-    open: Res<PanelOpen>,
     (params, integrator, scene, overlays): (
         Res<SceneParams>,
         Res<Integrator>,
@@ -458,22 +457,15 @@ fn show_state(
         Res<Overlays>,
     ),
     (virtual_time, fixed_time): (Res<Time<Virtual>>, Res<Time<Fixed>>),
-    mut bodies: Query<&mut Node, With<PanelBody>>,
     mut buttons: Query<(&PanelButton, &mut BackgroundColor, &Children)>,
     mut texts: Query<&mut Text>,
     mut readouts: Query<(&Readout, Entity)>,
     sliders: Query<(Entity, &PanelSlider, &SliderValue)>,
 ) {
-    for mut node in &mut bodies {
-        let display = if open.0 { Display::Flex } else { Display::None };
-        if node.display != display {
-            node.display = display;
-        }
-    }
     let paused = virtual_time.is_paused();
     for (button, mut background, children) in &mut buttons {
         let (lit, label) = match *button {
-            PanelButton::Fold => (open.0, None),
+            PanelButton::Fold(_) => (false, None),
             PanelButton::Send(Action::TogglePause) => {
                 (paused, Some(if paused { "resume" } else { "pause" }))
             }
@@ -535,27 +527,13 @@ fn place_thumbs(
     }
 }
 
-/// The panel's rectangle on screen, in logical pixels, for the pointer to leave alone.
-fn publish_area(
-    panels: Query<(&ComputedNode, &UiGlobalTransform), With<Panel>>,
-    ui_scale: Res<UiScale>,
-    mut area: ResMut<ControlsArea>,
-) {
-    let rects: Vec<Rect> = panels
-        .iter()
-        .map(|(node, transform)| window_rect(node, transform, &ui_scale))
-        .filter(|rect| !rect.is_empty())
-        .collect();
-    // Nothing laid out (no UI renderer: the headless game) leaves the area as it is.
-    if !rects.is_empty() && area.0 != rects {
-        area.0 = rects;
-    }
-}
-
 /// In the browser: where each button lies, for the page (and the browser test) to read.
 #[cfg(target_arch = "wasm32")]
 fn publish_buttons(
-    buttons: Query<(&ComputedNode, &UiGlobalTransform, &Children), With<PanelButton>>,
+    buttons: Query<
+        (&ComputedNode, &UiGlobalTransform, &Children),
+        Or<(With<PanelButton>, With<CardButton>)>,
+    >,
     ui_scale: Res<UiScale>,
     texts: Query<&Text>,
     mut published: Local<String>,
@@ -566,6 +544,10 @@ fn publish_buttons(
             continue;
         };
         let rect = window_rect(node, transform, &ui_scale);
+        // A card's title stands twice (as a tab and over its card): the one shown.
+        if rect.is_empty() {
+            continue;
+        }
         places.entry(label.0.clone()).or_insert([
             rect.min.x,
             rect.min.y,

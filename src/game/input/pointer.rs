@@ -20,8 +20,8 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy::window::{PrimaryWindow, WindowFocused};
 
+use crate::game::layout::SceneViewport;
 use crate::game::schedule::GameSystems;
-use crate::game::shared::ControlsArea;
 use crate::game::simulation::{Band, ResetScene, RigidBox, Tap, body_state};
 use crate::physics::{AngularState, BandEnds, LinearState, MassProperties};
 
@@ -63,16 +63,21 @@ pub enum PointerSource {
     Touch(u64),
 }
 
-/// Mouse, touch and focus input to [`PointerAction`]s.
+/// The camera the scene is rendered with, into its viewport: the pointer maps through it.
+#[derive(Component, Debug, Default)]
+pub struct SceneCamera;
+
+/// Mouse, touch and focus input to [`PointerAction`]s. A press grabs only on the scene's
+/// viewport (the dock and its controls lie outside it); a held band follows anywhere.
 pub fn read_pointer(
-    (buttons, touches, controls): (
+    (buttons, touches, viewport): (
         Res<ButtonInput<MouseButton>>,
         Res<Touches>,
-        Res<ControlsArea>,
+        Res<SceneViewport>,
     ),
     mut focus: MessageReader<WindowFocused>,
     window: Option<Single<&Window, With<PrimaryWindow>>>,
-    camera: Option<Single<(&Camera, &GlobalTransform), With<Camera2d>>>,
+    camera: Option<Single<(&Camera, &GlobalTransform), With<SceneCamera>>>,
     mut grip: ResMut<Grip>,
     mut actions: MessageWriter<PointerAction>,
 ) {
@@ -81,6 +86,8 @@ pub fn read_pointer(
         let world = camera.viewport_to_world_2d(transform, screen).ok()?;
         world.is_finite().then(|| world.as_dvec2())
     };
+    // Before any layout (and in the headless game) the scene has the whole window.
+    let on_scene = |screen: Vec2| viewport.0.is_none_or(|viewport| viewport.contains(screen));
     if focus.read().any(|event| !event.focused) && grip.0.is_some() {
         grip.0 = None;
         actions.write(PointerAction::Release);
@@ -92,8 +99,8 @@ pub fn read_pointer(
         .as_deref()
         .and_then(|window| window.cursor_position());
     let cursor = on_screen.and_then(to_world);
-    // A press on the on-screen controls is theirs.
-    let on_controls = on_screen.is_some_and(|point| controls.contains(point));
+    // A press off the scene (on the dock's controls) is not the band's.
+    let off_scene = !on_screen.is_some_and(on_scene);
     let (pressed, released, held) = (
         buttons.just_pressed(MouseButton::Left),
         buttons.just_released(MouseButton::Left),
@@ -103,7 +110,7 @@ pub fn read_pointer(
         release(&mut grip, &mut actions, PointerSource::Mouse);
     }
     if pressed
-        && !on_controls
+        && !off_scene
         && let Some(at) = cursor
     {
         grip.0 = Some(PointerSource::Mouse);
@@ -122,7 +129,7 @@ pub fn read_pointer(
     // One finger: the first to touch holds the band until it lifts.
     for touch in touches.iter_just_pressed() {
         if grip.0.is_none()
-            && !controls.contains(touch.position())
+            && on_scene(touch.position())
             && let Some(at) = to_world(touch.position())
         {
             grip.0 = Some(PointerSource::Touch(touch.id()));

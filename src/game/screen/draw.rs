@@ -11,18 +11,18 @@ use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
 use crate::game::ghosts::{Ghost, GhostKind, Ghosts};
+use crate::game::layout::SceneViewport;
 use crate::game::schedule::ScreenSystems;
-use crate::game::screen::graph::graph_frame;
-use crate::game::screen::plot::plot_footprint;
-use crate::game::screen::view::{interpolated_state, view_area, world_per_pixel};
+use crate::game::screen::view::{CameraFrame, interpolated_state, shown_area, world_per_pixel};
 use crate::game::shared::Overlays;
 use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox};
+use crate::game::theme::colour;
 use crate::physics::{Integrator, MassProperties, SCENE_SIZE, SceneParams};
 
 pub const BOX_FILL: Color = Color::srgb(0.16, 0.42, 0.72);
 pub const BOX_OUTLINE: Color = Color::WHITE;
 pub const PIN_FILL: Color = Color::srgb(1.0, 0.85, 0.2);
-const SCENE_BORDER: Color = Color::srgb(0.25, 0.25, 0.3);
+const SCENE_BORDER: Color = colour::FRAME;
 const PIN_RADIUS: f32 = 5.0;
 /// The tutorial's band colour is [255, 0, min(length / 2, 255)]: fully magenta at this length.
 const BAND_MAGENTA_LENGTH: f64 = 510.0;
@@ -225,18 +225,16 @@ pub struct GhostLabel(pub GhostKind);
 const GHOST_LABEL_SIZE: f32 = 11.0;
 const GHOST_LABEL_PIXELS: f32 = 11.0;
 
-/// Where a column of `lines` names, each `line` high and at most `width` wide, goes beside an outline at `centre` that
-/// reaches `reach` from it: above, below, right or left of it, the first that lies inside the
-/// tutorial's screen and clear of every rectangle of `avoid` (the energy graph, the plot);
-/// above when none does. Returned as the offset from `centre` of the column's first line and
+/// Where a column of `lines` names, each `line` high and at most `width` wide, goes beside an
+/// outline at `centre` that reaches `reach` from it: above, below, right or left of it, the
+/// first that lies inside `shown` (the part of the world in view); above when none does. Returned as the offset from `centre` of the column's first line and
 /// the step to the next (names that coincide, most ghosts on a soft band, keep apart).
 pub fn label_column(
     centre: Vec2,
     reach: f32,
     lines: usize,
-    line: f32,
-    width: f32,
-    avoid: &[Rect],
+    (line, width): (f32, f32),
+    shown: Rect,
 ) -> (Vec2, Vec2) {
     let height = lines as f32 * line;
     let half_line = line / 2.0;
@@ -254,7 +252,6 @@ pub fn label_column(
             -up,
         ),
     ];
-    let scene = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2());
     let column = |(first, step): (Vec2, Vec2)| {
         let last = first + step * (lines.max(1) - 1) as f32;
         Rect::from_corners(centre + first, centre + last)
@@ -268,7 +265,7 @@ pub fn label_column(
         .into_iter()
         .find(|&side| {
             let rect = column(side);
-            scene.union(rect) == scene && avoid.iter().all(|a| a.intersect(rect).is_empty())
+            shown.union(rect) == shown
         })
         .unwrap_or(sides[0])
 }
@@ -283,9 +280,9 @@ fn draw_ghosts(
     fixed_time: Res<Time<Fixed>>,
     ghosts: Res<Ghosts>,
     integrator: Res<Integrator>,
-    overlays: Res<Overlays>,
+    frame: Res<CameraFrame>,
+    viewport: Res<SceneViewport>,
     windows: Query<&Window, With<bevy::window::PrimaryWindow>>,
-    cameras: Query<(&Projection, &GlobalTransform), With<Camera2d>>,
     mut labels: Query<(
         Entity,
         &GhostLabel,
@@ -305,22 +302,14 @@ fn draw_ghosts(
             None => ghost.kind.name().to_owned(),
         })
         .collect();
-    let view = cameras
-        .iter()
-        .find_map(|(projection, transform)| view_area(projection, transform));
-    let font_size =
-        GHOST_LABEL_SIZE.max(GHOST_LABEL_PIXELS * world_per_pixel(windows.iter().next(), view));
+    // However far the camera widens, the names keep their size on screen.
+    let font_size = GHOST_LABEL_SIZE.max(GHOST_LABEL_PIXELS * world_per_pixel(&frame));
     let line = font_size * 1.2;
-    // The names keep off the energy graph (with the HUD) and the plot (when on).
-    let mut avoid = Vec::new();
-    if !overlays.hud_hidden
-        && let Some(view) = view
-    {
-        avoid.push(graph_frame(view));
-    }
-    if overlays.plot {
-        avoid.push(plot_footprint());
-    }
+    let shown = windows
+        .iter()
+        .next()
+        .and_then(|window| shown_area(&frame, &viewport, window))
+        .unwrap_or(Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2()));
     let widest = names.iter().map(String::len).max().unwrap_or(0) as f32 * font_size * 0.6;
     // One column for every name, beside the reference, which follows the live box: a column
     // beside each ghost's own outline would start a few px from the next one's, and the names
@@ -345,7 +334,7 @@ fn draw_ghosts(
             let beside = interpolated(reference).linear.position.as_vec2();
             let reach = reference.stepper.mass.size().as_vec2().length() / 2.0 + 4.0;
             let lines = ghosts.ghosts.len().saturating_sub(1);
-            let (first, step) = label_column(beside, reach, lines, line, widest, &avoid);
+            let (first, step) = label_column(beside, reach, lines, (line, widest), shown);
             (beside + first, step)
         });
     let mut unlabelled: Vec<GhostKind> = ghosts.ghosts.iter().map(|g| g.kind).collect();

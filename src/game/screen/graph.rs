@@ -1,88 +1,145 @@
 //! The energy graph: kinetic, band and total energy over the last seconds of simulated time,
-//! drawn with gizmos in the view's top-right corner. Part of the HUD (its text lines are the
-//! legend, H hides both), added with the screen because gizmos need rendering.
+//! in the energy card under its readouts (whose colours are its legend), scaled so that the
+//! largest total in view reaches the top. Drawn by the chart camera in its canvas.
 
 use bevy::prelude::*;
+use bevy::ui::UiGlobalTransform;
+use bevy::window::PrimaryWindow;
 
 use crate::game::hud::history::EnergyHistory;
-use crate::game::hud::{BAND_ENERGY_COLOUR, KINETIC_COLOUR, TOTAL_COLOUR};
+use crate::game::layout::{Card, Slot};
 use crate::game::schedule::ScreenSystems;
-use crate::game::screen::view::view_area;
-use crate::game::shared::Overlays;
-use crate::physics::{Energies, SCENE_SIZE};
+use crate::game::screen::chart::{Canvas, ChartGizmos};
+use crate::game::shared::readable;
+use crate::game::theme::{self, colour, size, space};
+use crate::physics::Energies;
 
 pub struct EnergyGraphPlugin;
 
 impl Plugin for EnergyGraphPlugin {
     fn build(&self, app: &mut App) {
-        app.add_systems(
-            Update,
-            draw_energy_graph
-                .run_if(hud_shown)
-                .in_set(ScreenSystems::Draw),
-        );
+        app.add_systems(Startup, spawn_canvas)
+            .add_systems(Update, draw_energy_graph.in_set(ScreenSystems::Draw));
     }
 }
 
-/// The graph's frame: the scene border's grey.
-const FRAME_COLOUR: Color = Color::srgb(0.25, 0.25, 0.3);
+/// The graph's canvas.
+#[derive(Component, Debug)]
+pub struct EnergyCanvas;
 
-fn hud_shown(overlays: Res<Overlays>) -> bool {
-    !overlays.hud_hidden
+/// The caption under it: the span and the peak.
+#[derive(Component, Debug)]
+struct EnergyCaption;
+
+/// The canvas's height in the UI's units.
+const GRAPH_HEIGHT: f32 = 90.0;
+
+fn spawn_canvas(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
+    let Some((card, _)) = slots
+        .iter()
+        .find(|(_, slot)| **slot == Slot::Card(Card::Energy))
+    else {
+        return;
+    };
+    commands.spawn((
+        Name::new("Energy graph"),
+        EnergyCanvas,
+        Node {
+            height: px(GRAPH_HEIGHT),
+            margin: UiRect::axes(px(space::PAD), px(space::GAP)),
+            flex_shrink: 0.0,
+            ..default()
+        },
+        ChildOf(card),
+    ));
+    commands.spawn((
+        Name::new("Energy caption"),
+        EnergyCaption,
+        Text::default(),
+        theme::text_font(size::CAPTION),
+        TextColor(colour::DIM),
+        Node {
+            padding: UiRect::new(px(space::PAD + 2.0), px(space::PAD), px(0), px(space::PAD)),
+            ..default()
+        },
+        BackgroundColor(colour::CARD),
+        ChildOf(card),
+    ));
 }
 
-/// The graph's size in world units, and its distance from the top-right corner.
-const GRAPH_SIZE: Vec2 = Vec2::new(200.0, 80.0);
-const GRAPH_MARGIN: f32 = 8.0;
-
-/// The graph's frame in the world: the top-right corner of the tutorial's screen or of the
-/// view, whichever is lower.
-pub fn graph_frame(view: Rect) -> Rect {
-    let top_right = view.max.min(SCENE_SIZE.as_vec2() / 2.0) - Vec2::splat(GRAPH_MARGIN);
-    Rect::from_corners(top_right - GRAPH_SIZE, top_right)
+/// The graph's place in its canvas, in the UI's units: the whole canvas but a pixel.
+pub fn graph_frame(canvas: Vec2) -> Rect {
+    Rect::from_corners(Vec2::ONE, canvas - Vec2::ONE)
 }
 
-/// Kinetic, band and total energy over the last seconds, in the top-right corner of the
-/// tutorial's screen or of the view, whichever is lower (on a tall phone the view reaches far
-/// above the scene, where the HUD is), scaled so that the largest total in view reaches the top.
 fn draw_energy_graph(
-    mut gizmos: Gizmos,
+    mut gizmos: Gizmos<ChartGizmos>,
     history: Res<EnergyHistory>,
-    camera: Single<(&Projection, &GlobalTransform), With<Camera2d>>,
+    ui_scale: Res<UiScale>,
+    window: Option<Single<&Window, With<PrimaryWindow>>>,
+    canvases: Query<(&ComputedNode, &UiGlobalTransform), With<EnergyCanvas>>,
+    mut captions: Query<&mut Text, With<EnergyCaption>>,
 ) {
-    let Some(view) = view_area(camera.0, camera.1) else {
-        return;
-    };
-    let frame = graph_frame(view);
-    gizmos.rect_2d(
-        Isometry2d::from_translation(frame.center()),
-        GRAPH_SIZE,
-        FRAME_COLOUR,
-    );
-    let Some(&(now, _)) = history.samples.back() else {
-        return;
-    };
     let highest = history
         .samples
         .iter()
         .map(|(_, e)| e.total())
         .fold(0.0, f64::max);
-    let point = |t: f64, energy: f64| {
-        let x = 1.0 - ((now - t) / EnergyHistory::SPAN) as f32;
-        let y = if highest > 0.0 {
-            (energy / highest) as f32
-        } else {
-            0.0
-        };
-        frame.min + Vec2::new(x, y) * GRAPH_SIZE
+    let said = format!(
+        "the last {} s of simulated time; the top is {}",
+        EnergyHistory::SPAN,
+        readable(highest)
+    );
+    for mut caption in &mut captions {
+        if caption.0 != said {
+            caption.0.clone_from(&said);
+        }
+    }
+    let Some(window) = window else {
+        return;
     };
-    let mut line = |energy: fn(&Energies) -> f64, colour: Color| {
+    let size = window.size();
+    for (node, transform) in &canvases {
+        let canvas = Canvas::of(node, transform, &ui_scale);
+        // A folded card's canvas has no size.
+        if canvas.rect.is_empty() {
+            continue;
+        }
+        let frame = graph_frame(canvas.size());
+        let corner = |x: f32, y: f32| canvas.to_chart(Vec2::new(x, y), size);
         gizmos.linestrip_2d(
-            history.samples.iter().map(|(t, e)| point(*t, energy(e))),
-            colour,
+            [
+                corner(frame.min.x, frame.min.y),
+                corner(frame.max.x, frame.min.y),
+                corner(frame.max.x, frame.max.y),
+                corner(frame.min.x, frame.max.y),
+                corner(frame.min.x, frame.min.y),
+            ],
+            colour::FRAME,
         );
-    };
-    line(|e| e.kinetic(), KINETIC_COLOUR);
-    line(|e| e.band, BAND_ENERGY_COLOUR);
-    line(|e| e.total(), TOTAL_COLOUR);
+        let Some(&(now, _)) = history.samples.back() else {
+            continue;
+        };
+        let point = |t: f64, energy: f64| {
+            let x = 1.0 - ((now - t) / EnergyHistory::SPAN) as f32;
+            let y = if highest > 0.0 {
+                (energy / highest) as f32
+            } else {
+                0.0
+            };
+            corner(
+                frame.min.x + x * frame.width(),
+                frame.max.y - y * frame.height(),
+            )
+        };
+        let mut line = |energy: fn(&Energies) -> f64, shade: Color| {
+            gizmos.linestrip_2d(
+                history.samples.iter().map(|(t, e)| point(*t, energy(e))),
+                shade,
+            );
+        };
+        line(|e| e.kinetic(), colour::KINETIC);
+        line(|e| e.band, colour::BAND_ENERGY);
+        line(|e| e.total(), colour::TOTAL);
+    }
 }

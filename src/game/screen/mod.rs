@@ -1,9 +1,27 @@
-//! The screen: the camera and the interpolation between fixed steps ([`view`]), the box, the
-//! band and the overlays drawn ([`draw`]), the HUD's energy graph ([`graph`]), and the ghosts'
-//! speed against error ([`plot`]). Needs
-//! rendering; reads the game's state, never the other way round.
+//! The screen: the cameras and the interpolation between fixed steps ([`view`]), the box, the
+//! band and the overlays drawn ([`draw`]), and the dock's charts ([`chart`]): the energy
+//! graph ([`graph`]) and the ghosts' speed against error ([`plot`]). Needs rendering; reads
+//! the game's state, never the other way round.
 
+pub mod chart;
 pub mod draw;
 pub mod graph;
 pub mod plot;
 pub mod view;
+
+use bevy::prelude::*;
+
+/// Every plugin of the screen, wired once (the game adds it; so do the tests that draw).
+pub struct ScreenPlugin;
+
+impl Plugin for ScreenPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_plugins((
+            view::ViewPlugin,
+            chart::ChartPlugin,
+            draw::DrawPlugin,
+            graph::EnergyGraphPlugin,
+            plot::WorkPrecisionPlotPlugin,
+        ));
+    }
+}

@@ -1,24 +1,32 @@
 //! Speed against error, live (P): every ghost a point on the report's work-precision axes,
 //! its distance from the reference (px) across, its cost per simulated second (ns) up, both
-//! logarithmic, in the ghost's colour with its name, moving as the hand pulls. A diverged
-//! ghost is a cross at the right edge, at the cost it had; a reference that had to fall back
-//! (its budget) says so above the plot. Drawn with gizmos at the left of the tutorial's
-//! screen; the points are [`plot_points`], which a test holds to the ghosts' own figures.
+//! logarithmic with a tick at every decade, in the ghost's colour with its name, moving as
+//! the hand pulls. A diverged ghost is a cross at the right edge, at the cost it had, and
+//! says so. The chart fills the plot card's canvas (the chart camera draws it); its ticks'
+//! values, its captions and the names are UI text in the canvas, the names put by
+//! [`place_labels`] where no other text, no point and no name lies, tied to their point by a
+//! leader line when moved away from it. The points are [`plot_points`], which a test holds
+//! to the ghosts' own figures.
 
+use bevy::picking::Pickable;
 use bevy::prelude::*;
+use bevy::ui::UiGlobalTransform;
 use bevy::window::PrimaryWindow;
 
 use crate::game::ghosts::{GhostKind, Ghosts};
+use crate::game::layout::{Card, Slot};
 use crate::game::schedule::ScreenSystems;
-use crate::game::screen::view::{view_area, world_per_pixel};
+use crate::game::screen::chart::{Canvas, ChartGizmos, text_box};
 use crate::game::shared::Overlays;
-use crate::physics::{Integrator, SCENE_SIZE, SceneParams};
+use crate::game::theme::{self, colour, size, space};
+use crate::physics::{Integrator, SceneParams};
 
 pub struct WorkPrecisionPlotPlugin;
 
 impl Plugin for WorkPrecisionPlotPlugin {
     fn build(&self, app: &mut App) {
-        app.add_systems(Update, draw_plot.in_set(ScreenSystems::Plot));
+        app.add_systems(Startup, spawn_canvas)
+            .add_systems(Update, draw_plot.in_set(ScreenSystems::Plot));
     }
 }
 
@@ -32,6 +40,22 @@ pub struct PlotPoint {
     pub cost: f64,
     /// The ghost of the live box's own integrator: the live box itself.
     pub live: bool,
+}
+
+impl PlotPoint {
+    /// Its name on the plot.
+    pub fn label(&self) -> String {
+        let mut name = match (self.error, self.live) {
+            (None, _) => format!("{} diverged", self.kind.name()),
+            (Some(_), true) => format!("{} (live)", self.kind.name()),
+            (Some(_), false) => self.kind.name().to_owned(),
+        };
+        if self.cost == 0.0 {
+            // A browser's clock can be coarser than a step.
+            name += " (untimed)";
+        }
+        name
+    }
 }
 
 /// Every ghost but the reference, as the plot shows it.
@@ -54,266 +78,407 @@ pub fn plot_points(ghosts: &Ghosts, step_rate_hz: f64, live: Integrator) -> Vec<
 }
 
 /// The axes' decades: the report's work-precision figure spans these.
-pub const ERROR_DECADES: (f64, f64) = (-16.0, 3.0);
-pub const COST_DECADES: (f64, f64) = (2.0, 8.0);
+pub const ERROR_DECADES: (i32, i32) = (-16, 3);
+pub const COST_DECADES: (i32, i32) = (2, 8);
 
-/// The plot's size in world units, and its distance from the tutorial screen's corner.
-pub const PLOT_SIZE: Vec2 = Vec2::new(220.0, 130.0);
-const PLOT_MARGIN: f32 = 8.0;
-/// The plot's lower edge (world units, the scene's centre at 0).
-const PLOT_BOTTOM: f32 = -105.0;
-const FRAME_COLOUR: Color = Color::srgb(0.25, 0.25, 0.3);
-const LABEL_SIZE: f32 = 10.0;
+/// The canvas's height in the UI's units (its width is the card's).
+pub const PLOT_HEIGHT: f32 = 230.0;
+/// The room around the plotting frame for the ticks' values and the captions.
+const LEFT: f32 = 34.0;
+const RIGHT: f32 = 8.0;
+const TOP: f32 = 26.0;
+const BOTTOM: f32 = 38.0;
 
-/// Where the plot lies: at the left of the tutorial's screen, between the HUD's column above
-/// and the ghosts' list below, away from the top right where the tutorial's pull takes the box
-/// and from the bottom right where the panel's button sits.
-pub fn plot_frame() -> Rect {
-    let left = -SCENE_SIZE.as_vec2().x / 2.0 + PLOT_MARGIN;
-    let min = Vec2::new(left, PLOT_BOTTOM);
-    Rect::from_corners(min, min + PLOT_SIZE)
-}
-
-/// What the plot takes of the world with its captions above and below and the names to the
-/// right of its points: where the ghosts' names must not go.
-pub fn plot_footprint() -> Rect {
-    let frame = plot_frame();
+/// The plotting frame in a canvas of `canvas` size, in the UI's units from its top left (y
+/// down).
+pub fn plot_frame(canvas: Vec2) -> Rect {
     Rect::from_corners(
-        frame.min - Vec2::new(0.0, 2.0 * LABEL_SIZE),
-        frame.max + Vec2::new(9.0 * LABEL_SIZE, 3.0 * LABEL_SIZE),
+        Vec2::new(LEFT, TOP),
+        Vec2::new(canvas.x - RIGHT, canvas.y - BOTTOM).max(Vec2::new(LEFT + 1.0, TOP + 1.0)),
     )
 }
 
-/// A point's place in `frame`: each axis's decade clamped into the frame; a diverged ghost at
-/// the right edge.
-pub fn place(point: &PlotPoint, frame: Rect) -> Vec2 {
-    let across = |decades: (f64, f64), value: f64| {
-        ((value.max(1e-300).log10() - decades.0) / (decades.1 - decades.0)).clamp(0.0, 1.0) as f32
-    };
-    let x = point
-        .error
-        .map_or(1.0, |error| across(ERROR_DECADES, error));
-    let y = across(COST_DECADES, point.cost);
-    frame.min + Vec2::new(x, y) * frame.size()
+/// Where a decade lies along an axis of `length` spanning `decades`.
+fn along(decades: (i32, i32), value: f64, length: f32) -> f32 {
+    let share =
+        (value.max(1e-300).log10() - f64::from(decades.0)) / f64::from(decades.1 - decades.0);
+    share.clamp(0.0, 1.0) as f32 * length
 }
 
-/// Where each point's name goes: to the right of it, moved up a line at a time while it
-/// would lie on a name placed before it (ghosts often coincide).
-fn label_places(points: &[PlotPoint], frame: Rect, font_size: f32) -> Vec<Vec2> {
-    let mut placed: Vec<Vec2> = Vec::new();
-    for point in points {
-        let mut at = place(point, frame) + Vec2::new(7.0, 0.0);
-        while placed.iter().any(|other| {
-            (other.y - at.y).abs() < font_size && (other.x - at.x).abs() < 6.0 * font_size
-        }) {
-            at.y += font_size + 1.0;
-        }
-        placed.push(at);
+/// A point's place in `frame` (y down): each axis's decade clamped into the frame; a diverged
+/// ghost at the right edge.
+pub fn place(point: &PlotPoint, frame: Rect) -> Vec2 {
+    let x = point.error.map_or(frame.width(), |error| {
+        along(ERROR_DECADES, error, frame.width())
+    });
+    let y = along(COST_DECADES, point.cost, frame.height());
+    Vec2::new(frame.min.x + x, frame.max.y - y)
+}
+
+/// A tick's value as the axis writes it.
+pub fn decade_label(decade: i32) -> String {
+    match decade {
+        0 => "1".to_owned(),
+        1 => "10".to_owned(),
+        _ => format!("1e{decade}"),
+    }
+}
+
+/// Every how many decades an axis of `length` writes a value, so that no two meet: `room`
+/// is what one value needs.
+fn label_every(decades: (i32, i32), length: f32, room: f32) -> i32 {
+    let per_decade = length / (decades.1 - decades.0) as f32;
+    (1..=6)
+        .find(|&every| every as f32 * per_decade >= room)
+        .unwrap_or(6)
+}
+
+/// The half-size of a point's mark, which no name may cover.
+pub const MARK: f32 = 7.0;
+
+/// Where each name goes: beside its point (right, left, above, below, then the diagonals),
+/// further out ring by ring, at the first place inside `bounds` that meets no mark of any
+/// point, no text of `obstacles` and no name placed before; where no such place is near, the
+/// first free place in `bounds`, top to bottom. `labels` are each point and its name's size.
+pub fn place_labels(labels: &[(Vec2, Vec2)], bounds: Rect, obstacles: &[Rect]) -> Vec<Rect> {
+    let marks: Vec<Rect> = labels
+        .iter()
+        .map(|(point, _)| Rect::from_center_half_size(*point, Vec2::splat(MARK)))
+        .collect();
+    let mut placed: Vec<Rect> = Vec::new();
+    for &(point, size) in labels {
+        let free = |rect: Rect| {
+            bounds.union(rect) == bounds
+                && marks
+                    .iter()
+                    .chain(obstacles)
+                    .chain(&placed)
+                    .all(|other| other.inflate(1.0).intersect(rect).is_empty())
+        };
+        let half = size / 2.0;
+        let near = [6.0, 12.0, 20.0, 30.0, 42.0, 56.0, 72.0]
+            .into_iter()
+            .flat_map(|r: f32| {
+                [
+                    Vec2::new(r + half.x, 0.0),
+                    Vec2::new(-r - half.x, 0.0),
+                    Vec2::new(0.0, -r - half.y),
+                    Vec2::new(0.0, r + half.y),
+                    Vec2::new(r + half.x, -r - half.y) * 0.75,
+                    Vec2::new(r + half.x, r + half.y) * 0.75,
+                    Vec2::new(-r - half.x, -r - half.y) * 0.75,
+                    Vec2::new(-r - half.x, r + half.y) * 0.75,
+                ]
+            });
+        let scan = (0..)
+            .map(|row| bounds.min.y + half.y + row as f32 * 3.0)
+            .take_while(|y| *y + half.y <= bounds.max.y)
+            .flat_map(|y| {
+                (0..)
+                    .map(move |column| bounds.max.x - half.x - column as f32 * 6.0)
+                    .take_while(|x| *x - half.x >= bounds.min.x)
+                    .map(move |x| Vec2::new(x, y))
+            });
+        let rect = near
+            .map(|offset| Rect::from_center_size(point + offset, size))
+            .chain(scan.map(|centre| Rect::from_center_size(centre, size)))
+            .find(|rect| free(*rect))
+            .unwrap_or(Rect::from_center_size(
+                point + Vec2::new(6.0 + half.x, 0.0),
+                size,
+            ));
+        placed.push(rect);
     }
     placed
 }
 
-/// A ghost's label beside its point.
-#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
-struct PlotLabel(GhostKind);
+/// The plot's canvas.
+#[derive(Component, Debug)]
+pub struct PlotCanvas;
 
-/// The axes' captions and the reference's note.
+/// A ghost's name beside its point.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
-enum PlotCaption {
-    /// Under the frame.
-    Across,
-    /// Over the frame.
-    Up,
-    /// Over that.
-    Reference,
+pub struct PlotLabel(pub GhostKind);
+
+/// The plot's other texts.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+enum PlotText {
+    /// A decade's value under the error axis.
+    Across(i32),
+    /// A decade's value beside the cost axis.
+    Up(i32),
+    AcrossCaption,
+    UpCaption,
 }
 
-/// The names' size on screen, in window pixels, however small the view makes the scene.
-pub const LABEL_PIXELS: f32 = 11.0;
+/// The note under the canvas that the reference fell back.
+#[derive(Component, Debug)]
+struct ReferenceNote;
 
-#[allow(clippy::too_many_arguments)]
+fn absolute_text(text: String, shade: Color) -> impl Bundle {
+    (
+        Text::new(text),
+        theme::figures_font(size::CAPTION),
+        TextColor(shade),
+        Pickable::IGNORE,
+        Node {
+            position_type: PositionType::Absolute,
+            display: Display::None,
+            ..default()
+        },
+    )
+}
+
+fn spawn_canvas(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
+    let Some((card, _)) = slots
+        .iter()
+        .find(|(_, slot)| **slot == Slot::Card(Card::Plot))
+    else {
+        return;
+    };
+    let canvas = commands
+        .spawn((
+            Name::new("Plot"),
+            PlotCanvas,
+            Pickable::IGNORE,
+            Node {
+                height: px(PLOT_HEIGHT),
+                margin: UiRect::axes(px(space::PAD), px(space::GAP)),
+                flex_shrink: 0.0,
+                ..default()
+            },
+            ChildOf(card),
+        ))
+        .id();
+    let texts = (ERROR_DECADES.0..=ERROR_DECADES.1)
+        .map(|decade| (PlotText::Across(decade), decade_label(decade)))
+        .chain(
+            (COST_DECADES.0..=COST_DECADES.1)
+                .map(|decade| (PlotText::Up(decade), decade_label(decade))),
+        )
+        .chain([
+            (
+                PlotText::AcrossCaption,
+                "error from the reference, px →".to_owned(),
+            ),
+            (
+                PlotText::UpCaption,
+                "↑ cost, ns per simulated second".to_owned(),
+            ),
+        ]);
+    for (what, text) in texts {
+        commands.spawn((what, absolute_text(text, colour::DIM), ChildOf(canvas)));
+    }
+    for kind in Integrator::ALL.map(GhostKind::Method) {
+        commands.spawn((
+            Name::new("Plot label"),
+            PlotLabel(kind),
+            absolute_text(kind.name().to_owned(), kind.colour()),
+            ChildOf(canvas),
+        ));
+    }
+    commands.spawn((
+        Name::new("Plot note"),
+        ReferenceNote,
+        Text::default(),
+        theme::text_font(size::CAPTION),
+        TextColor(colour::WARNING),
+        Node {
+            display: Display::None,
+            padding: UiRect::new(px(space::PAD + 2.0), px(space::PAD), px(0), px(space::PAD)),
+            ..default()
+        },
+        BackgroundColor(colour::CARD),
+        ChildOf(card),
+    ));
+}
+
+/// A text node placed at `rect` (the UI's units, in its canvas), or hidden.
+fn put(node: &mut Node, rect: Option<Rect>) {
+    let (display, left, top) = match rect {
+        Some(rect) => (Display::Flex, px(rect.min.x), px(rect.min.y)),
+        None => (Display::None, node.left, node.top),
+    };
+    if node.display != display || node.left != left || node.top != top {
+        node.display = display;
+        node.left = left;
+        node.top = top;
+    }
+}
+
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
 fn draw_plot(
-    mut commands: Commands,
-    mut gizmos: Gizmos,
-    windows: Query<&Window, With<PrimaryWindow>>,
-    cameras: Query<(&Projection, &GlobalTransform), With<Camera2d>>,
+    mut gizmos: Gizmos<ChartGizmos>,
+    window: Option<Single<&Window, With<PrimaryWindow>>>,
+    ui_scale: Res<UiScale>,
     overlays: Res<Overlays>,
     ghosts: Res<Ghosts>,
     params: Res<SceneParams>,
     integrator: Res<Integrator>,
-    mut labels: Query<(
-        Entity,
-        &PlotLabel,
-        &mut Text2d,
-        &mut TextFont,
-        &mut Transform,
-        &mut Visibility,
-    )>,
-    mut captions: Query<
-        (
-            &PlotCaption,
-            &mut Text2d,
-            &mut TextFont,
-            &mut Transform,
-            &mut Visibility,
-        ),
-        Without<PlotLabel>,
+    canvases: Query<(&ComputedNode, &UiGlobalTransform), With<PlotCanvas>>,
+    mut texts: Query<(&PlotText, &mut Node), Without<PlotLabel>>,
+    mut labels: Query<(&PlotLabel, &mut Text, &mut Node), Without<PlotText>>,
+    mut notes: Query<
+        (&mut Text, &mut Node),
+        (With<ReferenceNote>, Without<PlotLabel>, Without<PlotText>),
     >,
 ) {
-    // On a phone the scene is drawn small: the names keep their size on screen.
-    let view = cameras
+    // A folded card's canvas has no size.
+    let canvas = canvases
         .iter()
-        .find_map(|(projection, transform)| view_area(projection, transform));
-    let font_size = LABEL_SIZE.max(LABEL_PIXELS * world_per_pixel(windows.iter().next(), view));
-    let shown = overlays.plot && !overlays.hud_hidden;
-    if captions.is_empty() {
-        for caption in [PlotCaption::Across, PlotCaption::Up, PlotCaption::Reference] {
-            commands.spawn((
-                Name::new("Plot caption"),
-                caption,
-                Text2d::default(),
-                TextFont::from_font_size(LABEL_SIZE),
-                TextColor(Color::srgb(0.7, 0.7, 0.75)),
-                bevy::sprite::Anchor::CENTER_LEFT,
-                Transform::default(),
-                Visibility::Hidden,
-            ));
-        }
-    }
-    let frame = plot_frame();
-    let points = if shown {
-        plot_points(&ghosts, params.step_rate_hz, *integrator)
-    } else {
-        Vec::new()
-    };
-    for (caption, mut text, mut font, mut transform, mut visibility) in &mut captions {
-        if font.font_size != FontSize::Px(font_size) {
-            font.font_size = FontSize::Px(font_size);
-        }
-        visibility.set_if_neq(if shown {
-            Visibility::Inherited
+        .map(|(node, transform)| Canvas::of(node, transform, &ui_scale))
+        .find(|canvas| overlays.plot && !canvas.rect.is_empty());
+    let capped = ghosts
+        .ghosts
+        .iter()
+        .find(|g| g.kind == GhostKind::Reference)
+        .map_or(0, |g| g.capped);
+    for (mut text, mut node) in &mut notes {
+        let said = if capped > 0 {
+            format!("The reference was capped at {capped} steps: errors there are implicit's.")
         } else {
-            Visibility::Hidden
-        });
-        let y = match caption {
-            PlotCaption::Across => frame.min.y - font_size * 0.8,
-            PlotCaption::Up => frame.max.y + font_size * 0.8,
-            PlotCaption::Reference => frame.max.y + font_size * 2.0,
+            String::new()
         };
-        transform.translation = Vec3::new(frame.min.x, y, 3.0);
-        let said = match caption {
-            PlotCaption::Across => "error from the reference, px: 1e-16 .. 1e3".to_owned(),
-            PlotCaption::Up => "cost up, ns per simulated s: 1e2 .. 1e8".to_owned(),
-            PlotCaption::Reference => {
-                let capped = ghosts
-                    .ghosts
-                    .iter()
-                    .find(|g| g.kind == GhostKind::Reference)
-                    .map_or(0, |g| g.capped);
-                if capped > 0 {
-                    format!("reference capped at {capped} steps: errors there are implicit's")
-                } else {
-                    String::new()
-                }
-            }
+        let display = if said.is_empty() {
+            Display::None
+        } else {
+            Display::Flex
         };
+        if node.display != display {
+            node.display = display;
+        }
         if text.0 != said {
             text.0 = said;
         }
     }
-    let mut unlabelled: Vec<GhostKind> = points.iter().map(|p| p.kind).collect();
-    let label_places = label_places(&points, frame, font_size);
-    for (entity, label, mut text, mut font, mut transform, mut visibility) in &mut labels {
-        if font.font_size != FontSize::Px(font_size) {
-            font.font_size = FontSize::Px(font_size);
-        }
-        let Some(point) = points.iter().find(|p| p.kind == label.0) else {
-            if !shown {
-                visibility.set_if_neq(Visibility::Hidden);
-            } else {
-                commands.entity(entity).despawn();
+    let Some(canvas) = canvas else {
+        return;
+    };
+    let size = canvas.size();
+    let frame = plot_frame(size);
+    let caption = size::CAPTION;
+
+    // The ticks' values, spaced so that none meets the next; the captions at the corners.
+    let across_every = label_every(ERROR_DECADES, frame.width(), 6.0 * 0.602 * caption + 6.0);
+    let up_every = label_every(COST_DECADES, frame.height(), 1.2 * caption + 2.0);
+    let mut obstacles = Vec::new();
+    for (what, mut node) in &mut texts {
+        let rect = match *what {
+            PlotText::Across(decade) if (decade - ERROR_DECADES.0) % across_every == 0 => {
+                let x = frame.min.x + along(ERROR_DECADES, 10f64.powi(decade), frame.width());
+                let text = text_box(Vec2::ZERO, &decade_label(decade), caption);
+                let left = (x - text.width() / 2.0).clamp(0.0, size.x - text.width());
+                Some(text_box(
+                    Vec2::new(left, frame.max.y + 8.0),
+                    &decade_label(decade),
+                    caption,
+                ))
             }
-            continue;
+            PlotText::Up(decade) if (decade - COST_DECADES.0) % up_every == 0 => {
+                let y = frame.max.y - along(COST_DECADES, 10f64.powi(decade), frame.height());
+                let text = text_box(Vec2::ZERO, &decade_label(decade), caption);
+                Some(text_box(
+                    Vec2::new(frame.min.x - 3.0 - text.width(), y - text.height() / 2.0),
+                    &decade_label(decade),
+                    caption,
+                ))
+            }
+            PlotText::AcrossCaption => Some(text_box(
+                Vec2::new(frame.min.x, size.y - 1.2 * caption - 1.0),
+                "error from the reference, px →",
+                caption,
+            )),
+            PlotText::UpCaption => Some(text_box(
+                Vec2::new(2.0, 1.0),
+                "↑ cost, ns per simulated second",
+                caption,
+            )),
+            _ => None,
         };
-        unlabelled.retain(|&kind| kind != label.0);
-        visibility.set_if_neq(Visibility::Inherited);
-        let mut name = match (point.error, point.live) {
-            (None, _) => format!("{} diverged", point.kind.name()),
-            (Some(_), true) => format!("{} (live)", point.kind.name()),
-            (Some(_), false) => point.kind.name().to_owned(),
-        };
-        if point.cost == 0.0 {
-            // A browser's clock can be coarser than a step.
-            name += " (too fast to time)";
+        if let Some(rect) = rect {
+            obstacles.push(rect);
         }
+        put(&mut node, rect);
+    }
+
+    // The names.
+    let points = plot_points(&ghosts, params.step_rate_hz, *integrator);
+    let wanted: Vec<(Vec2, Vec2)> = points
+        .iter()
+        .map(|point| {
+            let size = text_box(Vec2::ZERO, &point.label(), caption).size();
+            (place(point, frame), size)
+        })
+        .collect();
+    let places = place_labels(&wanted, frame.inflate(-1.0), &obstacles);
+    for (label, mut text, mut node) in &mut labels {
+        let index = points.iter().position(|p| p.kind == label.0);
+        let name = index.map(|i| points[i].label()).unwrap_or_default();
         if text.0 != name {
             text.0 = name;
         }
-        let index = points.iter().position(|p| p.kind == label.0).unwrap_or(0);
-        transform.translation = label_places[index].extend(3.0);
+        put(&mut node, index.map(|i| places[i]));
     }
-    for kind in unlabelled {
-        commands.spawn((
-            Name::new("Plot label"),
-            PlotLabel(kind),
-            Text2d::new(kind.name()),
-            TextFont::from_font_size(LABEL_SIZE),
-            TextColor(kind.colour()),
-            bevy::sprite::Anchor::CENTER_LEFT,
-            Transform::default(),
-            Visibility::Hidden,
-        ));
-    }
-    if !shown {
-        return;
-    }
-    gizmos.rect_2d(
-        Isometry2d::from_translation(frame.center()),
-        frame.size(),
-        FRAME_COLOUR,
+
+    // The frame, the decades' ticks and the points, in window pixels.
+    let window = window.map_or(Vec2::ONE, |window| window.size());
+    let at = |point: Vec2| canvas.to_chart(point, window);
+    gizmos.linestrip_2d(
+        [
+            Vec2::new(frame.min.x, frame.min.y),
+            Vec2::new(frame.max.x, frame.min.y),
+            frame.max,
+            Vec2::new(frame.min.x, frame.max.y),
+            frame.min,
+        ]
+        .map(at),
+        colour::FRAME,
     );
-    // A tick at each decade, along the bottom and the left.
-    let decades = |range: (f64, f64)| (range.0 as i32..=range.1 as i32).map(f64::from);
-    for decade in decades(ERROR_DECADES) {
-        let x = frame.min.x
-            + ((decade - ERROR_DECADES.0) / (ERROR_DECADES.1 - ERROR_DECADES.0)) as f32
-                * frame.width();
+    for decade in ERROR_DECADES.0..=ERROR_DECADES.1 {
+        let x = frame.min.x + along(ERROR_DECADES, 10f64.powi(decade), frame.width());
+        let long = if (decade - ERROR_DECADES.0) % across_every == 0 {
+            5.0
+        } else {
+            3.0
+        };
         gizmos.line_2d(
-            Vec2::new(x, frame.min.y),
-            Vec2::new(x, frame.min.y + 3.0),
-            FRAME_COLOUR,
+            at(Vec2::new(x, frame.max.y)),
+            at(Vec2::new(x, frame.max.y - long)),
+            colour::FRAME,
         );
     }
-    for decade in decades(COST_DECADES) {
-        let y = frame.min.y
-            + ((decade - COST_DECADES.0) / (COST_DECADES.1 - COST_DECADES.0)) as f32
-                * frame.height();
+    for decade in COST_DECADES.0..=COST_DECADES.1 {
+        let y = frame.max.y - along(COST_DECADES, 10f64.powi(decade), frame.height());
         gizmos.line_2d(
-            Vec2::new(frame.min.x, y),
-            Vec2::new(frame.min.x + 3.0, y),
-            FRAME_COLOUR,
+            at(Vec2::new(frame.min.x, y)),
+            at(Vec2::new(frame.min.x + 5.0, y)),
+            colour::FRAME,
         );
     }
-    for (point, label) in points.iter().zip(&label_places) {
-        let at = place(point, frame);
-        let colour = point.kind.colour();
-        // A name moved off its point's line is tied to it.
-        if (label.y - at.y).abs() > 1.0 {
-            gizmos.line_2d(at, *label - Vec2::new(2.0, 0.0), colour.with_alpha(0.5));
+    let scale = canvas.ui_scale;
+    for ((point, (anchor, _)), label) in points.iter().zip(&wanted).zip(&places) {
+        let shade = point.kind.colour();
+        let centre = at(*anchor);
+        // A name moved off its point is tied to it, from its nearest edge.
+        let nearest = anchor.clamp(label.min, label.max);
+        if nearest.distance(*anchor) > 9.0 {
+            let from = *anchor + (nearest - *anchor).normalize_or_zero() * (MARK + 1.0);
+            gizmos.line_2d(at(from), at(nearest), shade.with_alpha(0.6));
         }
         match point.error {
             Some(_) => {
-                gizmos.circle_2d(Isometry2d::from_translation(at), 3.0, colour);
+                gizmos.circle_2d(Isometry2d::from_translation(centre), 3.0 * scale, shade);
                 if point.live {
-                    gizmos.circle_2d(Isometry2d::from_translation(at), 5.5, colour);
+                    gizmos.circle_2d(Isometry2d::from_translation(centre), 5.5 * scale, shade);
                 }
             }
             None => {
+                let arm = 4.0 * scale;
                 for (a, b) in [
-                    (Vec2::new(-4.0, -4.0), Vec2::new(4.0, 4.0)),
-                    (Vec2::new(-4.0, 4.0), Vec2::new(4.0, -4.0)),
+                    (Vec2::new(-arm, -arm), Vec2::new(arm, arm)),
+                    (Vec2::new(-arm, arm), Vec2::new(arm, -arm)),
                 ] {
-                    gizmos.line_2d(at + a, at + b, colour);
+                    gizmos.line_2d(centre + a, centre + b, shade);
                 }
             }
         }

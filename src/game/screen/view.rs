@@ -1,228 +1,428 @@
-//! The camera that keeps the tutorial's 640 x 480 scene in view at any window size, in the
-//! part of the window the on-screen panel and the HUD leave free, and the interpolation that draws the
-//! box between fixed steps so that motion is smooth at any display rate (as Bevy's
-//! `physics_in_fixed_timestep` example does).
+//! The cameras, and the interpolation that draws the box between fixed steps so that motion
+//! is smooth at any display rate (as Bevy's `physics_in_fixed_timestep` example does).
+//!
+//! The scene's camera renders into the layout's viewport ([`SceneViewport`]) only, so nothing
+//! of the world is ever drawn under the dock. It frames the tutorial's 640 x 480 screen by
+//! default ([`CameraFrame::home`]); when a pull takes the box or the band's anchor out of the
+//! frame's inner 80%, it widens smoothly to keep them in, and eases back when they return.
+//! The wheel and a pinch zoom, the right button and two fingers pan, F (or the panel's
+//! "frame") returns at once. The pointer maps through the same camera.
+//!
+//! A second camera draws the dock's charts (gizmos on their own render layer, in window
+//! pixels) and the UI over the whole window.
 
-use bevy::camera::ScalingMode;
+use bevy::camera::visibility::RenderLayers;
+use bevy::camera::{ClearColorConfig, ScalingMode, Viewport};
+use bevy::input::mouse::{MouseScrollUnit, MouseWheel};
 use bevy::prelude::*;
+use bevy::ui::IsDefaultUiCamera;
+use bevy::window::PrimaryWindow;
 
+use crate::game::input::controls::HomeView;
+use crate::game::input::pointer::SceneCamera;
+use crate::game::layout::SceneViewport;
 use crate::game::schedule::{AfterStepsSystems, ScreenSystems};
-use crate::game::shared::{ControlsArea, HudArea};
-use crate::game::simulation::{Band, RenderSnapshots};
-use crate::physics::{BodyState, SCENE_SIZE};
+use crate::game::simulation::{Band, RenderSnapshots, ResetScene};
+use crate::physics::{BodyState, MassProperties, SCENE_SIZE};
 
 pub struct ViewPlugin;
 
 impl Plugin for ViewPlugin {
     fn build(&self, app: &mut App) {
-        app.add_systems(Startup, spawn_camera)
+        app.init_resource::<CameraFrame>()
+            .add_systems(Startup, spawn_cameras)
+            .add_observer(go_home)
+            .add_observer(go_home_on_reset)
             .add_systems(
                 RunFixedMainLoop,
                 (interpolate_body_transforms, place_band_pins).in_set(AfterStepsSystems::Conclude),
             )
             .add_systems(
                 Update,
-                (scale_ui_to_window, fit_scene_to_free_area).in_set(ScreenSystems::Scale),
+                (zoom_and_pan, follow_the_box, place_cameras)
+                    .chain()
+                    .in_set(ScreenSystems::Camera),
             );
+        #[cfg(target_arch = "wasm32")]
+        app.add_systems(
+            Update,
+            publish_view
+                .after(place_cameras)
+                .in_set(ScreenSystems::Camera),
+        );
     }
 }
 
-/// An orthographic projection that always shows the whole scene, centred, aspect kept: the
-/// window's extra width or height shows more of the world around it.
+/// In the browser: where the tutorial's screen and the box's corners are on the page.
+#[cfg(target_arch = "wasm32")]
+fn publish_view(
+    fixed_time: Res<Time<Fixed>>,
+    window: Option<Single<&Window, With<PrimaryWindow>>>,
+    viewport: Res<SceneViewport>,
+    frame: Res<CameraFrame>,
+    boxes: Query<(&RenderSnapshots, &MassProperties)>,
+    mut published: Local<(Option<Rect>, String)>,
+) {
+    let (Some(window), Some(view)) = (window, frame.shown) else {
+        return;
+    };
+    let area = viewport_rect(&viewport, &window);
+    let half = SCENE_SIZE.as_vec2() / 2.0;
+    let scene = Rect::from_corners(view.to_window(-half, area), view.to_window(half, area));
+    if published.0 != Some(scene) {
+        crate::game::web::publish_scene(scene.min.x, scene.min.y, scene.width(), scene.height());
+        published.0 = Some(scene);
+    }
+    let corners: Vec<[f32; 2]> = boxes
+        .iter()
+        .flat_map(|(snapshots, mass)| {
+            let state = interpolated_state(snapshots, &fixed_time);
+            mass.corners().map(|corner| {
+                view.to_window(state.local_to_world(corner).as_vec2(), area)
+                    .to_array()
+            })
+        })
+        .collect();
+    let json = serde_json::to_string(&corners).unwrap_or_default();
+    if published.1 != json {
+        crate::game::web::publish_box(&json);
+        published.1 = json;
+    }
+}
+
+/// The render layer of the dock's charts: only the chart camera draws it.
+pub const CHART_LAYER: usize = 1;
+
+/// The camera that draws the dock's charts and the UI, over the whole window.
+#[derive(Component, Debug)]
+pub struct ChartCamera;
+
+/// What the scene's camera shows: a centre and a zoom, in world units per logical pixel.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct View {
+    pub centre: Vec2,
+    pub world_per_pixel: f32,
+}
+
+impl View {
+    /// The part of the world the view shows in a viewport of `size` logical pixels.
+    pub fn area(&self, size: Vec2) -> Rect {
+        Rect::from_center_size(self.centre, size * self.world_per_pixel)
+    }
+
+    /// The view that shows `area` whole in a viewport of `size`, aspect kept, centred on it.
+    pub fn fitting(area: Rect, size: Vec2) -> Self {
+        let ratio = area.size() / size.max(Vec2::ONE);
+        Self {
+            centre: area.center(),
+            world_per_pixel: ratio.max_element().max(f32::MIN_POSITIVE),
+        }
+    }
+
+    /// A world point's place on the window, in logical pixels, with the viewport at `viewport`.
+    pub fn to_window(&self, world: Vec2, viewport: Rect) -> Vec2 {
+        let offset = (world - self.centre) / self.world_per_pixel;
+        viewport.center() + Vec2::new(offset.x, -offset.y)
+    }
+}
+
+/// The scene camera's frame: where the player put it (the home: the tutorial's screen, or as
+/// zoomed and panned) and what it shows now.
+#[derive(Resource, Debug, Clone, Copy, PartialEq)]
+pub struct CameraFrame {
+    /// The player's zoom about the home frame (1: the tutorial's screen fitted) and pan.
+    pub zoom: f32,
+    pub pan: Vec2,
+    /// What the camera shows this frame (`None` until the first).
+    pub shown: Option<View>,
+}
+
+impl Default for CameraFrame {
+    fn default() -> Self {
+        Self {
+            zoom: 1.0,
+            pan: Vec2::ZERO,
+            shown: None,
+        }
+    }
+}
+
+/// The room left around the tutorial's screen in the home frame, as a share of it.
+const HOME_MARGIN: f32 = 1.04;
+/// The share of the view that counts as well inside: out of it, the camera widens.
+const INNER: f32 = 0.8;
+/// How fast the view eases toward where it should be, per second.
+const EASE_RATE: f32 = 6.0;
+/// The player's zoom's range.
+const ZOOM_RANGE: (f32, f32) = (0.05, 20.0);
+
+impl CameraFrame {
+    /// The home view in a viewport of `size`: the tutorial's screen fitted, then the player's
+    /// zoom and pan.
+    pub fn home(&self, size: Vec2) -> View {
+        let screen = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2() * HOME_MARGIN);
+        let fitted = View::fitting(screen, size);
+        View {
+            centre: self.pan,
+            world_per_pixel: fitted.world_per_pixel * self.zoom,
+        }
+    }
+}
+
+/// Where the view should be with `keep` (the box's corners, the anchor) to keep in sight: the
+/// home view while they lie in its inner 80%; else the least view, centred between, that
+/// holds the home frame's centre and them in its inner 80%.
+pub fn wanted_view(home: View, size: Vec2, keep: Rect) -> View {
+    let inner = Rect::from_center_size(home.centre, size * home.world_per_pixel * INNER);
+    if keep.is_empty() || inner.union(keep) == inner {
+        return home;
+    }
+    let area = home.area(size).union(keep);
+    let mut view = View::fitting(area, size * INNER);
+    view.world_per_pixel = view.world_per_pixel.max(home.world_per_pixel);
+    view
+}
+
+/// `shown` moved toward `wanted` by the share `ease` (0 to 1), the zoom on a log scale; then,
+/// if `keep` is not whole in it, widened at once until it is (the box is never lost).
+pub fn eased_view(shown: View, wanted: View, ease: f32, size: Vec2, keep: Rect) -> View {
+    let mut view = View {
+        centre: shown.centre.lerp(wanted.centre, ease),
+        world_per_pixel: (shown.world_per_pixel.ln()
+            + (wanted.world_per_pixel.ln() - shown.world_per_pixel.ln()) * ease)
+            .exp(),
+    };
+    let area = view.area(size);
+    if !keep.is_empty() && area.union(keep) != area {
+        // The least view holding both what it showed and what must be seen.
+        let grown = area.union(keep.inflate(keep.size().max_element() * 0.05));
+        view = View::fitting(grown, size);
+    }
+    view
+}
+
+/// What must stay in sight: every box's corners (as drawn) and the band's anchor.
+fn kept_in_sight(
+    fixed_time: &Time<Fixed>,
+    boxes: &Query<(&RenderSnapshots, &MassProperties)>,
+    bands: &Query<&Band>,
+) -> Rect {
+    let mut keep = Rect::EMPTY;
+    for (snapshots, mass) in boxes {
+        let state = interpolated_state(snapshots, fixed_time);
+        for corner in mass.corners() {
+            keep = keep.union_point(state.local_to_world(corner).as_vec2());
+        }
+    }
+    for band in bands {
+        keep = keep.union_point(band.ends.anchor.as_vec2());
+    }
+    keep
+}
+
+/// The viewport's rectangle now, in logical pixels: the layout's, or the whole window.
+fn viewport_rect(viewport: &SceneViewport, window: &Window) -> Rect {
+    viewport
+        .0
+        .unwrap_or(Rect::from_corners(Vec2::ZERO, window.size()))
+}
+
+fn spawn_cameras(mut commands: Commands) {
+    commands.spawn((
+        Name::new("Camera"),
+        Camera2d,
+        SceneCamera,
+        scene_projection(),
+    ));
+    commands.spawn((
+        Name::new("Chart camera"),
+        Camera2d,
+        ChartCamera,
+        IsDefaultUiCamera,
+        Camera {
+            order: 1,
+            clear_color: ClearColorConfig::None,
+            ..default()
+        },
+        RenderLayers::layer(CHART_LAYER),
+        // One world unit a logical pixel, the origin at the window's centre.
+        Projection::Orthographic(OrthographicProjection {
+            scaling_mode: ScalingMode::WindowSize,
+            ..OrthographicProjection::default_2d()
+        }),
+    ));
+}
+
+/// An orthographic projection whose scale the view sets.
 pub fn scene_projection() -> Projection {
     Projection::Orthographic(OrthographicProjection {
-        scaling_mode: ScalingMode::AutoMin {
-            min_width: SCENE_SIZE.x as f32,
-            min_height: SCENE_SIZE.y as f32,
-        },
+        scaling_mode: ScalingMode::WindowSize,
         ..OrthographicProjection::default_2d()
     })
 }
 
-/// The window's size when the game opens, in logical pixels: the tutorial's 640 x 480 scene
-/// with room around it for the HUD and the panel.
-pub const WINDOW_SIZE: UVec2 = UVec2::new(960, 720);
-
-/// In a window smaller than [`WINDOW_SIZE`] (a phone) the HUD and the panel shrink with it, to
-/// no less than 0.6, so that they leave the scene readable.
-pub fn ui_scale_for(size: Vec2) -> f32 {
-    let full = WINDOW_SIZE.as_vec2();
-    (size.x / full.x).min(size.y / full.y).clamp(0.6, 1.0)
+fn go_home(_home: On<HomeView>, mut frame: ResMut<CameraFrame>) {
+    frame.zoom = 1.0;
+    frame.pan = Vec2::ZERO;
+    // At once, not eased.
+    frame.shown = None;
 }
 
-fn scale_ui_to_window(
-    windows: Query<&Window, With<bevy::window::PrimaryWindow>>,
-    mut scale: ResMut<UiScale>,
+/// A reset starts the view over too.
+fn go_home_on_reset(_reset: On<ResetScene>, mut frame: ResMut<CameraFrame>) {
+    *frame = CameraFrame::default();
+}
+
+/// The wheel zooms about the pointer, the right button drags the view, two fingers pinch and
+/// pan: all on the scene's viewport only (the wheel over the dock scrolls it).
+#[allow(clippy::too_many_arguments)]
+fn zoom_and_pan(
+    mut wheel: MessageReader<MouseWheel>,
+    buttons: Res<ButtonInput<MouseButton>>,
+    touches: Res<Touches>,
+    window: Option<Single<&Window, With<PrimaryWindow>>>,
+    viewport: Res<SceneViewport>,
+    mut frame: ResMut<CameraFrame>,
+    mut last_cursor: Local<Option<Vec2>>,
+    mut last_pinch: Local<Option<(f32, Vec2)>>,
 ) {
-    for window in &windows {
-        let fit = ui_scale_for(window.size());
-        if scale.0 != fit {
-            scale.0 = fit;
-        }
+    let Some(window) = window else {
+        wheel.clear();
+        return;
+    };
+    let area = viewport_rect(&viewport, &window);
+    let Some(shown) = frame.shown else {
+        wheel.clear();
+        return;
+    };
+    let home = frame.home(area.size());
+    let cursor = window.cursor_position();
+    // A change of zoom about a window point: the world point under it stays under it.
+    let zoom_about = |frame: &mut CameraFrame, factor: f32, at: Vec2| {
+        let zoom = (frame.zoom * factor).clamp(ZOOM_RANGE.0, ZOOM_RANGE.1);
+        let applied = zoom / frame.zoom;
+        let offset = at - area.center();
+        let world_at = shown.centre + Vec2::new(offset.x, -offset.y) * shown.world_per_pixel;
+        frame.pan = world_at + (frame.pan - world_at) * applied;
+        frame.zoom = zoom;
+    };
+    for event in wheel.read() {
+        let Some(at) = cursor.filter(|at| area.contains(*at)) else {
+            continue;
+        };
+        let lines = match event.unit {
+            MouseScrollUnit::Line => event.y,
+            MouseScrollUnit::Pixel => event.y / 40.0,
+        };
+        zoom_about(&mut frame, 1.1f32.powf(-lines), at);
     }
-}
-
-/// The part of the window the scene is fitted to, in logical window pixels (origin at the top
-/// left): of the rectangles bounded by the window's and the covered rectangles' edges, the one
-/// whose fitted scene is the largest and lies clear of every covered rectangle (the panel's,
-/// the HUD's); among equals, the largest (the whole window when nothing is in the way). With
-/// no such rectangle, the whole window.
-pub fn free_area(window: Vec2, covered: &[Rect]) -> Rect {
-    let whole = Rect::from_corners(Vec2::ZERO, window);
-    let covered: Vec<Rect> = covered
+    // The right button drags the world with it.
+    if buttons.pressed(MouseButton::Right)
+        && let (Some(now), Some(before)) = (cursor, *last_cursor)
+        && area.contains(before)
+    {
+        let moved = now - before;
+        frame.pan -= Vec2::new(moved.x, -moved.y) * home.world_per_pixel;
+    }
+    *last_cursor = cursor;
+    // Two fingers: their spread zooms, their middle pans.
+    let fingers: Vec<Vec2> = touches
         .iter()
-        .map(|rect| rect.intersect(whole))
-        .filter(|rect| !rect.is_empty())
+        .map(|touch| touch.position())
+        .take(2)
         .collect();
-    let edges = |along: fn(Vec2) -> f32| {
-        let mut edges: Vec<f32> = covered
-            .iter()
-            .flat_map(|rect| [along(rect.min), along(rect.max)])
-            .chain([0.0, along(window)])
-            .collect();
-        edges.sort_by(f32::total_cmp);
-        edges.dedup();
-        edges
-    };
-    let (xs, ys) = (edges(|v| v.x), edges(|v| v.y));
-    let mut best: Option<(f32, f32, Rect)> = None;
-    for (i, &left) in xs.iter().enumerate() {
-        for &right in &xs[i + 1..] {
-            for (j, &top) in ys.iter().enumerate() {
-                for &bottom in &ys[j + 1..] {
-                    let area = Rect::new(left, top, right, bottom);
-                    if !clear_of(fitted_scene(area), &covered) {
-                        continue;
-                    }
-                    let key = (scene_scale(area), area.width() * area.height());
-                    if best.is_none_or(|(scale, size, _)| key > (scale, size)) {
-                        best = Some((key.0, key.1, area));
-                    }
-                }
-            }
+    if let [a, b] = fingers[..] {
+        let (spread, middle) = (a.distance(b).max(1.0), (a + b) / 2.0);
+        if let Some((before_spread, before_middle)) = *last_pinch {
+            zoom_about(&mut frame, before_spread / spread, middle);
+            let moved = middle - before_middle;
+            frame.pan -= Vec2::new(moved.x, -moved.y) * home.world_per_pixel;
         }
-    }
-    best.map_or(whole, |(_, _, area)| area)
-}
-
-/// Whether `scene` lies clear of every rectangle of `covered` (touching is clear).
-pub fn clear_of(scene: Rect, covered: &[Rect]) -> bool {
-    covered.iter().all(|rect| rect.intersect(scene).is_empty())
-}
-
-/// The area to fit the scene to this frame: the present one while its scene stays in the
-/// window and clear of what covers it, and nothing else fits the scene more than 5% larger
-/// (the HUD's lines change width with their numbers: the scene does not follow each digit);
-/// else the free area.
-pub fn area_to_fit(window: Vec2, covered: &[Rect], present: Option<Rect>) -> Rect {
-    let free = free_area(window, covered);
-    let whole = Rect::from_corners(Vec2::ZERO, window);
-    match present {
-        Some(present)
-            if whole.union(present) == whole
-                && clear_of(fitted_scene(present), covered)
-                && scene_scale(free) <= scene_scale(present) * 1.05 =>
-        {
-            present
-        }
-        _ => free,
+        *last_pinch = Some((spread, middle));
+    } else {
+        *last_pinch = None;
     }
 }
 
-/// Window pixels a world unit spans when the scene fits `area`, aspect kept.
-pub fn scene_scale(area: Rect) -> f32 {
-    let scene = SCENE_SIZE.as_vec2();
-    (area.width() / scene.x)
-        .min(area.height() / scene.y)
-        .max(0.0)
-}
-
-/// Where the tutorial's scene lies on the window when fitted to `area`: centred in it.
-pub fn fitted_scene(area: Rect) -> Rect {
-    Rect::from_center_size(area.center(), SCENE_SIZE.as_vec2() * scene_scale(area))
-}
-
-/// The camera shows the scene in the free area: its projection's scale and its position such
-/// that the world's origin lies at the area's centre. Only once the panel has been laid out
-/// (headless there is no layout, and the camera keeps fitting the whole window).
-fn fit_scene_to_free_area(
-    window: Single<&Window, With<bevy::window::PrimaryWindow>>,
-    controls: Res<ControlsArea>,
-    hud: Res<HudArea>,
-    mut present: Local<Option<Rect>>,
-    mut fitted_to: Local<Option<(Vec2, Vec<Rect>)>>,
-    camera: Single<(&mut Projection, &mut Transform), With<Camera2d>>,
+/// The view eased toward where it should be this frame; the box and the anchor always in it.
+fn follow_the_box(
+    time: Res<Time<Real>>,
+    fixed_time: Res<Time<Fixed>>,
+    window: Option<Single<&Window, With<PrimaryWindow>>>,
+    viewport: Res<SceneViewport>,
+    boxes: Query<(&RenderSnapshots, &MassProperties)>,
+    bands: Query<&Band>,
+    mut frame: ResMut<CameraFrame>,
 ) {
-    if controls.0.is_empty() {
+    let Some(window) = window else {
         return;
-    }
-    let size = window.size();
-    let covered: Vec<Rect> = controls.0.iter().chain(&hud.0).copied().collect();
-    // The search is for a frame whose window or boxes moved, not for every frame.
-    if fitted_to
-        .as_ref()
-        .is_some_and(|(fitted, boxes)| *fitted == size && *boxes == covered)
-    {
-        return;
-    }
-    let free = area_to_fit(size, &covered, *present);
-    let scale = scene_scale(free);
-    // A window with no room (minimised) leaves the camera as it is.
-    if scale.is_nan() || scale <= 0.0 {
-        return;
-    }
-    if *present != Some(free) {
-        #[cfg(target_arch = "wasm32")]
-        {
-            let scene = fitted_scene(free);
-            crate::game::web::publish_scene(
-                scene.min.x,
-                scene.min.y,
-                scene.width(),
-                scene.height(),
-            );
-        }
-        *present = Some(free);
-    }
-    *fitted_to = Some((size, covered));
-    let (mut projection, mut transform) = camera.into_inner();
-    let offset = free.center() - size / 2.0;
-    let position = Vec3::new(-offset.x / scale, offset.y / scale, transform.translation.z);
-    if transform.translation != position {
-        transform.translation = position;
-    }
-    if let Projection::Orthographic(orthographic) = &mut *projection
-        && (!matches!(orthographic.scaling_mode, ScalingMode::WindowSize)
-            || orthographic.scale != 1.0 / scale)
-    {
-        orthographic.scaling_mode = ScalingMode::WindowSize;
-        orthographic.scale = 1.0 / scale;
-    }
-}
-
-/// The part of the world the camera shows: it may sit off the origin (the scene fitted to the
-/// part of the window the panel and the HUD leave free).
-pub fn view_area(projection: &Projection, transform: &GlobalTransform) -> Option<Rect> {
-    let Projection::Orthographic(projection) = projection else {
-        return None;
     };
-    let centre = transform.translation().truncate();
-    Some(Rect::from_corners(
-        projection.area.min + centre,
-        projection.area.max + centre,
-    ))
-}
-
-/// World units a window pixel spans now: the view's width in the world over the window's.
-pub fn world_per_pixel(window: Option<&Window>, view: Option<Rect>) -> f32 {
-    match (window.map(Window::width), view.map(|view| view.width())) {
-        (Some(width), Some(area)) if width > 0.0 && area > 0.0 => area / width,
-        _ => 1.0,
+    let size = viewport_rect(&viewport, &window).size();
+    if size.min_element() <= 0.0 {
+        return;
+    }
+    let keep = kept_in_sight(&fixed_time, &boxes, &bands);
+    let home = frame.home(size);
+    let wanted = wanted_view(home, size, keep);
+    let shown = frame.shown.unwrap_or(wanted);
+    let ease = 1.0 - (-EASE_RATE * time.delta_secs()).exp();
+    let view = eased_view(shown, wanted, ease, size, keep);
+    if frame.shown != Some(view) {
+        frame.shown = Some(view);
     }
 }
 
-fn spawn_camera(mut commands: Commands) {
-    commands.spawn((Name::new("Camera"), Camera2d, scene_projection()));
+/// The scene's camera renders into the viewport, showing the frame's view; the chart
+/// camera covers the window.
+fn place_cameras(
+    window: Option<Single<&Window, With<PrimaryWindow>>>,
+    viewport: Res<SceneViewport>,
+    frame: Res<CameraFrame>,
+    mut cameras: Query<(&mut Camera, &mut Projection, &mut Transform), With<SceneCamera>>,
+) {
+    let (Some(window), Some(view)) = (window, frame.shown) else {
+        return;
+    };
+    let area = viewport_rect(&viewport, &window);
+    let scale = window.scale_factor();
+    let physical = Viewport {
+        physical_position: (area.min * scale).round().as_uvec2(),
+        physical_size: (area.size() * scale).round().as_uvec2().max(UVec2::ONE),
+        ..default()
+    };
+    for (mut camera, mut projection, mut transform) in &mut cameras {
+        // Without a layout (the headless game) the camera keeps the whole window.
+        if viewport.0.is_some()
+            && camera.viewport.as_ref().is_none_or(|now| {
+                now.physical_position != physical.physical_position
+                    || now.physical_size != physical.physical_size
+            })
+        {
+            camera.viewport = Some(physical.clone());
+        }
+        let position = view.centre.extend(transform.translation.z);
+        if transform.translation != position {
+            transform.translation = position;
+        }
+        if let Projection::Orthographic(orthographic) = &mut *projection
+            && (!matches!(orthographic.scaling_mode, ScalingMode::WindowSize)
+                || orthographic.scale != view.world_per_pixel)
+        {
+            orthographic.scaling_mode = ScalingMode::WindowSize;
+            orthographic.scale = view.world_per_pixel;
+        }
+    }
+}
+
+/// World units a logical pixel spans now (1 before the first view).
+pub fn world_per_pixel(frame: &CameraFrame) -> f32 {
+    frame.shown.map_or(1.0, |view| view.world_per_pixel)
+}
+
+/// The part of the world the scene's camera shows now, if it has shown any.
+pub fn shown_area(frame: &CameraFrame, viewport: &SceneViewport, window: &Window) -> Option<Rect> {
+    let size = viewport_rect(viewport, window).size();
+    frame.shown.map(|view| view.area(size))
 }
 
 /// The state to draw this frame: between the last two fixed steps, by how far the clock has

@@ -1,0 +1,688 @@
+//! The window's regions, not overlays: the scene's viewport (the largest region at every size)
+//! between a status line above and a one-line hint below, and the dock of instrument cards:
+//! at the side of a wide window, as a bottom sheet of a tall one (a phone held upright).
+//!
+//! The cards (the panel's controls, the readouts, the energy, the ghosts' table, the plot,
+//! the stability line) fold; on the side, any number is open and the dock is a strip of
+//! titles when all are folded; on a tall window the titles are tabs and one card at a time is
+//! open. Nothing here draws over the scene: the viewport is a node of the layout, and
+//! [`SceneViewport`] says where Bevy's layout put it, for the camera to render the scene
+//! into and the pointer to map through.
+//!
+//! The plugins that fill the regions find them by their [`Slot`]; this module spawns the
+//! frame in `PreStartup`, they spawn their content in `Startup`.
+
+use bevy::picking::Pickable;
+use bevy::prelude::*;
+use bevy::ui::{CalculatedClip, UiGlobalTransform};
+use bevy::ui_widgets::{ActivateOnPress, Button};
+use bevy::window::PrimaryWindow;
+
+use crate::game::schedule::{AfterBevySystems, ScreenSystems};
+use crate::game::shared::{Overlays, window_rect};
+use crate::game::theme::{self, colour, size, space};
+
+pub struct LayoutPlugin;
+
+impl Plugin for LayoutPlugin {
+    fn build(&self, app: &mut App) {
+        // The panel's sliders read it too (the UI plugin has it; the headless game does not).
+        app.init_resource::<UiScale>()
+            .init_resource::<Cards>()
+            .init_resource::<SceneViewport>()
+            .add_systems(PreStartup, spawn_regions)
+            .add_systems(
+                Update,
+                (
+                    scale_ui_to_window,
+                    open_cards_switched_on,
+                    arrange,
+                    scroll_the_dock,
+                )
+                    .chain()
+                    .in_set(ScreenSystems::Scale),
+            )
+            .add_systems(
+                PostUpdate,
+                publish_viewport.in_set(AfterBevySystems::AfterLayout),
+            );
+        #[cfg(target_arch = "wasm32")]
+        app.add_systems(
+            PostUpdate,
+            publish_texts.in_set(AfterBevySystems::AfterLayout),
+        );
+    }
+}
+
+/// What of a node the window shows, in logical pixels: its rectangle cut to its clip (a
+/// scrolled dock); `None` when it has no size (it, or a node above it, is not displayed) or
+/// is cut away.
+pub fn visible_rect(
+    node: &ComputedNode,
+    transform: &UiGlobalTransform,
+    clip: Option<&CalculatedClip>,
+    ui_scale: &UiScale,
+) -> Option<Rect> {
+    clipped(window_rect(node, transform, ui_scale), node, clip, ui_scale)
+}
+
+/// `rect`, in logical pixels, cut to the node's clip; `None` if nothing is left.
+fn clipped(
+    mut rect: Rect,
+    node: &ComputedNode,
+    clip: Option<&CalculatedClip>,
+    ui_scale: &UiScale,
+) -> Option<Rect> {
+    let scale = node.inverse_scale_factor() * ui_scale.0;
+    if let Some(clip) = clip {
+        let cut = Rect::from_corners(clip.clip.min * scale, clip.clip.max * scale);
+        rect = rect.intersect(cut);
+    }
+    (rect.width() > 0.0 && rect.height() > 0.0).then_some(rect)
+}
+
+/// Where a text's glyphs may lie, in logical pixels: its node's content box (inside its
+/// padding), cut to its clip.
+pub fn visible_text_rect(
+    node: &ComputedNode,
+    transform: &UiGlobalTransform,
+    clip: Option<&CalculatedClip>,
+    ui_scale: &UiScale,
+) -> Option<Rect> {
+    let scale = node.inverse_scale_factor() * ui_scale.0;
+    let content = node.content_box();
+    let rect = Rect::from_corners(
+        (transform.translation + content.min) * scale,
+        (transform.translation + content.max) * scale,
+    );
+    clipped(rect, node, clip, ui_scale)
+}
+
+/// Every text the window shows and where, in logical pixels: what the layout's checks read
+/// (no two meet, none on the scene, all in the window).
+pub fn shown_texts(
+    texts: &Query<(
+        &Text,
+        &ComputedNode,
+        &UiGlobalTransform,
+        Option<&CalculatedClip>,
+    )>,
+    ui_scale: &UiScale,
+) -> Vec<(String, Rect)> {
+    texts
+        .iter()
+        .filter(|(text, ..)| !text.0.trim().is_empty())
+        .filter_map(|(text, node, transform, clip)| {
+            visible_text_rect(node, transform, clip, ui_scale).map(|rect| (text.0.clone(), rect))
+        })
+        .collect()
+}
+
+/// In the browser: the viewport and every text shown, for the page (and the browser test).
+#[cfg(target_arch = "wasm32")]
+fn publish_texts(
+    texts: Query<(
+        &Text,
+        &ComputedNode,
+        &UiGlobalTransform,
+        Option<&CalculatedClip>,
+    )>,
+    ui_scale: Res<UiScale>,
+    viewport: Res<SceneViewport>,
+    mut published: Local<String>,
+) {
+    let shown: Vec<serde_json::Value> = shown_texts(&texts, &ui_scale)
+        .into_iter()
+        .map(|(text, rect)| {
+            serde_json::json!({
+                "text": text,
+                "rect": [rect.min.x, rect.min.y, rect.width(), rect.height()],
+            })
+        })
+        .collect();
+    let json = serde_json::to_string(&shown).unwrap_or_default();
+    if *published != json {
+        crate::game::web::publish_texts(&json);
+        *published = json;
+    }
+    if viewport.is_changed()
+        && let Some(rect) = viewport.0
+    {
+        crate::game::web::publish_viewport(rect.min.x, rect.min.y, rect.width(), rect.height());
+    }
+}
+
+/// The game's window when it opens, in logical pixels.
+pub const WINDOW_SIZE: UVec2 = UVec2::new(960, 720);
+
+/// An instrument card of the dock, in the dock's order.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Card {
+    /// The panel: every control a key has.
+    Controls,
+    /// The scene, the integrator, the clock, the parameters, the replay.
+    Readouts,
+    /// The energies, the ledger and the energy graph.
+    Energy,
+    /// The ghosts' table (with the ghosts on).
+    Ghosts,
+    /// Speed against error (with the plot on).
+    Plot,
+    /// The live integrator's distance from instability.
+    Stability,
+}
+
+impl Card {
+    pub const ALL: [Card; 6] = [
+        Card::Controls,
+        Card::Readouts,
+        Card::Energy,
+        Card::Ghosts,
+        Card::Plot,
+        Card::Stability,
+    ];
+
+    pub fn title(self) -> &'static str {
+        match self {
+            Card::Controls => "Controls",
+            Card::Readouts => "Readouts",
+            Card::Energy => "Energy",
+            Card::Ghosts => "Ghosts",
+            Card::Plot => "Speed against error",
+            Card::Stability => "Stability",
+        }
+    }
+
+    fn index(self) -> usize {
+        Card::ALL.iter().position(|&card| card == self).unwrap_or(0)
+    }
+
+    /// Whether the card is in the dock now: the ghosts' table and the plot only while their
+    /// overlay is on.
+    pub fn offered(self, overlays: &Overlays) -> bool {
+        match self {
+            Card::Ghosts => overlays.ghosts,
+            Card::Plot => overlays.plot,
+            _ => true,
+        }
+    }
+}
+
+/// Which cards are open: kept as the player left them while the game runs. A tall window
+/// shows one at a time (the first open one).
+#[derive(Resource, Debug, Clone, PartialEq, Eq, Default)]
+pub struct Cards {
+    open: [bool; Card::ALL.len()],
+}
+
+impl Cards {
+    pub fn is_open(&self, card: Card) -> bool {
+        self.open[card.index()]
+    }
+
+    pub fn set(&mut self, card: Card, open: bool) {
+        self.open[card.index()] = open;
+    }
+
+    /// A card's title pressed: on the side it folds or unfolds; on a tall window, where one
+    /// card shows at a time, an open card folds and a folded one opens alone.
+    pub fn toggle(&mut self, card: Card, shape: Shape) {
+        let open = !self.is_open(card);
+        if shape == Shape::Tall && open {
+            self.open = Default::default();
+        }
+        self.set(card, open);
+    }
+
+    /// The card a tall window shows: the first open one the dock offers.
+    pub fn shown_alone(&self, overlays: &Overlays) -> Option<Card> {
+        Card::ALL
+            .into_iter()
+            .find(|&card| self.is_open(card) && card.offered(overlays))
+    }
+
+    /// Whether the card's body shows.
+    pub fn body_shows(&self, card: Card, shape: Shape, overlays: &Overlays) -> bool {
+        match shape {
+            Shape::Wide => self.is_open(card) && card.offered(overlays),
+            Shape::Tall => self.shown_alone(overlays) == Some(card),
+        }
+    }
+}
+
+/// The window's shape: the dock at the side of a wide window, below the scene on a tall one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    Wide,
+    Tall,
+}
+
+impl Shape {
+    pub fn of(window: Vec2) -> Self {
+        if window.x >= window.y {
+            Shape::Wide
+        } else {
+            Shape::Tall
+        }
+    }
+}
+
+/// The dock's width at the side of a wide window, in logical pixels before the UI scale: a
+/// share of the window with a floor (the plot's 300 px and the ghosts' table) and a ceiling.
+pub fn dock_width(window_width: f32) -> f32 {
+    (window_width * 0.34).clamp(350.0, 460.0)
+}
+
+/// A tall window's sheet keeps the scene at least this share of the height.
+pub const SHEET_SHARE: f32 = 0.45;
+
+/// The UI's scale for a window: 1 at the game's own size and above; on a phone a little
+/// smaller, never so small that text cannot be read.
+pub fn ui_scale_for(size: Vec2) -> f32 {
+    (size.min_element() / WINDOW_SIZE.y as f32).clamp(0.85, 1.0)
+}
+
+/// Where the regions' content goes: the plugins that fill them find them by it.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Slot {
+    /// Over the scene, one line: what a player must always see.
+    Status,
+    /// At the status line's end: the switches that must stay in reach (the dock's own).
+    StatusTools,
+    /// Under the scene, one line: how to play.
+    Hint,
+    /// A card's body.
+    Card(Card),
+}
+
+/// A card's title: a button that folds it (the panel presses it, as its other buttons).
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CardButton(pub Card);
+
+/// The node the scene is rendered into.
+#[derive(Component, Debug)]
+pub struct ViewportNode;
+
+/// The dock (the side column or the bottom sheet).
+#[derive(Component, Debug)]
+pub struct Dock;
+
+/// The root of every region.
+#[derive(Component, Debug)]
+struct Regions;
+
+/// A card: its title and its body.
+#[derive(Component, Debug, Clone, Copy)]
+struct CardFrame(Card);
+
+/// The row of tabs a tall window shows above the open card.
+#[derive(Component, Debug)]
+struct Tabs;
+
+/// Where the scene is rendered, in logical window pixels (origin at the top left), as Bevy's
+/// layout last placed the viewport node; `None` before the first layout (and in the headless
+/// game, which has none: the scene then has the whole window).
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
+pub struct SceneViewport(pub Option<Rect>);
+
+/// A card's title button: the same widget in the side column and as a tab.
+fn title_button(card: Card) -> impl Bundle {
+    (
+        Name::new(format!("Card title {}", card.title())),
+        Button,
+        ActivateOnPress,
+        CardButton(card),
+        Node {
+            min_height: px(28),
+            padding: UiRect::axes(px(space::PAD + 2.0), px(4)),
+            align_items: AlignItems::Center,
+            ..default()
+        },
+        BackgroundColor(colour::CARD_TITLE),
+        children![(
+            Text::new(card.title()),
+            theme::text_font(size::TITLE),
+            TextColor(colour::TEXT),
+            Pickable::IGNORE,
+        )],
+    )
+}
+
+fn spawn_regions(mut commands: Commands) {
+    let root = commands
+        .spawn((
+            Name::new("Regions"),
+            Regions,
+            Pickable::IGNORE,
+            Node {
+                width: percent(100),
+                height: percent(100),
+                flex_direction: FlexDirection::Row,
+                ..default()
+            },
+        ))
+        .id();
+    let scene = commands
+        .spawn((
+            Name::new("Scene column"),
+            Pickable::IGNORE,
+            Node {
+                flex_grow: 1.0,
+                flex_shrink: 1.0,
+                flex_basis: px(0),
+                min_width: px(0),
+                min_height: px(0),
+                flex_direction: FlexDirection::Column,
+                ..default()
+            },
+            ChildOf(root),
+        ))
+        .id();
+    let bar = |name: &'static str, slot: Slot| {
+        (
+            Name::new(name),
+            slot,
+            Pickable::IGNORE,
+            Node {
+                padding: UiRect::axes(px(space::PAD + 2.0), px(3)),
+                column_gap: px(space::PAD * 2.0),
+                flex_wrap: FlexWrap::Wrap,
+                align_items: AlignItems::Center,
+                ..default()
+            },
+            BackgroundColor(colour::CARD),
+        )
+    };
+    let status = commands
+        .spawn((
+            Name::new("Status bar"),
+            Pickable::IGNORE,
+            Node {
+                justify_content: JustifyContent::SpaceBetween,
+                align_items: AlignItems::Center,
+                ..default()
+            },
+            BackgroundColor(colour::CARD),
+            ChildOf(scene),
+        ))
+        .id();
+    commands.spawn((bar("Status line", Slot::Status), ChildOf(status)));
+    commands.spawn((
+        Name::new("Status tools"),
+        Slot::StatusTools,
+        Node {
+            flex_shrink: 0.0,
+            ..default()
+        },
+        ChildOf(status),
+    ));
+    // No background: the scene's camera renders under it.
+    commands.spawn((
+        Name::new("Scene viewport"),
+        ViewportNode,
+        Pickable::IGNORE,
+        Node {
+            flex_grow: 1.0,
+            flex_basis: px(0),
+            min_height: px(0),
+            ..default()
+        },
+        ChildOf(scene),
+    ));
+    commands.spawn((bar("Hint line", Slot::Hint), ChildOf(scene)));
+
+    let dock = commands
+        .spawn((
+            Name::new("Dock"),
+            Dock,
+            Node {
+                flex_direction: FlexDirection::Column,
+                flex_shrink: 0.0,
+                overflow: Overflow::scroll_y(),
+                row_gap: px(space::GAP),
+                padding: UiRect::all(px(space::GAP)),
+                ..default()
+            },
+            ChildOf(root),
+        ))
+        .id();
+    let tabs = commands
+        .spawn((
+            Name::new("Tabs"),
+            Tabs,
+            Node {
+                display: Display::None,
+                flex_wrap: FlexWrap::Wrap,
+                column_gap: px(2),
+                row_gap: px(2),
+                flex_shrink: 0.0,
+                ..default()
+            },
+            ChildOf(dock),
+        ))
+        .id();
+    for card in Card::ALL {
+        commands.spawn((title_button(card), ChildOf(tabs)));
+        // The card has no background of its own: a chart in it is drawn under the UI, seen
+        // where no node of the card paints.
+        let frame = commands
+            .spawn((
+                Name::new(format!("Card {}", card.title())),
+                CardFrame(card),
+                Node {
+                    flex_direction: FlexDirection::Column,
+                    flex_shrink: 0.0,
+                    ..default()
+                },
+                ChildOf(dock),
+            ))
+            .id();
+        commands.spawn((title_button(card), ChildOf(frame)));
+        commands.spawn((
+            Name::new(format!("Card body {}", card.title())),
+            Slot::Card(card),
+            Node {
+                display: Display::None,
+                flex_direction: FlexDirection::Column,
+                flex_shrink: 0.0,
+                ..default()
+            },
+            ChildOf(frame),
+        ));
+    }
+}
+
+fn scale_ui_to_window(windows: Query<&Window, With<PrimaryWindow>>, mut scale: ResMut<UiScale>) {
+    for window in &windows {
+        let fit = ui_scale_for(window.size());
+        if scale.0 != fit {
+            scale.0 = fit;
+        }
+    }
+}
+
+/// The regions arranged for the window's shape, and the cards shown, folded or open as
+/// [`Cards`] and the overlays say. Writes only what changed.
+#[allow(clippy::type_complexity)]
+fn arrange(
+    windows: Query<&Window, With<PrimaryWindow>>,
+    cards: Res<Cards>,
+    overlays: Res<Overlays>,
+    mut nodes: ParamSet<(
+        Query<&mut Node, With<Regions>>,
+        Query<&mut Node, With<Dock>>,
+        Query<&mut Node, With<Tabs>>,
+        Query<(&CardFrame, &mut Node)>,
+        Query<(&Slot, &mut Node)>,
+        Query<(&CardButton, &ChildOf, &mut BackgroundColor, &mut Node)>,
+    )>,
+    tabs: Query<(), With<Tabs>>,
+) {
+    let window = windows
+        .iter()
+        .next()
+        .map_or(WINDOW_SIZE.as_vec2(), Window::size);
+    let shape = Shape::of(window);
+    let scale = ui_scale_for(window);
+    let dock_hidden = overlays.hud_hidden;
+    let any_open = Card::ALL
+        .into_iter()
+        .any(|card| cards.body_shows(card, shape, &overlays));
+    let set = |node: &mut Mut<Node>, wanted: &dyn Fn(&mut Node)| {
+        let mut next = (**node).clone();
+        wanted(&mut next);
+        if **node != next {
+            **node = next;
+        }
+    };
+    for mut node in &mut nodes.p0() {
+        set(&mut node, &|n| {
+            n.flex_direction = match shape {
+                Shape::Wide => FlexDirection::Row,
+                Shape::Tall => FlexDirection::Column,
+            };
+        });
+    }
+    for mut node in &mut nodes.p1() {
+        set(&mut node, &|n| {
+            n.display = if dock_hidden {
+                Display::None
+            } else {
+                Display::Flex
+            };
+            match shape {
+                Shape::Wide => {
+                    // Folded, a strip of titles; open, a share of the window.
+                    n.width = if any_open {
+                        px(dock_width(window.x / scale))
+                    } else {
+                        Val::Auto
+                    };
+                    n.height = percent(100);
+                    n.max_height = Val::Auto;
+                }
+                Shape::Tall => {
+                    n.width = percent(100);
+                    n.height = Val::Auto;
+                    n.max_height = percent(SHEET_SHARE * 100.0);
+                }
+            }
+        });
+    }
+    for mut node in &mut nodes.p2() {
+        set(&mut node, &|n| {
+            n.display = match shape {
+                Shape::Wide => Display::None,
+                Shape::Tall => Display::Flex,
+            };
+        });
+    }
+    for (CardFrame(card), mut node) in &mut nodes.p3() {
+        let shown = card.offered(&overlays)
+            && (shape == Shape::Wide || cards.body_shows(*card, shape, &overlays));
+        set(&mut node, &|n| {
+            n.display = if shown { Display::Flex } else { Display::None };
+        });
+    }
+    for (slot, mut node) in &mut nodes.p4() {
+        if let Slot::Card(card) = slot {
+            let shows = cards.body_shows(*card, shape, &overlays);
+            set(&mut node, &|n| {
+                n.display = if shows { Display::Flex } else { Display::None };
+            });
+        }
+    }
+    for (CardButton(card), parent, mut background, mut node) in &mut nodes.p5() {
+        let in_tabs = tabs.contains(parent.parent());
+        // A tall window's card shows under its tab, without its own title.
+        let shown = card.offered(&overlays) && (in_tabs || shape == Shape::Wide);
+        set(&mut node, &|n| {
+            n.display = if shown { Display::Flex } else { Display::None };
+        });
+        let lit = cards.body_shows(*card, shape, &overlays);
+        background.set_if_neq(BackgroundColor(if lit {
+            colour::LIT
+        } else {
+            colour::CARD_TITLE
+        }));
+    }
+}
+
+/// An overlay switched on opens its card (the ghosts' table with G, the plot with P), as a
+/// tall window shows it: alone.
+fn open_cards_switched_on(
+    overlays: Res<Overlays>,
+    windows: Query<&Window, With<PrimaryWindow>>,
+    mut cards: ResMut<Cards>,
+    mut before: Local<Overlays>,
+) {
+    if *overlays == *before {
+        return;
+    }
+    let shape = windows
+        .iter()
+        .next()
+        .map_or(Shape::Wide, |window| Shape::of(window.size()));
+    for (card, on, was) in [
+        (Card::Ghosts, overlays.ghosts, before.ghosts),
+        (Card::Plot, overlays.plot, before.plot),
+    ] {
+        if on && !was && !cards.is_open(card) {
+            cards.toggle(card, shape);
+        }
+    }
+    *before = *overlays;
+}
+
+/// The wheel over the dock scrolls it (over the scene it zooms: the view's). A finger's drag
+/// that starts on the dock scrolls it too.
+fn scroll_the_dock(
+    mut wheel: MessageReader<bevy::input::mouse::MouseWheel>,
+    touches: Res<Touches>,
+    windows: Query<&Window, With<PrimaryWindow>>,
+    ui_scale: Res<UiScale>,
+    mut docks: Query<(&ComputedNode, &UiGlobalTransform, &mut ScrollPosition), With<Dock>>,
+) {
+    let cursor = windows.iter().next().and_then(Window::cursor_position);
+    for event in wheel.read() {
+        let lines = match event.unit {
+            bevy::input::mouse::MouseScrollUnit::Line => event.y * 24.0,
+            bevy::input::mouse::MouseScrollUnit::Pixel => event.y,
+        };
+        for (node, transform, mut scroll) in &mut docks {
+            let rect = window_rect(node, transform, &ui_scale);
+            if cursor.is_some_and(|at| rect.contains(at)) {
+                scroll.0.y = (scroll.0.y - lines).max(0.0);
+            }
+        }
+    }
+    for touch in touches.iter() {
+        let moved = touch.delta().y;
+        for (node, transform, mut scroll) in &mut docks {
+            let rect = window_rect(node, transform, &ui_scale);
+            if moved != 0.0 && rect.contains(touch.start_position()) {
+                scroll.0.y = (scroll.0.y - moved / ui_scale.0).max(0.0);
+            }
+        }
+    }
+}
+
+/// Where Bevy's layout put the viewport node.
+fn publish_viewport(
+    nodes: Query<(&ComputedNode, &UiGlobalTransform), With<ViewportNode>>,
+    ui_scale: Res<UiScale>,
+    mut viewport: ResMut<SceneViewport>,
+) {
+    let Some(rect) = nodes
+        .iter()
+        .map(|(node, transform)| window_rect(node, transform, &ui_scale))
+        .next()
+    else {
+        return;
+    };
+    // No layout yet (or none at all, headless): nothing to say.
+    let placed = (!rect.is_empty()).then_some(rect);
+    if placed.is_some() && viewport.0 != placed {
+        viewport.0 = placed;
+    }
+}

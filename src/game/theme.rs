@@ -1,0 +1,110 @@
+//! One visual language for every text and chart: the fonts, a type scale, a palette and the
+//! spacing, read by the HUD, the panel, the dock and the charts.
+//!
+//! The fonts are DejaVu Sans (text) and DejaVu Sans Mono (figures of one width, so that a
+//! readout's digits keep their place), cut to the characters the game writes
+//! (`assets/fonts/`, with their licence) and compiled into the binary, so that they load the
+//! same way natively and in the browser. The proportional face replaces Bevy's default font
+//! (a 95-glyph ASCII subset with no Greek and no mathematical signs), so every text that
+//! names no font gets it.
+
+use bevy::asset::AssetId;
+use bevy::prelude::*;
+use bevy::text::FontSource;
+
+use crate::physics::Integrator;
+
+pub struct ThemePlugin;
+
+impl Plugin for ThemePlugin {
+    fn build(&self, app: &mut App) {
+        // Before anything spawns text (the layout spawns in `Startup`).
+        app.add_systems(PreStartup, load_fonts);
+    }
+}
+
+const TEXT_FACE: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans-subset.ttf");
+const FIGURES_FACE: &[u8] = include_bytes!("../../assets/fonts/DejaVuSansMono-subset.ttf");
+
+/// The figures' face: a handle of its own, fixed so that a text can name it before it loads.
+pub const FIGURES_FONT: Handle<Font> =
+    bevy::asset::uuid_handle!("5b1c7e2a-9d04-4f6b-8a31-c2e971d03f55");
+
+/// The two faces put in place: the text face as the default font, the figures' face under
+/// [`FIGURES_FONT`]. Without Bevy's text plugin (the headless game) there is nothing to do.
+fn load_fonts(fonts: Option<ResMut<Assets<Font>>>) {
+    let Some(mut fonts) = fonts else {
+        return;
+    };
+    // Both inserts only fail for a handle that is not a UUID's: these are.
+    let _ = fonts.insert(AssetId::default(), Font::from_bytes(TEXT_FACE.to_vec()));
+    let _ = fonts.insert(&FIGURES_FONT, Font::from_bytes(FIGURES_FACE.to_vec()));
+}
+
+/// The type scale, in logical pixels at a UI scale of 1.
+pub mod size {
+    /// A card's title, the status line.
+    pub const TITLE: f32 = 14.0;
+    /// Sentences, buttons, labels.
+    pub const BODY: f32 = 13.0;
+    /// Numbers that change (the readouts, the ghosts' table).
+    pub const READOUT: f32 = 12.0;
+    /// Axis ticks, slider ends, the hint line, chart labels.
+    pub const CAPTION: f32 = 11.0;
+}
+
+/// Spacing, in logical pixels at a UI scale of 1.
+pub mod space {
+    /// Between a card's lines and its edges.
+    pub const PAD: f32 = 6.0;
+    /// Between cards and between regions.
+    pub const GAP: f32 = 4.0;
+}
+
+/// The palette.
+pub mod colour {
+    use bevy::prelude::Color;
+
+    /// The scene's background (the clear colour) and the page around the dock.
+    pub const BACKGROUND: Color = Color::srgb(0.05, 0.055, 0.07);
+    /// A card's body.
+    pub const CARD: Color = Color::srgb(0.11, 0.12, 0.145);
+    /// A card's title bar, and a button at rest.
+    pub const CARD_TITLE: Color = Color::srgb(0.16, 0.17, 0.2);
+    /// A chart's plotting area.
+    pub const CHART: Color = Color::srgb(0.07, 0.075, 0.09);
+    /// A chart's frame and ticks, and the tutorial screen's border.
+    pub const FRAME: Color = Color::srgb(0.3, 0.31, 0.36);
+    pub const TEXT: Color = Color::srgb(0.9, 0.9, 0.92);
+    pub const DIM: Color = Color::srgb(0.62, 0.63, 0.68);
+    pub const WARNING: Color = Color::srgb(1.0, 0.42, 0.32);
+    /// A button whose state is on.
+    pub const LIT: Color = Color::srgb(0.2, 0.42, 0.7);
+    pub const BORDER: Color = Color::srgb(0.35, 0.36, 0.42);
+    pub const TRACK: Color = Color::srgb(0.25, 0.26, 0.3);
+    pub const THUMB: Color = Color::srgb(0.85, 0.85, 0.9);
+    /// The energy graph's lines and the readouts that are its legend.
+    pub const KINETIC: Color = Color::srgb(0.35, 0.75, 1.0);
+    pub const BAND_ENERGY: Color = Color::srgb(1.0, 0.3, 0.8);
+    pub const TOTAL: Color = Color::srgb(1.0, 0.85, 0.2);
+}
+
+/// An integrator's colour, from the core's one table ([`Integrator::colour`]): the same in
+/// the game and the report's figures.
+pub fn method_colour(integrator: Integrator) -> Color {
+    let [r, g, b] = integrator.colour();
+    Color::srgb_u8(r, g, b)
+}
+
+/// Body text in the text face.
+pub fn text_font(size: f32) -> TextFont {
+    TextFont::from_font_size(size)
+}
+
+/// Figures of one width.
+pub fn figures_font(size: f32) -> TextFont {
+    TextFont {
+        font: FontSource::Handle(FIGURES_FONT),
+        ..TextFont::from_font_size(size)
+    }
+}

@@ -1,0 +1,244 @@
+//! The screen's regions, laid out by Bevy's own UI layout (no renderer) at six window sizes,
+//! from a phone held upright to a desktop: with every instrument open and with every one
+//! folded, no two texts meet, no text or control lies on the scene's viewport, everything
+//! lies in the window, and the viewport is the largest region. And the box stays in the
+//! viewport through the tutorial's scripted pull and a hand's pull far past its 640 x 480
+//! screen, read from the scene camera's transform against the body's state.
+
+mod common;
+
+use bevy::ecs::system::RunSystemOnce;
+use bevy::ui::{CalculatedClip, UiGlobalTransform};
+use common::*;
+use rubber_band_box::game::input::pointer::PointerAction;
+use rubber_band_box::game::layout::{Card, Cards, SceneViewport, Shape, shown_texts, visible_rect};
+use rubber_band_box::game::shared::Overlays;
+use rubber_band_box::game::simulation::RenderSnapshots;
+use rubber_band_box::physics::MassProperties;
+
+const SIZES: [UVec2; 6] = [
+    UVec2::new(360, 740),
+    UVec2::new(390, 844),
+    UVec2::new(844, 390),
+    UVec2::new(960, 720),
+    UVec2::new(1280, 800),
+    UVec2::new(1920, 1080),
+];
+
+/// The game with its screen and the layout, the view's own camera replaced by the test's
+/// (which the view places as its own).
+fn laid_out_game() -> Game {
+    let mut game = Game::with(Duration::from_millis(10), |app| {
+        add_the_layout(app);
+        add_the_screen(app);
+    });
+    let world = game.world();
+    let views: Vec<Entity> = world
+        .query::<(Entity, &Name)>()
+        .iter(world)
+        .filter(|(_, name)| name.as_str() == "Camera")
+        .map(|(entity, _)| entity)
+        .collect();
+    world.despawn(views[0]);
+    game
+}
+
+/// Every text shown and every button shown, as the window shows them.
+fn shown(game: &mut Game) -> (Vec<(String, Rect)>, Vec<Rect>) {
+    let world = game.world();
+    let scale = UiScale(world.resource::<UiScale>().0);
+    let texts = world
+        .run_system_once(
+            |scale: Res<UiScale>,
+             texts: Query<(
+                &Text,
+                &ComputedNode,
+                &UiGlobalTransform,
+                Option<&CalculatedClip>,
+            )>| { shown_texts(&texts, &scale) },
+        )
+        .unwrap();
+    let mut buttons = world.query_filtered::<
+        (&ComputedNode, &UiGlobalTransform, Option<&CalculatedClip>),
+        With<bevy::ui_widgets::Button>,
+    >();
+    let buttons = buttons
+        .iter(world)
+        .filter_map(|(node, transform, clip)| visible_rect(node, transform, clip, &scale))
+        .collect();
+    (texts, buttons)
+}
+
+/// Two rectangles share more than an edge.
+fn overlap(a: Rect, b: Rect) -> bool {
+    let cut = a.intersect(b);
+    cut.width() > 0.5 && cut.height() > 0.5
+}
+
+/// Every check of the layout at one size and state; the viewport's share of the window.
+fn check(game: &mut Game, size: UVec2, name: &str) -> f32 {
+    game.update(4);
+    let window = Rect::from_corners(Vec2::ZERO, size.as_vec2());
+    let viewport = game
+        .world()
+        .resource::<SceneViewport>()
+        .0
+        .unwrap_or_else(|| panic!("{name}: the viewport laid out"));
+    let (texts, buttons) = shown(game);
+    assert!(texts.len() >= 3, "{name}: texts shown: {texts:?}");
+    for (i, (text, rect)) in texts.iter().enumerate() {
+        assert!(
+            window.union(rect.inflate(-0.5)) == window,
+            "{name}: {text:?} at {rect:?} leaves the window"
+        );
+        assert!(
+            !overlap(*rect, viewport),
+            "{name}: {text:?} at {rect:?} lies on the scene {viewport:?}"
+        );
+        for (other, other_rect) in &texts[i + 1..] {
+            assert!(
+                !overlap(*rect, *other_rect),
+                "{name}: {text:?} at {rect:?} meets {other:?} at {other_rect:?}"
+            );
+        }
+    }
+    for rect in &buttons {
+        assert!(
+            window.union(rect.inflate(-0.5)) == window,
+            "{name}: a button at {rect:?} leaves the window"
+        );
+        assert!(
+            !overlap(*rect, viewport),
+            "{name}: a button at {rect:?} lies on the scene {viewport:?}"
+        );
+    }
+    viewport.width() * viewport.height() / (window.width() * window.height())
+}
+
+#[test]
+fn at_six_sizes_nothing_meets_and_the_scene_is_the_largest_region() {
+    let mut game = laid_out_game();
+    // Every instrument on: the ghosts, the plot, the vectors and the trail, a pull going on.
+    game.tap_key(KeyCode::KeyP);
+    game.tap_key(KeyCode::KeyV);
+    game.tap_key(KeyCode::KeyT);
+    game.update(1);
+    game.world()
+        .write_message(PointerAction::Press(DVec2::new(200.0, 120.0)));
+    game.update(30);
+    for size in SIZES {
+        game.resize(size);
+        let shape = Shape::of(size.as_vec2());
+        // Folded: every card closed.
+        *game.world().resource_mut::<Cards>() = Cards::default();
+        let folded = check(&mut game, size, &format!("{size} folded"));
+        // Open: on the side every card at once; on a tall window each in turn.
+        let opened: Vec<Vec<Card>> = match shape {
+            Shape::Wide => vec![Card::ALL.to_vec()],
+            Shape::Tall => Card::ALL.iter().map(|card| vec![*card]).collect(),
+        };
+        for cards in opened {
+            let mut state = Cards::default();
+            for card in &cards {
+                state.set(*card, true);
+            }
+            *game.world().resource_mut::<Cards>() = state;
+            let name = format!("{size}, {cards:?} open");
+            let share = check(&mut game, size, &name);
+            let least = match (shape, size.x >= 960) {
+                (Shape::Wide, true) => 0.5,
+                _ => 0.4,
+            };
+            assert!(
+                share >= least,
+                "{name}: the scene has {share:.2} of the window"
+            );
+            assert!(
+                share <= folded + 1e-3,
+                "{name}: folding gives the scene room"
+            );
+        }
+        // Hidden (H): the scene takes the whole window but its two lines.
+        game.world().resource_mut::<Overlays>().hud_hidden = true;
+        let hidden = check(&mut game, size, &format!("{size}, the dock hidden"));
+        assert!(hidden > 0.85, "{size}: hidden, the scene has {hidden:.2}");
+        game.world().resource_mut::<Overlays>().hud_hidden = false;
+    }
+}
+
+/// Where the scene camera puts a world point on the window: its transform and its
+/// projection's scale, in the viewport Bevy's layout gave it.
+fn on_window(game: &mut Game, world_point: Vec2) -> Vec2 {
+    let world = game.world();
+    let viewport = world.resource::<SceneViewport>().0.unwrap();
+    let mut cameras = world.query_filtered::<(&Transform, &Projection), With<SceneCamera>>();
+    let (transform, projection) = cameras.single(world).unwrap();
+    let Projection::Orthographic(orthographic) = projection else {
+        panic!("the scene camera is orthographic");
+    };
+    let offset = (world_point - transform.translation.truncate()) / orthographic.scale;
+    viewport.center() + Vec2::new(offset.x, -offset.y)
+}
+
+/// The box's corners and the band's anchor as drawn this frame, each on the window, and the
+/// viewport: every one inside it.
+fn assert_in_view(game: &mut Game, name: &str) {
+    let world = game.world();
+    let fixed = *world.resource::<Time<bevy::time::Fixed>>();
+    let mut boxes = world.query::<(&RenderSnapshots, &MassProperties)>();
+    let (snapshots, mass) = boxes.single(world).unwrap();
+    let state = snapshots.interpolate(fixed.overstep_fraction_f64().clamp(0.0, 1.0));
+    let mut points: Vec<Vec2> = mass
+        .corners()
+        .iter()
+        .map(|&corner| state.local_to_world(corner).as_vec2())
+        .collect();
+    points.extend(game.bands().iter().map(|band| band.ends.anchor.as_vec2()));
+    let viewport = game.world().resource::<SceneViewport>().0.unwrap();
+    for point in points {
+        let at = on_window(game, point);
+        assert!(
+            viewport.inflate(0.5).contains(at),
+            "{name}: {point} drawn at {at}, out of {viewport:?}"
+        );
+    }
+}
+
+#[test]
+fn the_box_stays_in_view_through_the_tutorials_pull_and_a_long_hand_pull() {
+    for size in [UVec2::new(960, 720), UVec2::new(390, 844)] {
+        let mut game = laid_out_game();
+        game.resize(size);
+        game.tap_key(KeyCode::KeyP);
+        game.update(3);
+        // The tutorial's scene plays its scripted pull.
+        game.tap_key(KeyCode::Digit1);
+        for frame in 0..500 {
+            game.update(1);
+            assert_in_view(
+                &mut game,
+                &format!("{size}, the tutorial's pull, frame {frame}"),
+            );
+        }
+        // A hand pulls the box far past the 640 x 480 screen, holds it there, lets go.
+        game.tap_key(KeyCode::KeyR);
+        game.update(2);
+        game.world()
+            .write_message(PointerAction::Press(DVec2::new(20.0, 20.0)));
+        for frame in 0..400 {
+            let t = (frame as f64 / 100.0).min(1.0);
+            let anchor = DVec2::new(900.0, 650.0) * t;
+            game.world().write_message(PointerAction::Move(anchor));
+            game.update(1);
+            assert_in_view(
+                &mut game,
+                &format!("{size}, the hand's pull, frame {frame}"),
+            );
+        }
+        game.world().write_message(PointerAction::Release);
+        for frame in 0..300 {
+            game.update(1);
+            assert_in_view(&mut game, &format!("{size}, let go, frame {frame}"));
+        }
+    }
+}
