@@ -1,12 +1,20 @@
 // Loads the built site (site/) in headless Chromium with software WebGL2, checks that the
 // page starts without console errors and draws the box, then drags the band with the mouse
 // and checks that the band is drawn while pressed and that the box has moved and turned; the
-// HUD is drawn, and the H key hides it.
+// status line is drawn, and the H key hides the dock of instruments.
 // Replays across platforms: the page steps a fixed replay (tests/fixtures/cross-platform.jsonl)
 // to the hash recorded natively; a game played in the page is saved as a download that the
 // native build (NATIVE_BINARY, `simulate --replay FILE --hash`) steps to the page's hash; and
 // the fixture opened in the page with the O key plays back to its recorded hash. Then the
-// stiff scene (3) with the ghosts (G).
+// stiff scene (3) with the ghosts (G) and the plot (P), the Controls card's buttons, the
+// stability card; last, phones (touch).
+// The window is divided into regions: a scene column (a status line, the scene's viewport, a
+// hint) and a dock of cards, at the side of a wide window, a bottom sheet of a tall one (its
+// titles a row of tabs, one card open at a time). The page publishes where each thing lies
+// (window.rubberBandBox: panel, scene, viewport, texts, box; CSS px), so the test presses what
+// a player presses, waits on what the page says rather than on the clock, and checks the
+// layout from those rectangles: a rectangle does not vary from run to run as a timing or a
+// pixel count does, and a check that fails now and then costs a whole session.
 // Screenshots go to site/screens/. Run: node .ci/web/browser-test.mjs [site-dir]
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
@@ -60,59 +68,390 @@ const browser = await chromium.launch({
 const failures = [];
 const check = (ok, message) => { console.log(`${ok ? "ok  " : "FAIL"} ${message}`); if (!ok) failures.push(message); };
 
+// --- What the page publishes, and rectangles ([x, y, width, height], CSS px). ---
+
+// The dock's cards, in its order, by their titles.
+const CARDS = ["Controls", "Readouts", "Energy", "Ghosts", "Speed against error", "Stability"];
+// Everything the page says about its layout at one moment (one read, so one frame's).
+const api = (p) => p.evaluate(() => {
+  const a = window.rubberBandBox ?? {};
+  return {
+    panel: a.panel ?? {}, scene: a.scene ?? null, viewport: a.viewport ?? null, texts: a.texts ?? null,
+    box: a.box ?? null, width: window.innerWidth, height: window.innerHeight, frame: window.__testFrames ?? 0,
+  };
+});
+// Counts the page's animation frames (Bevy runs one update in each): samples taken in
+// different frames are told apart by it.
+const countFrames = () => {
+  window.__testFrames = 0;
+  const tick = () => { window.__testFrames++; requestAnimationFrame(tick); };
+  requestAnimationFrame(tick);
+};
+// Until the page has drawn `n` more frames.
+const frames = (p, n = 2) => p.evaluate((n) => new Promise((resolve) => {
+  let left = n;
+  const tick = () => (--left <= 0 ? resolve() : requestAnimationFrame(tick));
+  requestAnimationFrame(tick);
+}), n);
+// Until a condition on the page holds (true), or the time is up (false).
+const until = (p, condition, arg = null, timeout = 10000) =>
+  p.waitForFunction(condition, arg, { timeout }).then(() => true, () => false);
+// Until the buttons and the viewport stand still for a frame: a layout settled after a change.
+const settle = async (p, timeout = 5000) => {
+  let before = null;
+  for (const end = Date.now() + timeout; Date.now() < end;) {
+    await frames(p, 2);
+    const now = await p.evaluate(() => JSON.stringify([window.rubberBandBox?.panel, window.rubberBandBox?.viewport]));
+    if (now === before) return true;
+    before = now;
+  }
+  return false;
+};
+const centre = (r) => [r[0] + r[2] / 2, r[1] + r[3] / 2];
+const contains = (r, [x, y], tolerance = 0) =>
+  x >= r[0] - tolerance && x <= r[0] + r[2] + tolerance && y >= r[1] - tolerance && y <= r[1] + r[3] + tolerance;
+// Two rectangles meet when they share more than a sliver (`tolerance` px) each way.
+const meet = (a, b, tolerance = 0.5) =>
+  Math.min(a[0] + a[2], b[0] + b[2]) - Math.max(a[0], b[0]) > tolerance &&
+  Math.min(a[1] + a[3], b[1] + b[3]) - Math.max(a[1], b[1]) > tolerance;
+const fmt = (r) => (r ? `[${r.map((v) => (Array.isArray(v) ? fmt(v) : Number(v).toFixed(1))).join(", ")}]` : String(r));
+const say = (t) => `"${t.text.length > 48 ? t.text.slice(0, 45) + "..." : t.text}" ${fmt(t.rect)}`;
+const wideWindow = (s) => s.width >= s.height;
+const titlesShown = (s) => CARDS.filter((title) => s.panel[title]);
+// The box's centre on the page: the mean of its corners.
+const boxCentre = (s) => s.box?.length ? [0, 1].map((k) => s.box.reduce((sum, c) => sum + c[k], 0) / s.box.length) : null;
+
+// --- Pixels. ---
+
+// The box's fill, sRGB (0.16, 0.42, 0.72), give or take the rasteriser.
+const isBox = (png, i) => Math.abs(png.data[i] - 41) < 30 && Math.abs(png.data[i + 1] - 107) < 30 && Math.abs(png.data[i + 2] - 184) < 30;
+// The band: red turning magenta as it stretches ([255, 0, its length / 2]: a short band's blue
+// is near 0).
+const isBand = (png, i) => png.data[i] > 120 && png.data[i + 1] < 60;
+// Light text (the status line's).
+const isText = (png, i) => png.data[i] > 200 && png.data[i + 1] > 200 && png.data[i + 2] > 200;
+// The warning colour of a text (an integrator past its limit).
+const isWarning = (png, i) => png.data[i] > 200 && png.data[i + 1] > 60 && png.data[i + 1] < 150 && png.data[i + 2] > 30 && png.data[i + 2] < 130;
+// rk4's green, which nothing else in the scene or the plot has. Gizmo lines blend dimmer than
+// their colour, so the hue is looked for (green well above red and blue), not the shade.
+const green = (png, i) => png.data[i + 1] > 50 && png.data[i + 1] > 1.4 * png.data[i] && png.data[i + 1] > 1.4 * png.data[i + 2];
+// The pixels passing `test`, inside `rect` when given (the scene's viewport: the panel's lit
+// buttons share the box's blue, the ghosts' table rk4's green).
+const pixels = (png, test, rect = null) => {
+  const [x0, y0] = rect ? [Math.max(0, Math.floor(rect[0])), Math.max(0, Math.floor(rect[1]))] : [0, 0];
+  const [x1, y1] = rect
+    ? [Math.min(png.width, Math.ceil(rect[0] + rect[2])), Math.min(png.height, Math.ceil(rect[1] + rect[3]))]
+    : [png.width, png.height];
+  const found = [];
+  for (let y = y0; y < y1; y++) for (let x = x0; x < x1; x++) if (test(png, (y * png.width + x) * 4)) found.push([x, y]);
+  return found;
+};
+// A card's title lit: the card shows (a lit title is blue, a folded one grey). Read at its
+// right end, clear of its text.
+const litAt = (png, x, y) => {
+  if (x < 0 || y < 0 || x >= png.width || y >= png.height) return null;
+  const i = (y * png.width + x) * 4;
+  return png.data[i + 2] > 130 && png.data[i + 2] > png.data[i] + 60;
+};
+const litPoint = (r) => [Math.floor(r[0] + r[2] - 5), Math.floor(r[1] + r[3] / 2)];
+const litIn = (png, r) => litAt(png, ...litPoint(r));
+// A world point's place on the page (the scene is where the page draws the tutorial's
+// 640 x 480 screen), a page point's in the world, and the box's area there (a square of 60
+// world px).
+const toWindow = (scene, x, y) => [scene[0] + (x + 320) * scene[2] / 640, scene[1] + (240 - y) * scene[3] / 480];
+const toWorld = (scene, [x, y]) => [(x - scene[0]) * 640 / scene[2] - 320, 240 - (y - scene[1]) * 480 / scene[3]];
+const boxArea = (scene) => (60 * scene[2] / 640) ** 2;
+// The box's fill seen over its area: under 1 uncovered (its outline and pin lie over the
+// fill), less where anything covers it or the viewport cuts it.
+const fillIn = (png, s) => pixels(png, isBox, s.viewport).length / boxArea(s.scene);
+// Centre, and how much of its bounding box the box fills (1 square, 0.5 at 45 degrees).
+const boxPose = (png, rect = null) => {
+  const p = pixels(png, isBox, rect);
+  if (p.length === 0) return null;
+  const xs = p.map((q) => q[0]), ys = p.map((q) => q[1]);
+  const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+  return { x: xs.reduce((a, b) => a + b) / p.length, y: ys.reduce((a, b) => a + b) / p.length, fill: p.length / ((x1 - x0 + 1) * (y1 - y0 + 1)) };
+};
+
+// --- Pressing: a mouse, or a finger (Chrome's touch events). ---
+
+const mouseOf = (p) => ({
+  touch: false,
+  down: async (x, y) => { await p.mouse.move(x, y); await p.mouse.down(); },
+  move: (x, y) => p.mouse.move(x, y),
+  up: () => p.mouse.up(),
+  // A click as a hand makes it: over the button a frame or two first (picking presses what the
+  // pointer hovered in the frame before: a move and a press in one frame can miss), down for a
+  // frame.
+  tap: async (x, y) => {
+    await p.mouse.move(x, y);
+    await frames(p, 2);
+    await p.mouse.down();
+    await frames(p, 1);
+    await p.mouse.up();
+  },
+});
+const fingerOf = (p, cdp) => {
+  const send = (type, touchPoints) => cdp.send("Input.dispatchTouchEvent", { type, touchPoints });
+  return {
+    touch: true,
+    down: (x, y) => send("touchStart", [{ x, y }]),
+    move: (x, y) => send("touchMove", [{ x, y }]),
+    up: () => send("touchEnd", []),
+    // A fingertip rests a moment (a tap of a few frames, as a hand makes).
+    tap: async (x, y) => { await send("touchStart", [{ x, y }]); await p.waitForTimeout(200); await send("touchEnd", []); },
+  };
+};
+
+// The bottom of the scene column's hint (on a tall window the dock starts below it).
+const dockTop = (s) => {
+  if (wideWindow(s) || !s.viewport) return 0;
+  const bottom = s.viewport[1] + s.viewport[3];
+  const hint = (s.texts ?? []).filter((t) => t.rect[1] >= bottom - 1 && t.rect[1] <= bottom + 12);
+  return Math.max(bottom + 20, ...hint.map((t) => t.rect[1] + t.rect[3] + 3));
+};
+// Where to press a button: the page lists a scrolled-away button's rectangle too, but its
+// label's text only where the dock shows it; so the button can be pressed where its text shows
+// across the button's middle.
+const pressPoint = (s, label) => {
+  const r = s.panel[label];
+  if (!r || !s.texts) return null;
+  const y = r[1] + r[3] / 2;
+  const text = s.texts.find((t) => t.text === label && t.rect[1] <= y && t.rect[1] + t.rect[3] >= y &&
+    t.rect[0] >= r[0] - 1 && t.rect[0] + t.rect[2] <= r[0] + r[2] + 1);
+  return text ? [text.rect[0] + text.rect[2] / 2, y] : null;
+};
+// A spot of the dock where a finger may land without pressing a button: a text of a card
+// that lies in no button.
+const dockSpot = (s) => {
+  const v = s.viewport;
+  const buttons = Object.values(s.panel);
+  const top = dockTop(s);
+  return (s.texts ?? []).map((t) => centre(t.rect)).find(([x, y]) =>
+    (wideWindow(s) ? x > v[0] + v[2] + 2 : y > top + 2) && y > 10 && y < s.height - 10 &&
+    !buttons.some((b) => contains(b, [x, y], 2)));
+};
+// Scrolls the dock by `dy` px (positive: what lies below comes into view): a finger's drag
+// from a spot with no button (a finger landing on a button presses it), else the wheel over
+// the dock.
+const scrollDock = async (p, s, dy, pointer) => {
+  const spot = pointer.touch ? dockSpot(s) : null;
+  if (spot) {
+    const [x, y0] = spot;
+    const y1 = Math.max(2, Math.min(s.height - 2, y0 - dy));
+    await pointer.down(x, y0);
+    for (let i = 1; i <= 8; i++) {
+      await pointer.move(x, y0 + (y1 - y0) * i / 8);
+      await p.waitForTimeout(40);
+    }
+    await frames(p, 1);
+    await pointer.up();
+    return;
+  }
+  const v = s.viewport;
+  const at = wideWindow(s) ? [(v[0] + v[2] + s.width) / 2, s.height / 2] : [s.width / 2, (dockTop(s) + s.height) / 2];
+  await p.mouse.move(...at);
+  await p.mouse.wheel(0, dy);
+};
+// Scrolls the dock until the button shows; where to press it, or null.
+const reveal = async (p, label, pointer) => {
+  let sign = 1;
+  for (let attempt = 0; attempt < 8; attempt++) {
+    const s = await api(p);
+    const at = pressPoint(s, label);
+    const r = s.panel[label];
+    if (at || !r || !s.viewport) return at;
+    const y = r[1] + r[3] / 2;
+    const top = dockTop(s);
+    const below = y > (top + s.height) / 2;
+    const amount = Math.min(300, Math.max(60, below ? y - (s.height - 60) : top + 60 - y));
+    await scrollDock(p, s, sign * (below ? amount : -amount), pointer);
+    await frames(p, 3);
+    // The dock went the other way (a wheel's sign): turn.
+    const moved = (await api(p)).panel[label];
+    if (moved && (below ? moved[1] > r[1] + 1 : moved[1] < r[1] - 1)) sign = -sign;
+  }
+  return null;
+};
+// Presses a button of the panel (a card's title, a control), scrolling the dock to it first.
+const pressButton = async (p, label, pointer) => {
+  const at = await reveal(p, label, pointer);
+  if (at) await pointer.tap(...at);
+  return Boolean(at);
+};
+// Whether a card's title is lit (its card shows), read on the page; null if not in view (its
+// text not shown: a title scrolled past the dock's edge may still lie in the window).
+const lit = async (p, title) => {
+  const s = await api(p);
+  const r = s.panel[title];
+  if (!r || !pressPoint(s, title)) return null;
+  const [x, y] = litPoint(r);
+  if (x < 0 || y < 0 || x + 1 > s.width || y + 1 > s.height) return null;
+  const png = PNG.sync.read(await p.screenshot({ clip: { x, y, width: 1, height: 1 }, scale: "css" }));
+  return litAt(png, 0, 0);
+};
+// Opens a card: its title pressed only if it is not lit (a title toggles: a press on an open
+// card's folds it), then until the title is lit. Opening a card can move its title out of view
+// (the dock keeps its scroll, and a longer card lets it show): the title is scrolled back to.
+// Why the latest opening failed, for the message.
+let openFailure = "";
+const openCard = async (p, title, pointer) => {
+  openFailure = "";
+  if (!(await reveal(p, title, pointer))) {
+    openFailure = `${title}: its title not brought into view (${fmt((await api(p)).panel[title])})`;
+    return false;
+  }
+  if (await lit(p, title)) return true;
+  if (!(await pressButton(p, title, pointer))) {
+    openFailure = `${title}: its title not in view to press`;
+    return false;
+  }
+  let seen = null;
+  // Generous: on a busy machine SwiftShader draws a frame a second or slower.
+  for (const end = Date.now() + 30000; Date.now() < end;) {
+    await frames(p, 1);
+    seen = await lit(p, title);
+    if (seen) return true;
+    if (seen === null) await reveal(p, title, pointer);
+  }
+  openFailure = `${title}: pressed, its title ${seen === null ? "out of view" : "not lit"} 30 s later (${fmt((await api(p)).panel[title])})`;
+  return false;
+};
+
+// The layout's rules, read from the texts the page says it shows (a scrolled dock's clipped
+// to what shows): a player must be able to read every text and see the whole scene, so no two
+// texts meet, none lies on the scene's viewport, every one lies in the window; and the scene
+// keeps the largest share of the window.
+const checkLayout = (where, s, share) => {
+  if (!s.texts || !s.viewport) {
+    check(false, `${where}: the page publishes its texts and its viewport (texts ${s.texts ? s.texts.length : s.texts}, viewport ${fmt(s.viewport)})`);
+    return;
+  }
+  const texts = s.texts;
+  const pairs = [];
+  for (let i = 0; i < texts.length; i++) for (let j = i + 1; j < texts.length; j++) {
+    if (meet(texts[i].rect, texts[j].rect)) pairs.push(`${say(texts[i])} and ${say(texts[j])}`);
+  }
+  check(pairs.length === 0, `${where}: no two of the ${texts.length} texts shown meet (by 0.5 px or more both ways)${pairs.length ? `; ${pairs.length} pairs do: ${pairs.slice(0, 8).join("; ")}` : ""}`);
+  const onScene = texts.filter((t) => meet(t.rect, s.viewport));
+  check(onScene.length === 0, `${where}: no text lies on the scene's viewport ${fmt(s.viewport)}${onScene.length ? `; ${onScene.length} do: ${onScene.slice(0, 8).map(say).join("; ")}` : ""}`);
+  const out = texts.filter((t) => !(t.rect[0] >= -0.5 && t.rect[1] >= -0.5 && t.rect[0] + t.rect[2] <= s.width + 0.5 && t.rect[1] + t.rect[3] <= s.height + 0.5));
+  check(out.length === 0, `${where}: every text lies inside the window (${s.width} x ${s.height})${out.length ? `; ${out.length} do not: ${out.slice(0, 8).map(say).join("; ")}` : ""}`);
+  const got = (s.viewport[2] * s.viewport[3]) / (s.width * s.height);
+  check(got >= share, `${where}: the scene's viewport ${fmt(s.viewport)} takes at least ${share} of the window's ${s.width} x ${s.height} (${got.toFixed(3)})`);
+};
+
+// A hand pulls the box out of the frame (from its centre to just inside the viewport's
+// top-right corner, held there): the camera must follow, so every corner of the box lies in
+// the viewport in every frame sampled. Counted on the rectangles the page publishes, in many
+// frames; a sample is counted only in a frame the earlier sample did not see and with the
+// viewport where it was at the earlier sample (the page places the box with the viewport of
+// the frame before).
+const pullOutOfView = async (p, where, pointer, snap) => {
+  const s = await api(p);
+  const from = boxCentre(s);
+  if (!from || !s.viewport) {
+    check(false, `${where}: the page publishes the box's corners and the viewport (box ${fmt(s.box)}, viewport ${fmt(s.viewport)})`);
+    return;
+  }
+  const v = s.viewport;
+  const to = [v[0] + v[2] - 40, v[1] + 40];
+  await pointer.down(...from);
+  for (let i = 1; i <= 10; i++) {
+    await pointer.move(from[0] + (to[0] - from[0]) * i / 10, from[1] + (to[1] - from[1]) * i / 10);
+    await p.waitForTimeout(30);
+  }
+  const outside = [];
+  let [counted, skipped, last] = [0, 0, null];
+  const held = Date.now();
+  while ((counted < 10 || Date.now() - held < 2000) && Date.now() - held < 15000) {
+    await p.waitForTimeout(120);
+    const now = await api(p);
+    if (!last) { last = now; continue; }
+    const steady = JSON.stringify(now.viewport) === JSON.stringify(last.viewport);
+    const fresh = now.frame !== last.frame;
+    last = now;
+    if (!fresh) continue;
+    if (!steady || !now.viewport) { skipped++; continue; }
+    counted++;
+    const off = (now.box ?? []).filter((c) => !contains(now.viewport, c, 1));
+    if (!now.box?.length || off.length) outside.push(`frame ${now.frame}: corners ${fmt(now.box)}, viewport ${fmt(now.viewport)}`);
+  }
+  await snap("pull");
+  await pointer.up();
+  check(counted >= 10 && outside.length === 0,
+    `${where}: a pull from the box's centre ${fmt(from)} held 40 px inside the viewport's top-right corner ${fmt(to)}: every corner of the box inside the viewport (1 px tolerance) in all ${counted} frames sampled (${skipped} skipped, the viewport moving)${outside.length ? `; outside in ${outside.length}: ${outside.slice(0, 4).join("; ")}` : ""}`);
+};
+
+// The box's area on the page: the polygon of its corners (the shoelace formula).
+const polygonArea = (corners) => Math.abs(corners.reduce((sum, [x, y], k) => {
+  const [nx, ny] = corners[(k + 1) % corners.length];
+  return sum + x * ny - nx * y;
+}, 0)) / 2;
+// Whether a point lies inside a convex polygon (the box's corners, in either turn).
+const inPolygon = (corners, [x, y]) => {
+  let sign = 0;
+  for (let k = 0; k < corners.length; k++) {
+    const [ax, ay] = corners[k], [bx, by] = corners[(k + 1) % corners.length];
+    const cross = Math.sign((bx - ax) * (y - ay) - (by - ay) * (x - ax));
+    if (cross !== 0 && sign !== 0 && cross !== sign) return false;
+    if (cross !== 0) sign = cross;
+  }
+  return true;
+};
+
+// A scene's scripted pull played with the Controls card open: in every frame sampled every
+// corner of the box lies in the viewport (the rectangles the page publishes), and the box is
+// drawn there, under nothing: its fill's pixels in the viewport cover most of its area on the
+// page, the polygon of the corners the page publishes for the frame taken (the camera widens
+// to keep the box in view, so the box's size on screen varies). Its outline lies over the
+// fill's edge, and the band's pixels over the box count as the box's.
+const boxAlwaysInView = async (p, snap, samples = 12, least = 0.6) => {
+  let [worst, best] = [Infinity, 0];
+  const outside = [];
+  let [sampled, skipped] = [0, 0];
+  for (let tries = 0; sampled < samples && tries < 3 * samples; tries++) {
+    await p.waitForTimeout(200);
+    const a = await api(p);
+    const png = await snap(`pull-${sampled}`);
+    const b = await api(p);
+    // The frame taken lies between the two reads: counted only if the viewport stayed and the
+    // box's size on the page (the camera's zoom) changed by under 5% between them (a box that
+    // only moved covers as much).
+    const [areaA, areaB] = [a, b].map((s) => (s.box?.length ? polygonArea(s.box) : 0));
+    const same = areaA > 0 && areaB > 0 && Math.abs(areaA - areaB) < 0.05 * areaA && a.viewport && b.viewport &&
+      JSON.stringify(a.viewport) === JSON.stringify(b.viewport);
+    if (!same) { skipped++; continue; }
+    sampled++;
+    for (const s of [a, b]) {
+      const off = s.box.filter((c) => !contains(s.viewport, c, 1));
+      if (off.length) outside.push(`frame ${s.frame}: corners ${fmt(s.box)}, viewport ${fmt(s.viewport)}`);
+    }
+    const area = (areaA + areaB) / 2;
+    const xs = b.box.map((c) => c[0]), ys = b.box.map((c) => c[1]);
+    const bounds = [Math.min(...xs), Math.min(...ys), Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys)];
+    const crossing = pixels(png, isBand, bounds).filter((q) => inPolygon(b.box, [q[0] + 0.5, q[1] + 0.5])).length;
+    const seen = (pixels(png, isBox, b.viewport).length + crossing) / area;
+    [worst, best] = [Math.min(worst, seen), Math.max(best, seen)];
+  }
+  return {
+    ok: sampled >= samples / 2 && outside.length === 0 && worst >= least,
+    said: `${sampled} frames, ${skipped} skipped as the camera zoomed while taken; every corner in the viewport${outside.length ? ` but in ${outside.length} frames: ${outside.slice(0, 3).join("; ")}` : ""}; its fill ${(100 * worst).toFixed(0)}% to ${(100 * best).toFixed(0)}% of its area on the page, the corners' polygon (at least ${100 * least}% wanted)`,
+  };
+};
+
 try {
   const width = 960, height = 720;
   const page = await browser.newPage({ viewport: { width, height } });
+  await page.addInitScript(countFrames);
   const errors = [];
   page.on("console", (m) => { if (m.type() === "error") errors.push(m.text()); });
   page.on("pageerror", (e) => { if (!String(e).includes("Using exceptions for control flow")) errors.push(String(e)); });
+  const mouse = mouseOf(page);
 
   const shot = async (name) => {
     const buffer = await page.screenshot({ path: path.join(screens, `${name}.png`) });
     return PNG.sync.read(buffer);
-  };
-  // The box's fill, sRGB (0.16, 0.42, 0.72), give or take the rasteriser.
-  const isBox = (png, i) => Math.abs(png.data[i] - 41) < 30 && Math.abs(png.data[i + 1] - 107) < 30 && Math.abs(png.data[i + 2] - 184) < 30;
-  // The band: red turning magenta as it stretches.
-  const isBand = (png, i) => png.data[i] > 120 && png.data[i + 1] < 60 && png.data[i + 2] > 30;
-  const pixels = (png, test) => {
-    const found = [];
-    for (let y = 0; y < png.height; y++) for (let x = 0; x < png.width; x++) if (test(png, (y * png.width + x) * 4)) found.push([x, y]);
-    return found;
-  };
-  // Where the page draws the tutorial's 640 x 480 screen (CSS px: x, y, width, height), a world
-  // point's place on the page, and the box's area there (a square of 60 world px).
-  const sceneOn = (p) => p.evaluate(() => window.rubberBandBox?.scene ?? null);
-  const toWindow = (scene, x, y) => [scene[0] + (x + 320) * scene[2] / 640, scene[1] + (240 - y) * scene[3] / 480];
-  const boxArea = (scene) => (60 * scene[2] / 640) ** 2;
-  // The box's fill inside the scene's rectangle (the panel's lit buttons and the HUD's
-  // blue text share its colour), and that over the box's area: under 1 uncovered (its outline
-  // and pin lie over the fill, a larger part of a smaller box), less where anything covers it.
-  const inScene = (scene) => ([x, y]) => !scene || (x >= scene[0] && x <= scene[0] + scene[2] && y >= scene[1] && y <= scene[1] + scene[3]);
-  const boxInScene = (png, scene) => pixels(png, isBox).filter(inScene(scene)).length;
-  const fillIn = (png, scene) => boxInScene(png, scene) / boxArea(scene);
-  // A scene's scripted pull played with the panel open: in every frame sampled the whole box
-  // is in view, under neither the panel nor the HUD (either would hide or darken its fill).
-  // Returns the least and the most of the box's area seen (the box starts at the scene's
-  // centre, in view): the least must be near the most. The band's pixels over the box count
-  // as the box's; the energy graph's thin lines and the box's outline are what else varies.
-  const boxAlwaysInView = async (p, snap, name, samples = 12) => {
-    let [worst, best] = [Infinity, 0];
-    for (let i = 0, tries = 0; i < samples && tries < 3 * samples; i++, tries++) {
-      await p.waitForTimeout(200);
-      const scene = await sceneOn(p);
-      const png = await snap(`pull-${i}`);
-      // The scene moved while the frame was taken (a HUD line grew): look again.
-      if (!scene || JSON.stringify(scene) !== JSON.stringify(await sceneOn(p))) { i--; continue; }
-      // The band crosses the box: its pixels inside the box's bounds count as the box's.
-      const box = pixels(png, isBox).filter(inScene(scene));
-      const [xs, ys] = [box.map((p) => p[0]), box.map((p) => p[1])];
-      const bounds = box.length ? [Math.min(...xs), Math.min(...ys), Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys)] : null;
-      const crossing = bounds ? pixels(png, isBand).filter(inScene(bounds)).length : 0;
-      const seen = (box.length + crossing) / boxArea(scene);
-      [worst, best] = [Math.min(worst, seen), Math.max(best, seen)];
-    }
-    return { worst, best, ok: best > 0.5 && worst > 0.75 * best, said: `${(100 * worst).toFixed(0)}% to ${(100 * best).toFixed(0)}% of its area seen` };
   };
   // The mean time between the page's animation frames over 2 s (Bevy draws in each).
   const frameMs = (p) => p.evaluate(() => new Promise((resolve) => {
@@ -125,68 +464,79 @@ try {
     };
     requestAnimationFrame(tick);
   }));
-  // Centre, and how much of its bounding box the box fills (1 square, 0.5 at 45 degrees).
-  const boxPose = (png, scene = null) => {
-    const p = pixels(png, isBox).filter(inScene(scene));
-    if (p.length === 0) return null;
-    const xs = p.map((q) => q[0]), ys = p.map((q) => q[1]);
-    const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
-    return { x: xs.reduce((a, b) => a + b) / p.length, y: ys.reduce((a, b) => a + b) / p.length, fill: p.length / ((x1 - x0 + 1) * (y1 - y0 + 1)) };
-  };
+  // The same layout in two reads: the viewport exactly (the layout's), the scene nearly (the
+  // camera eases, and an eased float need not come to rest exactly).
+  const near = (a, b, tolerance) => Boolean(a && b && a.length === b.length && a.every((v, k) => Math.abs(v - b[k]) <= tolerance));
+  const sameLayout = (a, b) => near(a.scene, b.scene, 0.5) && JSON.stringify(a.viewport) === JSON.stringify(b.viewport);
 
   const started = Date.now();
   await page.goto(url);
   let first = null;
   for (let i = 0; i < 600 && !first; i++) {
-    // The box, a square of 60 world px, most of it in view where the scene is drawn (fitted
-    // to what the panel and the HUD leave free, centred there; the page says where, and the
+    // The box, a square of 60 world px, most of it in view where the scene is drawn (the
+    // tutorial's screen fitted to the viewport, centred there; the page says where, and the
     // frame is taken where it said so before and after).
-    const scene = await sceneOn(page);
+    const s = await api(page);
     const png = await shot("first-frame");
-    const still = JSON.stringify(scene) === JSON.stringify(await sceneOn(page));
-    const pose = scene && boxPose(png, scene);
-    if (still && pose && fillIn(png, scene) > 0.5) first = { png, pose, scene };
+    const still = sameLayout(s, await api(page));
+    const pose = still && s.scene && s.viewport && boxPose(png, s.viewport);
+    if (pose && fillIn(png, s) > 0.5) first = { png, pose, s };
     else await page.waitForTimeout(100);
   }
   const firstFrameMs = Date.now() - started;
   const firstFrameBytes = transferred;
-  const middle = first && toWindow(first.scene, 0, 0);
+  const middle = first && toWindow(first.s.scene, 0, 0);
   check(first !== null && Math.hypot(first.pose.x - middle[0], first.pose.y - middle[1]) < 20,
     `the box is drawn at the scene's centre (at ${first && [first.pose.x.toFixed(0), first.pose.y.toFixed(0)]}, the scene's at ${middle?.map((v) => v.toFixed(0))}; first frame after ${firstFrameMs} ms, ${firstFrameBytes} bytes transferred)`);
-  // The HUD: light text in the top-left corner. H hides it (and the energy graph), so that
-  // the pixel checks below see only the scene.
-  const isText = (png, i) => png.data[i] > 200 && png.data[i + 1] > 200 && png.data[i + 2] > 200;
-  const hudPixels = (png) => pixels(png, isText).filter(([x, y]) => x < 480 && y < 180).length;
-  const hud = first ? hudPixels(first.png) : 0;
-  check(hud > 500, `the HUD is drawn (${hud} text pixels top left)`);
+  // The status line: light text above the viewport (the page says where its texts lie; the
+  // dock's "instruments" switch stands at its end).
+  let status = { count: 0, texts: [] };
+  for (let i = 0; i < 10 && first && status.count <= 40; i++) {
+    const s = i === 0 ? first.s : await api(page);
+    const png = i === 0 ? first.png : await shot("status-line");
+    const texts = (s.texts ?? []).filter((t) => s.viewport && t.rect[1] + t.rect[3] <= s.viewport[1] + 0.5 && t.text !== "instruments");
+    status = { count: texts.reduce((n, t) => n + pixels(png, isText, t.rect).length, 0), texts };
+    if (status.count <= 40) await page.waitForTimeout(200);
+  }
+  check(status.count > 40, `the status line is drawn above the scene (${status.count} light text pixels in ${status.texts.map(say).join(", ") || "no text above the viewport"})`);
+  // H hides the dock: the scene takes the window.
   await page.focus("canvas");
+  const docked = await api(page);
   await page.keyboard.press("h");
-  await page.waitForTimeout(500);
-  const hidden = hudPixels(await shot("hud-hidden"));
-  check(hidden < 20, `H hides the HUD (${hidden} text pixels left)`);
-  const before = boxPose(await shot("before"));
+  const hidden = await until(page, () => !window.rubberBandBox?.panel?.Controls);
+  await settle(page);
+  const undocked = await api(page);
+  await shot("dock-hidden");
+  const edge = undocked.viewport ? undocked.viewport[0] + undocked.viewport[2] + 0.5 : -Infinity;
+  const stray = (undocked.texts ?? []).filter((t) => t.rect[0] + t.rect[2] > edge);
+  check(hidden && titlesShown(undocked).length === 0 && stray.length === 0 && undocked.viewport?.[2] > docked.viewport?.[2],
+    `H hides the dock: no card's title listed (${titlesShown(undocked).join(", ") || "none"}), no text right of the scene${stray.length ? ` (${stray.slice(0, 4).map(say).join("; ")})` : ""}, the viewport wider (${fmt(docked.viewport)} to ${fmt(undocked.viewport)})`);
+  const before = boxPose(await shot("before"), undocked.viewport);
 
-  // Press well right of and above the box, look while pressed, then drag on.
-  await page.mouse.move(width / 2 + 330, height / 2 - 250);
-  await page.mouse.down();
-  await page.mouse.move(width / 2 + 320, height / 2 - 240);
+  // Press well right of and above the box (inside the tutorial's screen, placed through the
+  // scene the page reports), look while pressed, then drag on toward the box.
+  const pressedAt = (x, y) => toWindow(undocked.scene, x, y);
+  await mouse.down(...pressedAt(250, 185));
+  const [from, to] = [pressedAt(242, 178), pressedAt(90, 106)];
+  await page.mouse.move(...from);
   const pressed = await shot("pressed");
   for (let i = 1; i <= 10; i++) {
-    await page.mouse.move(width / 2 + 320 - 20 * i, height / 2 - 240 + 10 * i);
+    await page.mouse.move(from[0] + (to[0] - from[0]) * i / 10, from[1] + (to[1] - from[1]) * i / 10);
     await page.waitForTimeout(50);
   }
-  const band = pixels(pressed, isBand).length;
+  const band = pixels(pressed, isBand, undocked.viewport).length;
   check(band > 30, `the band is drawn while pressed (${band} band pixels)`);
   await page.mouse.up();
   // A turning square lines up with the axes now and then: look several times.
   const poses = [];
   for (let i = 0; i < 6; i++) {
     await page.waitForTimeout(250);
-    poses.push(boxPose(await shot(`released-${i}`)));
+    const png = await shot(`released-${i}`);
+    poses.push(boxPose(png, (await api(page)).viewport));
   }
   const after = poses.filter(Boolean).reduce((a, b) => (b.fill < a.fill ? b : a), { fill: 2 });
   await page.waitForTimeout(500);
-  const afterBand = pixels(await shot("later"), isBand).length;
+  const afterBand = pixels(await shot("later"), isBand, (await api(page)).viewport).length;
   check(afterBand < 5, `the band is gone after release (${afterBand} band pixels)`);
 
   const last = poses.filter(Boolean).at(-1);
@@ -201,12 +551,14 @@ try {
   const inPage = await page.evaluate((text) => window.rubberBandBox?.replayHash(text), fixtureText);
   check(inPage === nativeHash, `the fixture replay steps in the page to the native bits (hash ${inPage}, native ${nativeHash})`);
 
-  // A stiffer band, another integrator, a second pull; then S saves the game as a download.
+  // A stiffer band, another integrator, a second pull (from the lower left toward the
+  // centre); then S saves the game as a download.
   for (const key of ["]", "]", "i"]) await page.keyboard.press(key);
-  await page.mouse.move(width / 2 - 300, height / 2 + 200);
-  await page.mouse.down();
+  const second = await api(page);
+  const [pullFrom, pullTo] = [toWindow(second.scene, -225, -150), toWindow(second.scene, 15, 30)];
+  await mouse.down(...pullFrom);
   for (let i = 1; i <= 8; i++) {
-    await page.mouse.move(width / 2 - 300 + 40 * i, height / 2 + 200 - 30 * i);
+    await page.mouse.move(pullFrom[0] + (pullTo[0] - pullFrom[0]) * i / 8, pullFrom[1] + (pullTo[1] - pullFrom[1]) * i / 8);
     await page.waitForTimeout(40);
   }
   await page.mouse.up();
@@ -232,6 +584,7 @@ try {
   }
 
   // O opens a file chooser; the fixture chosen plays back in the page to its recorded bits.
+  // H shows the dock again.
   const [chooser] = await Promise.all([page.waitForEvent("filechooser", { timeout: 10000 }), page.keyboard.press("o")]);
   await chooser.setFiles(fixture);
   await page.waitForTimeout(1500);
@@ -242,156 +595,283 @@ try {
   check(ended?.matched === true && ended?.hash === nativeHash,
     `the fixture opened in the page plays back to its recorded bits (${JSON.stringify(ended)})`);
   await shot("playback-over");
+  await until(page, () => Boolean(window.rubberBandBox?.panel?.Controls));
 
   // The lab: 3 loads the stiff scene, G shows the ghosts (each integrator's outline in its
-  // colour). Gizmo lines blend dimmer than their colour, so the hue is looked for: rk4's
-  // green, which nothing else on screen has.
-  const green = (png, i) => png.data[i + 1] > png.data[i] + 40 && png.data[i + 1] > png.data[i + 2] + 40;
+  // colour) and opens their card. rk4's green is looked for in the viewport only (the ghosts'
+  // table has rk4's row in it).
   await page.keyboard.press("3");
   await page.waitForTimeout(1000);
-  const withoutGhosts = pixels(await shot("stiff-scene"), green).length;
+  const withoutGhosts = pixels(await shot("stiff-scene"), green, (await api(page)).viewport).length;
   const plainFrame = await frameMs(page);
   await page.keyboard.press("g");
-  await page.waitForTimeout(1500);
+  await until(page, () => Boolean(window.rubberBandBox?.panel?.Ghosts));
+  await page.waitForTimeout(1000);
   // rk4's outline can lie under the box and the other ghosts in any one frame (it follows the
   // box closely): the most of it seen in three frames 0.4 s apart.
   let rk4 = 0;
   for (const i of [0, 1, 2]) {
     if (i > 0) await page.waitForTimeout(400);
-    rk4 = Math.max(rk4, pixels(await shot(i === 0 ? "ghosts" : `ghosts-${i}`), green).length);
+    const png = await shot(i === 0 ? "ghosts" : `ghosts-${i}`);
+    rk4 = Math.max(rk4, pixels(png, green, (await api(page)).viewport).length);
   }
-  check(rk4 > 50 && withoutGhosts < 5, `G draws the ghosts on the stiff scene (at most ${rk4} pixels of rk4's green in three frames, ${withoutGhosts} before G)`);
-  // P plots them: each ghost a point in its colour, with its name, inside the plot's frame at
-  // the left of the scene (world x -312..-92, y -105..25).
-  const plotScene = await sceneOn(page);
-  const [plotLeft, plotTop] = toWindow(plotScene, -312, 25);
-  const [plotRight, plotBottom] = toWindow(plotScene, -92, -105);
-  const inPlot = (png, i) => {
-    const x = (i / 4) % png.width, y = Math.floor(i / 4 / png.width);
-    return x >= plotLeft && x <= plotRight && y >= plotTop && y <= plotBottom && green(png, i);
-  };
-  const beforePlot = pixels(await shot("ghosts-no-plot"), inPlot).length;
+  check(rk4 > 50 && withoutGhosts < 5, `G draws the ghosts on the stiff scene (at most ${rk4} pixels of rk4's green in the viewport in three frames, ${withoutGhosts} before G)`);
+  // P plots them in their card ("Speed against error"): each ghost a point in its colour,
+  // with its name. rk4's green is looked for in the card, under its title down to the next
+  // card's title, in up to three frames.
+  const noPlotCard = !(await api(page)).panel["Speed against error"];
   await page.keyboard.press("p");
-  await page.waitForTimeout(1500);
-  const plotted = pixels(await shot("plot"), inPlot).length;
-  check(plotted > 10 && beforePlot < 5, `P plots the ghosts (${plotted} pixels of rk4's green in the plot's frame, ${beforePlot} before P)`);
+  await until(page, () => Boolean(window.rubberBandBox?.panel?.["Speed against error"]));
+  await settle(page);
+  let plotted = 0, plotArea = null;
+  for (const i of [0, 1, 2]) {
+    if (plotted > 10) break;
+    if (i > 0) await page.waitForTimeout(400);
+    const s = await api(page);
+    const png = await shot(i === 0 ? "plot" : `plot-${i}`);
+    const title = s.panel["Speed against error"];
+    if (!title) continue;
+    const next = CARDS.map((t) => s.panel[t]).filter((r) => r && r[1] > title[1]).map((r) => r[1]);
+    const bottom = Math.min(s.height, ...next);
+    plotArea = [title[0], title[1] + title[3], title[2], bottom - title[1] - title[3]];
+    plotted = Math.max(plotted, pixels(png, green, plotArea).length);
+  }
+  check(plotted > 10 && noPlotCard, `P plots the ghosts in their card (at most ${plotted} pixels of rk4's green in the card ${fmt(plotArea)} in three frames; ${noPlotCard ? "no" : "a"} plot card before P)`);
   // A figure, not a check: the page's frame time with the lab on and off, side by side.
   const labFrame = await frameMs(page);
   console.log(`frame time (stiff scene, software WebGL): ${plainFrame.toFixed(1)} ms without the lab, ${labFrame.toFixed(1)} ms with ghosts, plot and stability line (${(labFrame / plainFrame).toFixed(2)}x)`);
   await page.keyboard.press("p");
-  // The panel (bottom right): "controls" unfolds it, a scene button loads that scene (its
-  // scripted band is drawn), pause stops the box. The page says where each button lies.
   await page.keyboard.press("g");
-  const buttons = () => page.evaluate(() => window.rubberBandBox?.panel ?? {});
-  const centre = (r) => [r[0] + r[2] / 2, r[1] + r[3] / 2];
-  let places = await buttons();
-  check(Boolean(places.controls), `the panel's button is on screen (${JSON.stringify(places.controls)})`);
-  if (places.controls) {
-    await page.mouse.click(...centre(places.controls));
-    await page.waitForTimeout(500);
-    places = await buttons();
-    await page.mouse.click(...centre(places.tutorial));
-    await page.waitForTimeout(600);
-    const scripted = pixels(await shot("panel-scene"), isBand).length;
-    check(scripted > 30, `the panel's "tutorial" loads the scene: its scripted band is drawn (${scripted} band pixels)`);
-    const pull = await boxAlwaysInView(page, (label) => shot(`desktop-${label}`));
-    check(pull.ok, `desktop: the tutorial's pull played with the panel open, the box fully in view in every frame sampled (${pull.said})`);
-    await page.mouse.click(...centre(places.pause));
-    await page.waitForTimeout(400);
-    const [a, b] = [boxPose(await shot("panel-paused")), (await page.waitForTimeout(700), boxPose(await shot("panel-paused-later")))];
-    const drift = a && b ? Math.hypot(a.x - b.x, a.y - b.y) : Infinity;
-    check(drift < 0.5, `the panel's "pause" stops the box (moved ${drift.toFixed(2)} px in 0.7 s)`);
-    places = await buttons();
-    check(Boolean(places.resume), `the pause button now says "resume"`);
-    if (places.resume) await page.mouse.click(...centre(places.resume));
+  await until(page, () => !window.rubberBandBox?.panel?.Ghosts);
+
+  // The Controls card: its title unfolds it, a scene button loads that scene (its scripted
+  // band is drawn), pause stops the box, the title folds it again. The page says where each
+  // button lies, and the mouse clicks there.
+  let places = (await api(page)).panel;
+  check(Boolean(places.Controls), `the Controls card's title is on screen (${fmt(places.Controls)})`);
+  if (places.Controls) {
+    const opened = await openCard(page, "Controls", mouse);
+    const listed = await until(page, () => Boolean(window.rubberBandBox?.panel?.pause));
+    check(opened && listed, `clicking the "Controls" title opens its card (title lit: ${opened}; its "pause" listed: ${listed})`);
+    await settle(page);
+    if (await pressButton(page, "tutorial", mouse)) {
+      // The script pulls from its first step: the band is looked for in the viewport in frames
+      // 200 ms apart, for up to 4 s.
+      let [scripted, looks] = [0, 0];
+      for (const end = Date.now() + 4000; scripted <= 30 && Date.now() < end; looks++) {
+        await page.waitForTimeout(200);
+        const s = await api(page);
+        scripted = Math.max(scripted, pixels(await shot("panel-scene"), isBand, s.viewport).length);
+      }
+      check(scripted > 30, `the Controls card's "tutorial" loads the scene: its scripted band is drawn (${scripted} band pixels, the most in ${looks} frames)`);
+      const pull = await boxAlwaysInView(page, (label) => shot(`desktop-${label}`));
+      check(pull.ok, `desktop: the tutorial's pull played with the Controls card open, the box fully in view in every frame sampled (${pull.said})`);
+    } else {
+      check(false, `the Controls card's "tutorial" is on screen (${fmt((await api(page)).panel.tutorial)})`);
+    }
+    // Paused, the box stands still in the world (the camera may still ease: the world's
+    // coordinates are read back through the scene's place).
+    await pressButton(page, "pause", mouse);
+    const resumes = await until(page, () => Boolean(window.rubberBandBox?.panel?.resume));
+    await shot("panel-paused");
+    const a = await api(page);
+    await page.waitForTimeout(700);
+    const b = await api(page);
+    await shot("panel-paused-later");
+    const [wa, wb] = [a, b].map((s) => (s.box && s.scene ? s.box.map((c) => toWorld(s.scene, c)) : null));
+    const drift = wa && wb && wa.length === wb.length ? Math.max(...wa.map((c, k) => Math.hypot(c[0] - wb[k][0], c[1] - wb[k][1]))) : Infinity;
+    check(drift < 0.5, `the Controls card's "pause" stops the box (its corners moved ${drift.toFixed(3)} world px in 0.7 s)`);
+    check(resumes, `the pause button now says "resume"`);
+    if (resumes) await pressButton(page, "resume", mouse);
+    await until(page, () => Boolean(window.rubberBandBox?.panel?.pause));
+    await pressButton(page, "Controls", mouse);
+    const folded = await until(page, () => !window.rubberBandBox?.panel?.pause && !window.rubberBandBox?.panel?.resume);
+    check(folded, `clicking the "Controls" title again folds its card (its buttons no longer listed)`);
   }
 
-  // The stability line: explicit Euler at the tutorial's k holds (its damping outweighs its
+  // The stability card: explicit Euler at the tutorial's k holds (its damping outweighs its
   // growth up to k = 221 at 100 Hz, 530 at the 240 Hz set above); three presses of ] make k
-  // 2e4 (and two, if a slow frame swallows one, 2000), past it, and the HUD's stability line
-  // turns red (at k = 20 nothing of the HUD is).
-  const isWarning = (png, i) => png.data[i] > 200 && png.data[i + 1] > 60 && png.data[i + 1] < 150 && png.data[i + 2] > 30 && png.data[i + 2] < 130;
-  const warnings = (png) => pixels(png, isWarning).filter(([x, y]) => x < 900 && y < 240).length;
-  // One key a frame or so: two presses within one frame count once.
-  const key = async (k) => { await page.keyboard.press(k); await page.waitForTimeout(350); };
-  await key("1");
-  await key("i");
+  // 2e4, past it, and the stability line turns red (at k = 20 it is not), and says so. Each
+  // key waits on the status line ("euler · k 20 · 240 Hz · ..."): a key pressed again before
+  // the game has read the last would be lost (two presses within one frame count once).
+  const stabilityOpen = await openCard(page, "Stability", mouse);
+  const stabilityLine = async (name) => {
+    const png = await shot(name);
+    const s = await api(page);
+    const line = (s.texts ?? []).find((t) => t.text.startsWith("stability"));
+    const around = line && [line.rect[0] - 2, line.rect[1] - 2, line.rect[2] + 4, line.rect[3] + 4];
+    return { line, red: around ? pixels(png, isWarning, around).length : 0 };
+  };
+  const statusLine = async () => ((await api(page)).texts ?? []).find((t) => / · k \S+ · /.test(t.text))?.text ?? "";
+  const statusK = (line) => Number(line.match(/ · k (\S+) · /)?.[1]);
+  const statusIntegrator = (line) => line.split(" · ")[0];
+  const statusTime = (line) => Number(line.match(/ · t (\S+) s/)?.[1]);
+  // Presses a key once and waits until the status line says what it did (true), or for 5 s.
+  const sent = [];
+  const pressFor = async (k, done) => {
+    const before = await statusLine();
+    sent.push(k);
+    await page.keyboard.press(k);
+    for (const end = Date.now() + 5000; Date.now() < end;) {
+      await frames(page, 1);
+      if (done(await statusLine(), before)) return true;
+    }
+    return false;
+  };
+  const toIntegrator = async (name) => {
+    for (let i = 0; i < 8 && statusIntegrator(await statusLine()) !== name; i++) {
+      await pressFor("i", (now, before) => statusIntegrator(now) !== statusIntegrator(before));
+    }
+    return statusIntegrator(await statusLine()) === name;
+  };
+  const stiffer = (factor) => (now, before) => Math.abs(statusK(now) / statusK(before) - factor) < 1e-6 * factor;
+  // The keys go to the canvas (a click on a card's title leaves the focus there anyway).
+  await page.focus("canvas");
+  // A fresh tutorial (its clock starts over), with explicit Euler.
+  const fresh = await pressFor("1", (now, before) => statusTime(now) < statusTime(before));
+  const euler = await toIntegrator("euler");
   await page.waitForTimeout(300);
-  const holding = warnings(await shot("stability-holds"));
-  for (let i = 0; i < 3; i++) await key("]");
-  const past = warnings(await shot("stability-past"));
-  check(past > 30 && holding < 5, `the stability line warns before a blow-up (${past} red pixels past euler's limit, ${holding} at k = 20)`);
-  for (let i = 0; i < 3; i++) await key("[");
-  for (let i = 0; i < 6; i++) await key("i");
+  const holding = await stabilityLine("stability-holds");
+  const kBefore = statusK(await statusLine());
+  let stiffened = 0;
+  for (let i = 0; i < 3; i++) if (await pressFor("]", stiffer(10))) stiffened++;
+  const kAfter = statusK(await statusLine());
+  // The line is rewritten once a frame: until it says so, for up to 5 s, then its colour.
+  await until(page, () => (window.rubberBandBox?.texts ?? []).some((t) => t.text.startsWith("stability") && t.text.includes("UNSTABLE")), null, 5000);
+  await frames(page, 2);
+  const past = await stabilityLine("stability-past");
+  check(past.red > 30 && holding.red < 5 && /UNSTABLE/.test(past.line?.text ?? ""),
+    `the stability card warns before a blow-up (card opened: ${stabilityOpen || openFailure}; tutorial reloaded: ${fresh}; euler: ${euler}; k ${kBefore} to ${kAfter} by ${stiffened} of 3 presses of ], keys sent: ${sent.join(" ")}; ${past.red} red pixels past euler's limit in ${past.line ? say(past.line) : "no stability line"}; ${holding.red} at k = 20 in ${holding.line ? say(holding.line) : "no stability line"})`);
+  for (let i = 0; i < 3; i++) await pressFor("[", stiffer(0.1));
+  await toIntegrator("auto");
+  // A fresh tutorial: past euler's limit the box may have diverged.
+  await pressFor("1", (now, before) => statusTime(now) < statusTime(before));
 
+  // The desktop's layout with the lab on (G, P) and every card open: the texts and the
+  // viewport by the rules above; then a hand's pull out of the frame.
+  await page.keyboard.press("g");
+  await until(page, () => Boolean(window.rubberBandBox?.panel?.Ghosts));
+  await page.keyboard.press("p");
+  await until(page, () => Boolean(window.rubberBandBox?.panel?.["Speed against error"]));
+  // From the bottom up: a card opened above pushes down the titles below it.
+  const unopened = [];
+  for (const title of [...CARDS].reverse()) if (!(await openCard(page, title, mouse))) unopened.push(openFailure);
+  await settle(page);
+  const lab = await api(page);
+  const labPng = await shot("desktop-lab");
+  const dark = titlesShown(lab).filter((t) => litIn(labPng, lab.panel[t]) === false);
+  check(unopened.length === 0 && dark.length === 0, `desktop: every card opens, any number at once (not opened: ${unopened.join(", ") || "none"}; titles in view not lit: ${dark.join(", ") || "none"})`);
+  checkLayout("desktop 960 x 720, the lab on, every card open", lab, 0.5);
+  await pullOutOfView(page, "desktop", mouse, (label) => shot(`desktop-lab-${label}`));
 
-  // Phones, held upright and turned (CSS pixels, touch): the
-  // HUD, the graph and the folded panel leave the box uncovered; a finger drags it; a tap
-  // unfolds the panel, which still leaves the box in view.
-  for (const [name, w, h] of [["phone-portrait", 390, 844], ["phone-landscape", 844, 390]]) {
+  // Phones, held upright and turned (CSS pixels, touch): the box is in view and uncovered; a
+  // finger drags it; a tap on the Controls card's title (a tab on a tall window) opens it,
+  // which still leaves the box in view, and its "tutorial" plays that scene's pull in view;
+  // then the lab (the Controls card's "plot": the ghosts and the plot) with its layout
+  // checked, each tab in turn on the upright phone, and a finger's pull out of the frame. The
+  // smaller upright phone gets the lab's checks only, to keep the run short (the layout's
+  // rules at every size and with every card open are the native layout test's).
+  for (const [name, w, h, full] of [["phone-390", 390, 844, true], ["phone-360", 360, 740, false], ["phone-landscape", 844, 390, true]]) {
+    const where = `${name} (${w} x ${h})`;
+    const tall = h > w;
     const context = await browser.newContext({ viewport: { width: w, height: h }, hasTouch: true, isMobile: true, deviceScaleFactor: 1 });
     const phone = await context.newPage();
+    await phone.addInitScript(countFrames);
     phone.on("pageerror", (e) => { if (!String(e).includes("Using exceptions for control flow")) errors.push(String(e)); });
     const snap = async (label) => PNG.sync.read(await phone.screenshot({ path: path.join(screens, `${name}-${label}.png`), scale: "css" }));
+    // The box's share seen, once the scene stands still across the frame taken (or as last
+    // seen, if it never does).
+    const seenNow = async (label) => {
+      let seen = 0;
+      for (let i = 0; i < 10; i++) {
+        const s = await api(phone);
+        const png = await snap(label).catch(() => null);
+        if (png && s.scene && s.viewport) seen = fillIn(png, s);
+        if (png && s.scene && s.viewport && sameLayout(s, await api(phone))) break;
+        await phone.waitForTimeout(150);
+      }
+      return seen;
+    };
     await phone.goto(url);
-    // The scene fits the tutorial's 640 x 480 in what the HUD and the panel leave free: the
-    // box's side is 60 of those.
+    // The scene fits the tutorial's 640 x 480 in the viewport: the box's side is 60 of those.
     let start = null, scale = 1, previous = null;
     for (let i = 0; i < 300 && !start; i++) {
-      // A page still starting may not be captured yet, nor its scene settled where the HUD
-      // leaves room (a frame drawn before it may still be on screen): try again.
-      const scene = await sceneOn(phone);
-      const settled = scene && JSON.stringify(scene) === JSON.stringify(previous);
-      previous = scene;
+      // A page still starting may not be captured yet, nor its layout settled (a frame drawn
+      // before it may still be on screen): try again.
+      const s = await api(phone);
+      const settled = s.scene && s.viewport && sameLayout(s, previous ?? {});
+      previous = s;
       if (settled) await phone.waitForTimeout(500);
       const png = settled && await snap("start").catch(() => null);
-      const pose = png && boxPose(png, scene);
-      if (scene) scale = scene[2] / 640;
-      if (pose && fillIn(png, scene) > 0.5) start = { pose, seen: fillIn(png, scene) };
+      const pose = png && boxPose(png, s.viewport);
+      if (s.scene) scale = s.scene[2] / 640;
+      if (pose && fillIn(png, s) > 0.5) start = { pose, seen: fillIn(png, s) };
       else await phone.waitForTimeout(100);
     }
-    check(start !== null, `${name}: the box is in view and uncovered (${(100 * (start?.seen ?? 0)).toFixed(0)}% of its area seen)`);
+    check(start !== null, `${where}: the box is in view and uncovered (${(100 * (start?.seen ?? 0)).toFixed(0)}% of its area seen)`);
     if (!start) { await context.close(); continue; }
-    const cdp = await context.newCDPSession(phone);
-    const touch = (type, x, y) => cdp.send("Input.dispatchTouchEvent", { type, touchPoints: type === "touchEnd" ? [] : [{ x, y }] });
-    // To the left, clear of the graph (top right) and the panel (bottom right).
-    const [x0, y0] = [start.pose.x - 60 * scale, start.pose.y];
-    await touch("touchStart", x0, y0);
-    for (let i = 1; i <= 10; i++) {
-      await touch("touchMove", x0 - 6 * i, y0);
-      await phone.waitForTimeout(40);
-    }
-    await touch("touchEnd");
-    await phone.waitForTimeout(800);
-    const after = boxPose(await snap("dragged"), await sceneOn(phone));
-    const moved = after ? Math.hypot(after.x - start.pose.x, after.y - start.pose.y) : 0;
-    check(moved > 5 * scale, `${name}: a finger drags the box (${moved.toFixed(1)} px)`);
-    const places = await phone.evaluate(() => window.rubberBandBox?.panel ?? {});
-    if (places.controls) {
-      // A fingertip rests a moment (a tap of a few frames, as a hand makes).
-      await touch("touchStart", ...centre(places.controls));
-      await phone.waitForTimeout(200);
-      await touch("touchEnd");
-      await phone.waitForTimeout(800);
-      // Folded, the body's buttons take no room.
-      const open = await phone.evaluate(() => (window.rubberBandBox?.panel?.pause?.[2] ?? 0) > 0);
-      check(open, `${name}: a tap unfolds the panel`);
-      // The panel must leave the box uncovered.
-      const seen = fillIn(await snap("panel-open"), await sceneOn(phone));
-      check(seen > 0.85 * start.seen, `${name}: with the panel open the box is uncovered (${(100 * seen).toFixed(0)}% of its area seen, ${(100 * start.seen).toFixed(0)}% at the start)`);
-      // The tutorial's scripted pull, the panel open: the box stays in view throughout.
-      const tutorial = (await phone.evaluate(() => window.rubberBandBox?.panel ?? {})).tutorial;
-      if (tutorial) {
-        await touch("touchStart", ...centre(tutorial));
-        await phone.waitForTimeout(200);
-        await touch("touchEnd");
-        const pull = await boxAlwaysInView(phone, snap);
-        check(pull.ok, `${name}: the tutorial's pull played with the panel open, the box fully in view in every frame sampled (${pull.said})`);
-      } else {
-        check(false, `${name}: the panel's "tutorial" is on screen`);
+    const finger = fingerOf(phone, await context.newCDPSession(phone));
+    if (full) {
+      // To the left.
+      const [x0, y0] = [start.pose.x - 60 * scale, start.pose.y];
+      await finger.down(x0, y0);
+      for (let i = 1; i <= 10; i++) {
+        await finger.move(x0 - 6 * i, y0);
+        await phone.waitForTimeout(40);
       }
-    } else {
-      check(false, `${name}: the panel's button is on screen`);
+      await finger.up();
+      await phone.waitForTimeout(800);
+      const png = await snap("dragged");
+      const after = boxPose(png, (await api(phone)).viewport);
+      const moved = after ? Math.hypot(after.x - start.pose.x, after.y - start.pose.y) : 0;
+      check(moved > 5 * scale, `${where}: a finger drags the box (${moved.toFixed(1)} px)`);
+    }
+    const titled = Boolean((await api(phone)).panel.Controls);
+    const opened = titled && await openCard(phone, "Controls", finger);
+    const listed = opened && await until(phone, () => Boolean(window.rubberBandBox?.panel?.pause));
+    check(opened && listed, `${where}: a tap on the "Controls" ${tall ? "tab" : "title"} opens its card (title on screen: ${titled}; lit: ${opened}; its "pause" listed: ${listed})`);
+    if (!opened) { await context.close(); continue; }
+    await settle(phone);
+    if (full) {
+      // The Controls card must leave the box uncovered.
+      const seen = await seenNow("panel-open");
+      check(seen > 0.85 * start.seen, `${where}: with the Controls card open the box is uncovered (${(100 * seen).toFixed(0)}% of its area seen, ${(100 * start.seen).toFixed(0)}% at the start)`);
+      // The tutorial's scripted pull, the card open: the box stays in view throughout.
+      if (await pressButton(phone, "tutorial", finger)) {
+        const pull = await boxAlwaysInView(phone, snap);
+        check(pull.ok, `${where}: the tutorial's pull played with the Controls card open, the box fully in view in every frame sampled (${pull.said})`);
+      } else {
+        check(false, `${where}: the Controls card's "tutorial" is on screen (${fmt((await api(phone)).panel.tutorial)})`);
+      }
+    }
+    // The lab: "plot" turns the ghosts and the plot on and opens their cards (on a tall
+    // window the plot's alone).
+    const plotted = await pressButton(phone, "plot", finger) &&
+      await until(phone, () => Boolean(window.rubberBandBox?.panel?.["Speed against error"]));
+    const plotShown = plotted && await openCard(phone, "Speed against error", finger);
+    check(plotShown, `${where}: the Controls card's "plot" opens the plot's card (plot's title listed: ${plotted}; lit: ${plotShown})`);
+    await settle(phone);
+    const lab = await api(phone);
+    await snap(tall ? "lab-plot" : "lab");
+    checkLayout(`${where}, the lab on, ${tall ? "the plot's tab open" : "the Controls, Ghosts and plot cards open"}`, lab, 0.4);
+    await pullOutOfView(phone, where, finger, (label) => snap(`lab-${label}`));
+    if (tall && full) {
+      // Each tab in turn: its card opens alone, and the layout's rules hold with it.
+      for (const title of CARDS.filter((t) => t !== "Speed against error")) {
+        const slug = title.toLowerCase().replace(/[^a-z]+/g, "-");
+        // Opened (its tab seen lit), the tabs in view (a long card may have scrolled them away).
+        const shown = await openCard(phone, title, finger);
+        const why = openFailure;
+        await settle(phone);
+        await reveal(phone, title, finger);
+        await settle(phone);
+        const s = await api(phone);
+        const png = await snap(`lab-${slug}`);
+        const inView = titlesShown(s).filter((t) => pressPoint(s, t) && litIn(png, s.panel[t]) !== null);
+        const litTabs = inView.filter((t) => litIn(png, s.panel[t]));
+        check(shown && litTabs.length === 1 && litTabs[0] === title, `${where}: a tap on the "${title}" tab shows its card alone (opened: ${shown ? "yes" : why}; lit tabs: ${litTabs.join(", ") || "none"} of the ${inView.length} in view)`);
+        checkLayout(`${where}, the lab on, the "${title}" tab open`, s, 0.4);
+      }
     }
     await context.close();
   }
