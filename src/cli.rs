@@ -13,7 +13,10 @@ use clap::{Args, Parser, Subcommand};
 use crate::game;
 use crate::game::play::PlayOptions;
 use crate::measure::simulate::{ReplayJob, SimulateError, write_replay, write_run};
-use crate::physics::{AutoSettings, BodyState, Integrator, Pull, Run, Scenario, SceneParams};
+use crate::physics::{
+    AutoSettings, BodyState, Integrator, MIN_STEP, Pull, Run, STEP_RATE_RANGE, Scenario,
+    SceneParams,
+};
 use crate::replay::Replay;
 
 #[derive(Parser, Debug)]
@@ -42,8 +45,8 @@ pub struct PlayArgs {
     #[arg(long, value_parser = parse_integrator,
           help = format!("Integrator to start with (the I key cycles them): {}", integrator_help()))]
     pub integrator: Option<Integrator>,
-    /// Fixed physics steps per second.
-    #[arg(long, value_parser = positive)]
+    /// Fixed physics steps per second, from 8 to 4096 (the game's range).
+    #[arg(long, value_parser = playable_step_rate)]
     pub step_rate: Option<f64>,
     /// Record the game and save it to FILE when the game ends (the window closed, Ctrl-C or
     /// SIGTERM), as a replay for `simulate --replay`.
@@ -52,6 +55,11 @@ pub struct PlayArgs {
     /// Play a replay back (its scene, settings and hand); a press takes over.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["integrator", "step_rate"])]
     pub replay: Option<PathBuf>,
+    /// Open a link (docs/links.md): a whole address, or its query and fragment
+    /// ('?scene=stiff&integrator=rk4&ghosts=on', '#replay=...'). What it cannot set is named
+    /// on stderr and the rest is opened.
+    #[arg(long, value_name = "LINK", conflicts_with_all = ["integrator", "step_rate", "replay"])]
+    pub link: Option<String>,
 }
 
 #[derive(Args, Debug)]
@@ -62,8 +70,9 @@ pub struct SimulateArgs {
     pub scene: Scenario,
     #[arg(long, value_parser = parse_integrator, help = integrator_help())]
     pub integrator: Option<Integrator>,
-    /// Fixed step in seconds.
-    #[arg(long, default_value_t = 0.01, value_parser = positive, allow_hyphen_values = true)]
+    /// Fixed step in seconds, at least a microsecond (wider than the game's range, for
+    /// convergence studies; no clock keeps a shorter step).
+    #[arg(long, default_value_t = 0.01, value_parser = step, allow_hyphen_values = true)]
     pub dt: f64,
     /// Number of steps.
     #[arg(long, default_value_t = 600, allow_hyphen_values = true)]
@@ -221,6 +230,28 @@ fn positive(text: &str) -> Result<f64, String> {
     }
 }
 
+/// A step no shorter than [`MIN_STEP`].
+fn step(text: &str) -> Result<f64, String> {
+    let value = positive(text)?;
+    if value >= MIN_STEP {
+        Ok(value)
+    } else {
+        Err(format!(
+            "must be at least {MIN_STEP:e} s (no clock keeps a shorter step), got {value:e}"
+        ))
+    }
+}
+
+/// A step rate the game keeps (`physics::STEP_RATE_RANGE`).
+fn playable_step_rate(text: &str) -> Result<f64, String> {
+    let value = parse_number(text)?;
+    if STEP_RATE_RANGE.contains(value) {
+        Ok(value)
+    } else {
+        Err(format!("must be {STEP_RATE_RANGE}, got {value}"))
+    }
+}
+
 fn non_negative(text: &str) -> Result<f64, String> {
     let value = parse_number(text)?;
     if value >= 0.0 {
@@ -295,6 +326,7 @@ pub fn run(cli: Cli) -> ExitCode {
             step_rate: args.step_rate,
             record: args.record,
             replay: args.replay,
+            link: args.link,
         }),
         Some(Command::Simulate(args)) => match simulate(&args, io::stdout().lock()) {
             Ok(()) => ExitCode::SUCCESS,

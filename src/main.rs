@@ -10,11 +10,16 @@ fn main() -> ExitCode {
     rubber_band_box::cli::run(rubber_band_box::cli::Cli::parse())
 }
 
-/// The web build has no command line: it plays.
+/// The web build has no command line: it plays what its address says.
 #[cfg(target_arch = "wasm32")]
 fn main() -> ExitCode {
     use rubber_band_box::game::play::{PlayOptions, play};
-    match play(&PlayOptions::default()) {
+    // The page's address is a link (docs/links.md).
+    let options = PlayOptions {
+        link: Some(rubber_band_box::game::web::page_address()),
+        ..PlayOptions::default()
+    };
+    match play(&options) {
         Ok(()) => ExitCode::SUCCESS,
         Err(_) => ExitCode::from(2),
     }

@@ -244,7 +244,8 @@ fn an_initial_state_out_of_bounds_and_a_sub_normal_dt_are_refused_as_arguments()
             &["--init", "1e11,0,0,1e11,0,0", "--k", "1e300"],
             "initial energy",
         ),
-        (&["--dt", "1e-310"], "dt must be"),
+        (&["--dt", "1e-310"], "at least 1e-6 s"),
+        (&["--dt", "1e-7"], "at least 1e-6 s"),
     ];
     for (args, message) in cases {
         let output = simulate(args);

@@ -19,7 +19,7 @@ use rubber_band_box::game::input::controls;
 use rubber_band_box::game::input::pointer::Grip;
 use rubber_band_box::game::simulation::{ForceAccumulator, RigidBox, Tap};
 use rubber_band_box::physics::{
-    AngularState, BodyState, Integrator, LinearState, Pull, Run, SceneParams, Stepper,
+    AngularState, BodyState, Integrator, LinearState, MIN_STEP, Pull, Run, SceneParams, Stepper,
     kinetic_energy,
 };
 
@@ -162,8 +162,9 @@ proptest! {
 proptest! {
     #![proptest_config(cases(40_000))]
 
-    /// Validation accepts exactly the domain: mass, size, rate finite and positive; k, b, c
-    /// finite and not negative. Nothing panics either way.
+    /// Validation accepts exactly the domain: mass, size, rate finite and positive, the rate
+    /// at most a step a microsecond; k, b, c finite and not negative. Nothing panics either
+    /// way.
     #[test]
     fn validation_accepts_exactly_the_domain(
         values in prop::collection::vec(
@@ -187,6 +188,7 @@ proptest! {
         let inertia = params.mass * (params.size.x.powi(2) + params.size.y.powi(2)) / 12.0;
         let valid = positive(params.mass) && positive(params.size.x) && positive(params.size.y)
             && positive(inertia) && positive(params.step_rate_hz)
+            && params.step_rate_hz <= 1.0 / MIN_STEP
             && non_negative(params.stiffness) && non_negative(params.linear_damping)
             && non_negative(params.angular_damping);
         prop_assert_eq!(params.validate().is_ok(), valid);

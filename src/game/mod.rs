@@ -12,7 +12,7 @@
 //! - [`simulation`]: the physics plugin that steps the core in `FixedUpdate`;
 //! - [`input`]: the pointer, the keys and the on-screen panel, which all send actions;
 //! - [`replays`]: the game's side of replays and scenes: recording, playback, the scenes on
-//!   the number keys;
+//!   the number keys, links opened and shared;
 //! - [`ghosts`]: every integrator and a reference stepping beside the live box;
 //! - [`stability`]: each integrator's distance from instability at the present settings;
 //! - [`hud`]: the heads-up display's text, its energy history and the window title;
@@ -54,6 +54,7 @@ impl Plugin for GameLogicPlugin {
             replays::recording::RecordingPlugin,
             replays::playback::PlaybackPlugin,
             replays::scenes::ScenesPlugin,
+            replays::links::LinksPlugin,
             ghosts::GhostsPlugin,
             stability::StabilityPlugin,
             input::panel::PanelPlugin,

@@ -1,5 +1,5 @@
 //! Starting the game: the play command's options checked and put in place (the step rate
-//! and integrator, a replay to play back, a file to record to), then Bevy's plugins, the
+//! and integrator, a replay to play back, a file to record to, a link to open), then Bevy's plugins, the
 //! window and the game's. [`prepare`] is the part a test can call: it needs no window.
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -10,7 +10,9 @@ use bevy_prototype_lyon::prelude::ShapePlugin;
 
 use super::GamePlugin;
 use super::layout::WINDOW_SIZE;
+use super::replays::links::PendingLink;
 use crate::physics::{Integrator, SceneParams};
+use crate::replay::Link;
 
 /// How to start the game: `play`'s options on the command line, the defaults on the web.
 #[derive(Debug, Default, Clone)]
@@ -23,17 +25,34 @@ pub struct PlayOptions {
     /// Play this replay back; a press takes over.
     #[cfg(not(target_arch = "wasm32"))]
     pub replay: Option<PathBuf>,
+    /// Open this link (docs/links.md): `play --link`, or the page's own address.
+    pub link: Option<String>,
 }
 
 /// The game's starting resources from `options`, inserted into `app` before its plugins: the
-/// scene's parameters, the integrator, a replay to play back, a recorder and its file. Every
-/// option is checked first: a bad one is refused with a message and `app` is left untouched.
+/// scene's parameters, the integrator, a replay to play back, a recorder and its file, a link
+/// to open. Every option is checked first, against the game's ranges: a bad one is refused
+/// with a message and `app` is left untouched. A link is taken in part: what it cannot set is
+/// said on the status line (and natively on stderr) and the rest is opened.
 pub fn prepare(app: &mut App, options: &PlayOptions) -> Result<(), String> {
     let mut params = SceneParams::tutorial();
     if let Some(rate) = options.step_rate {
         params.step_rate_hz = rate;
     }
-    params.validate().map_err(|error| error.to_string())?;
+    params.check_playable().map_err(|error| error.to_string())?;
+    let link = options
+        .link
+        .as_deref()
+        .map(Link::parse)
+        .and_then(|(link, problems)| {
+            let problems: Vec<String> = problems.iter().map(ToString::to_string).collect();
+            #[cfg(not(target_arch = "wasm32"))]
+            for problem in &problems {
+                eprintln!("warning: link: {problem}");
+            }
+            (link != Link::default() || !problems.is_empty())
+                .then_some(PendingLink { link, problems })
+        });
     // A replay (native only) may start with others.
     #[cfg_attr(target_arch = "wasm32", allow(unused_mut))]
     let mut integrator = options.integrator.unwrap_or_default();
@@ -42,7 +61,13 @@ pub fn prepare(app: &mut App, options: &PlayOptions) -> Result<(), String> {
         use super::replays::{playback::Playback, recording::Recorder};
         use super::shared::SceneName;
         let playback = match &options.replay {
-            Some(path) => Some(crate::replay::Replay::read_file(path)?),
+            Some(path) => {
+                let replay = crate::replay::Replay::read_file(path)?;
+                replay
+                    .check_playable()
+                    .map_err(|error| format!("{}: {error}", path.display()))?;
+                Some(replay)
+            }
             None => None,
         };
         if let Some(target) = &options.record {
@@ -62,6 +87,29 @@ pub fn prepare(app: &mut App, options: &PlayOptions) -> Result<(), String> {
         }
     }
     app.insert_resource(params).insert_resource(integrator);
+    if let Some(link) = link {
+        app.insert_resource(link);
+    }
+    Ok(())
+}
+
+/// Natively on Linux and the BSDs the window needs an X server (the game is built for X11
+/// only): without one, say so and what runs instead, rather than Bevy's panic.
+#[cfg(all(unix, not(target_os = "macos"), not(target_arch = "wasm32")))]
+fn check_display() -> Result<(), String> {
+    match std::env::var_os("DISPLAY") {
+        Some(display) if !display.is_empty() => Ok(()),
+        _ => Err(
+            "no display to open the game's window on (DISPLAY is not set): `simulate` \
+                  runs the physics without one, and the web build plays in a browser \
+                  (docs/web.md)"
+                .to_owned(),
+        ),
+    }
+}
+
+#[cfg(not(all(unix, not(target_os = "macos"), not(target_arch = "wasm32"))))]
+fn check_display() -> Result<(), String> {
     Ok(())
 }
 
@@ -101,6 +149,7 @@ pub fn window() -> Window {
 pub fn play(options: &PlayOptions) -> Result<(), String> {
     let mut app = App::new();
     prepare(&mut app, options)?;
+    check_display()?;
     #[cfg(all(unix, not(target_arch = "wasm32")))]
     if options.record.is_some() {
         // A process-wide signal handler: installed by the game that plays, not by `prepare`.

@@ -40,7 +40,7 @@ impl Plugin for SimulationPlugin {
             // The step rate can change during play (a control): applied before the loop.
             .add_systems(
                 RunFixedMainLoop,
-                apply_step_rate
+                (apply_step_rate, apply_mass)
                     .run_if(resource_changed::<SceneParams>)
                     .in_set(GameSystems::ApplySettings),
             )
@@ -227,6 +227,16 @@ pub fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) 
             params.step_rate_hz,
             time.timestep()
         ),
+    }
+}
+
+/// The box's mass and size as the scene's parameters say (the mass slider, a link): its
+/// state kept. A valid scene only reaches here (the controls refuse the rest).
+pub fn apply_mass(params: Res<SceneParams>, mut boxes: Query<&mut MassProperties, With<RigidBox>>) {
+    if let Ok(wanted) = params.mass_properties() {
+        for mut mass in &mut boxes {
+            mass.set_if_neq(wanted);
+        }
     }
 }
 

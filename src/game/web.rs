@@ -79,6 +79,20 @@ export function publish_texts(json) {
   api().texts = JSON.parse(json);
 }
 
+export function page_address() {
+  return window.location.href;
+}
+
+export function share_link(query) {
+  const url = window.location.href.split(/[?#]/)[0] + query;
+  try {
+    history.replaceState(null, "", url);
+  } catch (error) {}
+  navigator.clipboard?.writeText(url).catch(() => {});
+  api().link = url;
+  return url;
+}
+
 export function publish_box(json) {
   api().box = JSON.parse(json);
 }
@@ -120,6 +134,14 @@ extern "C" {
     /// `window.rubberBandBox.texts`: every text shown, `{ text, rect: [x, y, width, height] }`
     /// (CSS pixels; the part a scrolled dock shows).
     pub fn publish_texts(json: &str);
+
+    /// The page's address: the game opens the link it is (`replay::link`).
+    pub fn page_address() -> String;
+
+    /// `query` (`?v=1&...#replay=...`) on the page's address: made the address shown, copied
+    /// to the clipboard where the browser allows, kept as `window.rubberBandBox.link`. The
+    /// whole address.
+    pub fn share_link(query: &str) -> String;
 
     /// `window.rubberBandBox.box`: the box's corners on the page, `[[x, y], ...]` (CSS pixels).
     pub fn publish_box(json: &str);

@@ -21,7 +21,10 @@ pub use body::{AngularState, BodyState, LinearState, MassProperties, rotate};
 pub use energy::{Energies, EnergyLedger, kinetic_energy};
 pub use forces::{BandEnds, ForceModel, Forces, Wrench, angular_momentum_about, damping_wrench};
 pub use integrators::{AutoSettings, Integrator, StepInfo, UnknownIntegrator, symplectic_euler};
-pub use param_error::ParamError;
+pub use param_error::{ParamError, Range};
 pub use scenario::{Diverged, Pull, Run, Scenario};
-pub use scene::{SCENE_SIZE, SceneParams};
+pub use scene::{
+    ANGULAR_DAMPING_RANGE, LINEAR_DAMPING_RANGE, MASS_RANGE, MIN_STEP, SCENE_SIZE, SIZE_RANGE,
+    STEP_RATE_RANGE, STIFFNESS_RANGE, SceneParams, TIME_SCALE_RANGE,
+};
 pub use stepper::Stepper;

@@ -8,7 +8,7 @@ use std::fmt;
 pub struct ParamError {
     pub field: &'static str,
     pub value: f64,
-    pub requirement: &'static str,
+    pub requirement: String,
 }
 
 impl ParamError {
@@ -19,7 +19,7 @@ impl ParamError {
             Err(Self {
                 field,
                 value,
-                requirement: "a finite number greater than zero",
+                requirement: "a finite number greater than zero".to_owned(),
             })
         }
     }
@@ -31,9 +31,67 @@ impl ParamError {
             Err(Self {
                 field,
                 value,
-                requirement: "a finite number, zero or more",
+                requirement: "a finite number, zero or more".to_owned(),
             })
         }
+    }
+    /// `value` within `range` (a finite number, ends included); the requirement names the ends.
+    pub fn check_within(field: &'static str, value: f64, range: &Range) -> Result<(), Self> {
+        if range.contains(value) {
+            Ok(())
+        } else {
+            Err(Self {
+                field,
+                value,
+                requirement: range.to_string(),
+            })
+        }
+    }
+}
+
+/// A closed range a value must lie in, with its unit (empty for none).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Range {
+    pub low: f64,
+    pub high: f64,
+    pub unit: &'static str,
+}
+
+impl Range {
+    pub const fn new(low: f64, high: f64, unit: &'static str) -> Self {
+        Self { low, high, unit }
+    }
+
+    /// Whether `value` lies in it (never for NaN).
+    pub fn contains(&self, value: f64) -> bool {
+        self.low <= value && value <= self.high
+    }
+
+    /// `value` brought inside (NaN to the low end).
+    pub fn clamp(&self, value: f64) -> f64 {
+        if value.is_nan() {
+            self.low
+        } else {
+            value.clamp(self.low, self.high)
+        }
+    }
+}
+
+/// "from 8 to 4096 Hz".
+impl fmt::Display for Range {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let end = |value: f64| {
+            if value == 0.0 || (1e-2..1e5).contains(&value.abs()) {
+                format!("{value}")
+            } else {
+                format!("{value:e}")
+            }
+        };
+        write!(f, "from {} to {}", end(self.low), end(self.high))?;
+        if !self.unit.is_empty() {
+            write!(f, " {}", self.unit)?;
+        }
+        Ok(())
     }
 }
 

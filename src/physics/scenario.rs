@@ -273,7 +273,7 @@ impl Run {
             return Err(ParamError {
                 field: "dt",
                 value: dt,
-                requirement: "a step whose rate 1/dt is finite (not sub-normal)",
+                requirement: "a step whose rate 1/dt is finite (not sub-normal)".to_owned(),
             });
         }
         let mut stepper = Stepper::new(params)?;
@@ -285,7 +285,7 @@ impl Run {
             return Err(ParamError {
                 field: "each component of the initial state",
                 value: bad,
-                requirement: "finite and within 1e12 of zero",
+                requirement: "finite and within 1e12 of zero".to_owned(),
             });
         }
         stepper.state = initial;
@@ -306,7 +306,7 @@ impl Run {
             return Err(ParamError {
                 field: "the initial energy",
                 value: run.energy_budget,
-                requirement: "finite (a state, band and k this large overflow it)",
+                requirement: "finite (a state, band and k this large overflow it)".to_owned(),
             });
         }
         Ok(run)

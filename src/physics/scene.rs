@@ -7,7 +7,7 @@ use bevy::prelude::Resource;
 use super::body::MassProperties;
 use super::forces::{BandEnds, ForceModel};
 use super::maths;
-use super::param_error::ParamError;
+use super::param_error::{ParamError, Range};
 
 /// The tutorial runs one update per frame at this rate; its per-frame constants convert to
 /// per-second ones through it.
@@ -18,6 +18,26 @@ pub const SCENE_SIZE: DVec2 = DVec2::new(640.0, 480.0);
 
 /// The tutorial's angular damping: ω is multiplied by this every frame.
 pub const TUTORIAL_ANGULAR_FACTOR: f64 = 0.98;
+
+/// The ranges the game keeps. Its controls stay inside them, and every other way into the game
+/// (`play`'s flags, a replay opened, a link) is held to them ([`SceneParams::check_playable`]).
+/// The panel's sliders span them; docs/links.md lists them.
+pub const STEP_RATE_RANGE: Range = Range::new(8.0, 4096.0, "Hz");
+pub const STIFFNESS_RANGE: Range = Range::new(1e-2, 1e12, "");
+pub const MASS_RANGE: Range = Range::new(1e-3, 1e3, "");
+/// The box's width and height: the game never changes them; a replay may not exceed them.
+pub const SIZE_RANGE: Range = Range::new(1.0, 640.0, "px");
+/// The coefficient b.
+pub const LINEAR_DAMPING_RANGE: Range = Range::new(0.0, 50.0, "");
+/// The rate c.
+pub const ANGULAR_DAMPING_RANGE: Range = Range::new(0.0, 20.0, "/s");
+/// How fast the game's clock runs against the wall's: slow motion to fast forward.
+pub const TIME_SCALE_RANGE: Range = Range::new(1.0 / 16.0, 16.0, "");
+
+/// The shortest step anything takes, the game or not (`simulate` and `report` keep wider
+/// ranges than the game for convergence studies): no clock keeps a shorter one, and a replay
+/// or a command line asking for it is refused. Bevy's fixed clock counts whole nanoseconds.
+pub const MIN_STEP: f64 = 1e-6;
 
 /// Physical parameters of the scene, in world units (logical pixels, seconds, mass units).
 #[derive(Resource, Clone, Copy, Debug, PartialEq)]
@@ -56,15 +76,43 @@ impl SceneParams {
         1.0 / self.step_rate_hz
     }
 
-    /// Checks every field: mass, size and step rate finite and positive; k, b and c finite and
-    /// not negative. The error names the first bad field and its value.
+    /// Checks every field: mass, size and step rate finite and positive, the step no shorter
+    /// than [`MIN_STEP`]; k, b and c finite and not negative. The error names the first bad
+    /// field and its value.
     pub fn validate(&self) -> Result<(), ParamError> {
         self.mass_properties()?;
         ParamError::check_positive("step rate", self.step_rate_hz)?;
+        ParamError::check_within(
+            "step rate",
+            self.step_rate_hz,
+            &Range::new(0.0, 1.0 / MIN_STEP, "Hz (a step of at least a microsecond)"),
+        )?;
         ParamError::check_non_negative("stiffness k", self.stiffness)?;
         ParamError::check_non_negative("linear damping b", self.linear_damping)?;
         ParamError::check_non_negative("angular damping c", self.angular_damping)?;
         Ok(())
+    }
+
+    /// Checks every field as [`validate`](Self::validate) does, then against the game's ranges
+    /// (the controls' own): the error names the first field outside and the range it must lie
+    /// in.
+    pub fn check_playable(&self) -> Result<(), ParamError> {
+        self.validate()?;
+        ParamError::check_within("step rate", self.step_rate_hz, &STEP_RATE_RANGE)?;
+        ParamError::check_within("stiffness k", self.stiffness, &STIFFNESS_RANGE)?;
+        ParamError::check_within("mass", self.mass, &MASS_RANGE)?;
+        ParamError::check_within("width", self.size.x, &SIZE_RANGE)?;
+        ParamError::check_within("height", self.size.y, &SIZE_RANGE)?;
+        ParamError::check_within(
+            "linear damping b",
+            self.linear_damping,
+            &LINEAR_DAMPING_RANGE,
+        )?;
+        ParamError::check_within(
+            "angular damping c",
+            self.angular_damping,
+            &ANGULAR_DAMPING_RANGE,
+        )
     }
 
     /// The force laws of this scene acting on a body, with or without a band.

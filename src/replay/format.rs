@@ -8,7 +8,8 @@ use bevy::math::DVec2;
 use serde::{Deserialize, Serialize};
 
 use crate::physics::{
-    AutoSettings, BandEnds, BodyState, Integrator, ParamError, SceneParams, Stepper,
+    AutoSettings, BandEnds, BodyState, Integrator, MIN_STEP, ParamError, Range, STEP_RATE_RANGE,
+    SceneParams, Stepper,
 };
 
 /// The header's `format` field: what the file is.
@@ -84,11 +85,30 @@ impl Settings {
         }
     }
 
-    /// Every field in its domain (as `SceneParams::validate`), and a step with a finite rate.
+    /// Every field in its domain (as `SceneParams::validate`), and a step no shorter than
+    /// [`MIN_STEP`]: what `simulate --replay` accepts.
     pub fn validate(&self) -> Result<(), ParamError> {
         self.params().validate()?;
         ParamError::check_positive("dt", self.dt)?;
-        ParamError::check_positive("1/dt", 1.0 / self.dt)
+        ParamError::check_within(
+            "dt",
+            self.dt,
+            &Range::new(MIN_STEP, f64::MAX, "s (no clock keeps a shorter step)"),
+        )
+    }
+
+    /// Every field in the game's ranges (`SceneParams::check_playable`), and the step one the
+    /// game's clock takes at a rate in its range: what the game plays.
+    pub fn check_playable(&self) -> Result<(), ParamError> {
+        self.validate()?;
+        self.params().check_playable()?;
+        // The clock rounds the step to the nanosecond.
+        let steps = Range::new(
+            1.0 / STEP_RATE_RANGE.high - 1e-9,
+            1.0 / STEP_RATE_RANGE.low + 1e-9,
+            "s (a step of the game's clock at 8 to 4096 Hz)",
+        );
+        ParamError::check_within("dt", self.dt, &steps)
     }
 }
 

@@ -11,6 +11,7 @@
 //! its writing), [`read`] reads and checks a file.
 
 pub mod format;
+pub mod link;
 pub mod read;
 pub mod run;
 #[cfg(not(target_arch = "wasm32"))]
@@ -21,4 +22,5 @@ pub use format::{
     AUTO_ORDERS, AutoRecord, BandRecord, FORMAT, Header, MAX_LINE_BYTES, MAX_STEPS, Record, Replay,
     Settings, TrajectoryHash, VERSION,
 };
+pub use link::{Link, LinkProblem};
 pub use read::ReplayError;

@@ -49,6 +49,25 @@ impl Replay {
     }
 
     /// Reads and checks a replay file: the message names the file, and the line if it is bad.
+    /// Whether the game can play it: the header's settings and every settings record in the
+    /// game's ranges (`Settings::check_playable`). The message names the line and the field.
+    pub fn check_playable(&self) -> Result<(), ReplayError> {
+        let at = |line: usize, error: crate::physics::ParamError| {
+            ReplayError::at(line, format!("settings: {error} (the game's range)"))
+        };
+        self.header
+            .settings
+            .check_playable()
+            .map_err(|e| at(1, e))?;
+        for (index, record) in self.records.iter().enumerate() {
+            if let Record::Settings { settings, .. } = record {
+                // The header is line 1, the records follow it.
+                settings.check_playable().map_err(|e| at(index + 2, e))?;
+            }
+        }
+        Ok(())
+    }
+
     #[cfg(not(target_arch = "wasm32"))]
     pub fn read_file(path: &std::path::Path) -> Result<Self, String> {
         let in_file = |message: String| format!("{}: {message}", path.display());
@@ -90,6 +109,10 @@ impl std::error::Error for ReplayError {}
 struct Reader {
     replay: Option<Replay>,
     end: Option<(u64, String)>,
+    /// Whether the next step already has its reset, its settings (the recorder writes at most
+    /// one of each before a step, so a file cannot grow without steps).
+    reset_noted: bool,
+    settings_noted: bool,
 }
 
 impl Reader {
@@ -119,9 +142,17 @@ impl Reader {
             }
         };
         match record {
-            Record::Reset { step } => in_order(step, "a reset")?,
+            Record::Reset { step } => {
+                in_order(step, "a reset")?;
+                if std::mem::replace(&mut self.reset_noted, true) {
+                    return Err(at(format!("a second reset before step {step}")));
+                }
+            }
             Record::Settings { step, ref settings } => {
                 in_order(step, "settings")?;
+                if std::mem::replace(&mut self.settings_noted, true) {
+                    return Err(at(format!("a second settings record before step {step}")));
+                }
                 settings
                     .validate()
                     .map_err(|error| at(format!("settings: {error}")))?;
@@ -136,6 +167,7 @@ impl Reader {
                     check_band(&band).map_err(at)?;
                 }
                 replay.steps = step;
+                (self.reset_noted, self.settings_noted) = (false, false);
             }
             Record::End { steps, hash } => {
                 if steps != replay.steps {

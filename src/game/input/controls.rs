@@ -8,12 +8,15 @@
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
+use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
 use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
 use crate::game::shared::{Overlays, StatusMessage};
 use crate::game::simulation::ResetScene;
-use crate::physics::{Integrator, Scenario, SceneParams};
+use crate::physics::{
+    Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scenario, SceneParams, TIME_SCALE_RANGE,
+};
 
 pub struct ControlsPlugin;
 
@@ -46,6 +49,8 @@ pub const OPEN: KeyCode = KeyCode::KeyO;
 pub const GHOSTS: KeyCode = KeyCode::KeyG;
 pub const PLOT: KeyCode = KeyCode::KeyP;
 pub const HOME_VIEW: KeyCode = KeyCode::KeyF;
+pub const LINK: KeyCode = KeyCode::KeyC;
+pub const GAME_LINK: KeyCode = KeyCode::KeyU;
 /// The named scenes, in the core's order ([`Scenario::NAMES`]).
 pub const SCENE_KEYS: [KeyCode; 10] = [
     KeyCode::Digit1,
@@ -73,10 +78,6 @@ const SCENE_ACTIONS: [Action; 10] = [
     Action::Scene(9),
 ];
 
-pub const STIFFNESS_RANGE: (f64, f64) = (1e-2, 1e12);
-pub const TIME_SCALE_RANGE: (f64, f64) = (1.0 / 16.0, 16.0);
-pub const STEP_RATE_RANGE: (f64, f64) = (8.0, 4096.0);
-
 /// Everything a player can do but drag: what a key and a panel button send.
 #[derive(Message, Debug, Clone, Copy, PartialEq)]
 pub enum Action {
@@ -103,6 +104,10 @@ pub enum Action {
     HomeView,
     Save,
     Open,
+    /// The link of what is on screen written out ([`ShareLink`]).
+    ShareLink,
+    /// The same with the game so far in it.
+    ShareGame,
     /// The scene at this place in [`Scenario::NAMES`].
     Scene(usize),
 }
@@ -168,7 +173,7 @@ pub struct Control {
 }
 
 /// Every key the game reads, in the order the help line lists them.
-pub const CONTROLS: [Control; 16] = [
+pub const CONTROLS: [Control; 18] = [
     Control {
         keys: &[PAUSE],
         actions: &[Action::TogglePause],
@@ -281,6 +286,20 @@ pub const CONTROLS: [Control; 16] = [
         name: "open",
         effect: "play a replay file: in the browser a file chooser; on the desktop drop the file on the window (or `play --replay FILE`); dropping works in the browser too",
     },
+    Control {
+        keys: &[LINK],
+        actions: &[Action::ShareLink],
+        label: "C",
+        name: "link",
+        effect: "the link of what is on screen (scene, integrator, settings, overlays; docs/links.md): in the browser it becomes the page's address and is copied, on the desktop it is printed to the terminal (open it with `play --link`)",
+    },
+    Control {
+        keys: &[GAME_LINK],
+        actions: &[Action::ShareGame],
+        label: "U",
+        name: "game link",
+        effect: "the same with the game so far in it: whoever opens it sees your pull replayed to the bit",
+    },
 ];
 
 /// The HUD's help line: "drag: pull  Space: pause  N: step ...".
@@ -334,8 +353,7 @@ fn apply_actions(
     mut commands: Commands,
     mut controlled: Controlled,
 ) {
-    let scaled =
-        |value: f64, factor: f64, (low, high): (f64, f64)| (value * factor).clamp(low, high);
+    let scaled = |value: f64, factor: f64, range: Range| range.clamp(value * factor);
     for &action in actions.read() {
         let c = &mut controlled;
         let mut next = *c.params;
@@ -355,8 +373,11 @@ fn apply_actions(
             Action::Integrator(integrator) => *c.integrator = integrator,
             Action::Softer => next.stiffness = scaled(next.stiffness, 0.1, STIFFNESS_RANGE),
             Action::Stiffer => {
-                next.stiffness =
-                    scaled(next.stiffness.max(STIFFNESS_RANGE.0), 10.0, STIFFNESS_RANGE)
+                next.stiffness = scaled(
+                    next.stiffness.max(STIFFNESS_RANGE.low),
+                    10.0,
+                    STIFFNESS_RANGE,
+                )
             }
             Action::FewerSteps => {
                 next.step_rate_hz = scaled(next.step_rate_hz, 0.5, STEP_RATE_RANGE)
@@ -385,6 +406,8 @@ fn apply_actions(
             // The recorder saves and says where ([`crate::game::replays::recording`]).
             Action::Save => commands.trigger(SaveReplay),
             Action::Open => open_replay(&mut c.status),
+            Action::ShareLink => commands.trigger(ShareLink { game: false }),
+            Action::ShareGame => commands.trigger(ShareLink { game: true }),
             Action::Scene(index) => {
                 if let Some(&name) = Scenario::NAMES.get(index) {
                     commands.trigger(LoadScene(name));
@@ -392,7 +415,7 @@ fn apply_actions(
             }
         }
         if next != *c.params {
-            match next.validate() {
+            match next.check_playable() {
                 Ok(()) => *c.params = next,
                 Err(error) => {
                     c.status.0 = Some(format!("refused: {error}; kept the old value"));

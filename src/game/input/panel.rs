@@ -287,6 +287,13 @@ fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
         ));
         spawn_button(&mut commands, row, "x2", PanelButton::Send(faster));
     }
+    let row = spawn_row(&mut commands, body, "share");
+    for (label, action) in [
+        ("link", Action::ShareLink),
+        ("game link", Action::ShareGame),
+    ] {
+        spawn_button(&mut commands, row, label, PanelButton::Send(action));
+    }
     let row = spawn_row(&mut commands, body, "show");
     for (label, action) in [
         ("ghosts", Action::ToggleGhosts),

@@ -1,7 +1,8 @@
 //! The game's side of replays: the recorder keeps what reached the physics, the playback
-//! plays a replay back, and the scenes on the number keys are played as replays of their
-//! scripted pulls.
+//! plays a replay back, the scenes on the number keys are played as replays of their
+//! scripted pulls, and links open a game's settings (and a whole game) or share them.
 
+pub mod links;
 pub mod playback;
 pub mod recording;
 pub mod scenes;

@@ -216,7 +216,10 @@ fn play_step(
                 }
                 **params = next;
                 *settings.integrator = recorded.integrator;
-                if let Ok(step) = Duration::try_from_secs_f64(recorded.dt) {
+                // Checked in the game's ranges when opened; the clock panics on a zero step.
+                if let Ok(step) = Duration::try_from_secs_f64(recorded.dt)
+                    && !step.is_zero()
+                {
                     settings.time.set_timestep(step);
                 }
             }
@@ -262,7 +265,8 @@ fn place_band(
 }
 
 /// Opens `replay` in the running game: the scene reset, the replay's settings in place, the
-/// recorder started over, and the playback from its first step.
+/// recorder started over, and the playback from its first step. The caller has held it to
+/// the game's ranges (`Replay::check_playable`; a scene's script is made in them).
 pub fn open(world: &mut World, replay: Replay) {
     let header = &replay.header;
     let params = header.settings.params();
@@ -273,7 +277,9 @@ pub fn open(world: &mut World, replay: Replay) {
     world.insert_resource(params);
     world.insert_resource(integrator);
     world.insert_resource(auto);
-    if let Ok(step) = Duration::try_from_secs_f64(dt) {
+    if let Ok(step) = Duration::try_from_secs_f64(dt)
+        && !step.is_zero()
+    {
         world.resource_mut::<Time<Fixed>>().set_timestep(step);
     }
     world.resource_mut::<Recorder>().restart();
@@ -283,6 +289,10 @@ pub fn open(world: &mut World, replay: Replay) {
 
 /// A replay file's text opened by the player, or why it cannot be played.
 fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, String>) {
+    let read = read.and_then(|replay| {
+        replay.check_playable().map_err(|error| error.to_string())?;
+        Ok(replay)
+    });
     match read {
         Ok(replay) => {
             let message = format!("playing {name} ({} steps)", replay.steps);

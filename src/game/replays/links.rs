@@ -1,0 +1,194 @@
+//! Links in the game (docs/links.md): a link opened puts its scene, settings, overlays and
+//! recorded game in place ([`open_link`]), and the share controls write the link of what is
+//! on screen ([`ShareLink`]): natively to the terminal and the status line, in the browser to
+//! the address bar, the clipboard and the status line. A link the game cannot take whole is
+//! taken in part, and what was left is named on the status line.
+
+use std::time::Duration;
+
+use bevy::prelude::*;
+
+use crate::game::replays::playback;
+use crate::game::replays::recording::Recorder;
+use crate::game::replays::scenes::load_scene;
+use crate::game::schedule::GameSystems;
+use crate::game::shared::{Overlays, SceneName, StatusMessage};
+use crate::physics::{Integrator, Scenario, SceneParams};
+use crate::replay::link::{Link, LinkOverlays};
+
+pub struct LinksPlugin;
+
+impl Plugin for LinksPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_observer(share).add_systems(
+            RunFixedMainLoop,
+            open_pending_link
+                .run_if(resource_exists::<PendingLink>)
+                .in_set(GameSystems::Input),
+        );
+    }
+}
+
+/// A link to open before the first step (`play --link`, the page's own address), and what
+/// was wrong with it, to be said once the game runs.
+#[derive(Resource, Debug, Clone, Default)]
+pub struct PendingLink {
+    pub link: Link,
+    pub problems: Vec<String>,
+}
+
+/// Write the link of what is on screen; with `game`, the game so far in its fragment.
+#[derive(Event, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ShareLink {
+    pub game: bool,
+}
+
+fn open_pending_link(mut commands: Commands) {
+    commands.queue(|world: &mut World| {
+        if let Some(PendingLink { link, mut problems }) = world.remove_resource::<PendingLink>() {
+            problems.extend(open_link(world, link));
+            if !problems.is_empty() {
+                let said = format!("link: not taken: {}", problems.join("; "));
+                warn!("{said}");
+                world.resource_mut::<StatusMessage>().0 = Some(said);
+            }
+        }
+    });
+}
+
+/// Puts `link` in place: with a replay, the replay played from its start (its scene and
+/// settings are the replay's, so the link's own settings keys are left, and named); else the
+/// integrator and the step rate, then the scene (loaded with them, as its number key does),
+/// then the scene's parameters the link overrides. Then the time scale and the overlays.
+/// What was not taken, and why.
+pub fn open_link(world: &mut World, link: Link) -> Vec<String> {
+    let mut problems = Vec::new();
+    let settings_keys = link.settings_keys();
+    if let Some(replay) = link.replay {
+        if !settings_keys.is_empty() {
+            problems.push(format!(
+                "{}: left: the link's replay sets the scene and its settings",
+                settings_keys.join(", ")
+            ));
+        }
+        playback::open(world, replay);
+    } else {
+        if let Some(integrator) = link.integrator {
+            world.insert_resource(integrator);
+        }
+        if let Some(rate) = link.step_rate_hz {
+            world.resource_mut::<SceneParams>().step_rate_hz = rate;
+            // The scene below is loaded at this step (in range: the clock can keep it).
+            if let Ok(step) = Duration::try_from_secs_f64(1.0 / rate) {
+                world.resource_mut::<Time<Fixed>>().set_timestep(step);
+            }
+        }
+        if let Some(scene) = &link.scene {
+            load_scene(world, scene);
+        }
+        let mut params = *world.resource::<SceneParams>();
+        let overrides = [
+            (link.stiffness, &mut params.stiffness),
+            (link.mass, &mut params.mass),
+            (link.linear_damping, &mut params.linear_damping),
+            (link.angular_damping, &mut params.angular_damping),
+        ];
+        for (value, field) in overrides {
+            if let Some(value) = value {
+                *field = value;
+            }
+        }
+        match params.check_playable() {
+            Ok(()) => world.insert_resource(params),
+            Err(error) => problems.push(format!("{error}")),
+        }
+    }
+    if let Some(scale) = link.time_scale {
+        world
+            .resource_mut::<Time<Virtual>>()
+            .set_relative_speed_f64(scale);
+    }
+    let shown = link.overlays;
+    let mut overlays = world.resource_mut::<Overlays>();
+    let set = |field: &mut bool, value: Option<bool>| *field = value.unwrap_or(*field);
+    set(&mut overlays.ghosts, shown.ghosts);
+    set(&mut overlays.plot, shown.plot);
+    set(&mut overlays.vectors, shown.vectors);
+    set(&mut overlays.trail, shown.trail);
+    overlays.hud_hidden = shown.dock.map_or(overlays.hud_hidden, |on| !on);
+    // The plot's points are the ghosts.
+    overlays.ghosts |= overlays.plot;
+    problems
+}
+
+/// The link of what is on screen: the keys that differ from what a fresh game starts with
+/// (so a link holds only what the player changed), and with `game` the recording so far.
+pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
+    let params = *world.resource::<SceneParams>();
+    let scene = &world.resource::<SceneName>().0;
+    // The tutorial's is the scene a fresh game shows (without its scripted pull).
+    let named = Scenario::named(scene).ok().filter(|s| s.name != "tutorial");
+    let base = named.as_ref().map_or(SceneParams::tutorial(), |s| s.params);
+    let differs = |value: f64, base: f64| (value != base).then_some(value);
+    let overlays = *world.resource::<Overlays>();
+    let on = |on: bool| on.then_some(true);
+    let speed = world.resource::<Time<Virtual>>().relative_speed_f64();
+    let integrator = *world.resource::<Integrator>();
+    let mut link = Link {
+        time_scale: differs(speed, 1.0),
+        overlays: LinkOverlays {
+            ghosts: on(overlays.ghosts && !overlays.plot),
+            plot: on(overlays.plot),
+            vectors: on(overlays.vectors),
+            trail: on(overlays.trail),
+            dock: overlays.hud_hidden.then_some(false),
+        },
+        ..default()
+    };
+    if game {
+        let replay = world.resource::<Recorder>().replay.clone();
+        link.replay = Some(replay.ok_or("nothing recorded yet: pull the box first")?);
+    } else {
+        link.scene = named.map(|s| s.name.to_owned());
+        link.integrator = (integrator != Integrator::default()).then_some(integrator);
+        link.stiffness = differs(params.stiffness, base.stiffness);
+        link.mass = differs(params.mass, base.mass);
+        link.linear_damping = differs(params.linear_damping, base.linear_damping);
+        link.angular_damping = differs(params.angular_damping, base.angular_damping);
+        link.step_rate_hz = differs(params.step_rate_hz, base.step_rate_hz);
+    }
+    Ok(link)
+}
+
+/// The share controls: the link written where the player can take it.
+fn share(share: On<ShareLink>, mut commands: Commands) {
+    let game = share.game;
+    commands.queue(move |world: &mut World| {
+        let said = match current_link(world, game).and_then(|link| link.to_query()) {
+            Ok(query) => publish(&query, game),
+            Err(error) => format!("no link: {error}"),
+        };
+        world.resource_mut::<StatusMessage>().0 = Some(said);
+    });
+}
+
+/// Natively the link is printed (the terminal is where a long one can be copied from); in the
+/// browser it becomes the page's address and is copied. What the status line says.
+fn publish(query: &str, game: bool) -> String {
+    #[cfg(not(target_arch = "wasm32"))]
+    let (address, place) = {
+        println!("{query}");
+        (query.to_owned(), "printed to the terminal")
+    };
+    #[cfg(target_arch = "wasm32")]
+    let (address, place) = (
+        crate::game::web::share_link(query),
+        "in the address bar, copied",
+    );
+    info!("link: {address}");
+    if game {
+        format!("game link ({} KB) {place}", address.len().div_ceil(1024))
+    } else {
+        format!("link {place}: {address}")
+    }
+}

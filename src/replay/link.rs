@@ -1,0 +1,412 @@
+//! A game in a link. What a player set up rides in the query as plain keys and values
+//! (`?v=1&scene=stiff&integrator=rk4&k=1e5&rate=64&ghosts=on`); a whole recorded game rides in
+//! the fragment (`#replay=...`: the replay file, deflated, in base64url). docs/links.md is the
+//! format. Reading a link never fails as a whole: each key it cannot take is named in a
+//! problem, and the rest is kept.
+
+use std::fmt;
+
+use data_encoding::BASE64URL_NOPAD;
+
+use super::format::Replay;
+use crate::physics::{
+    ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, Range, STEP_RATE_RANGE,
+    STIFFNESS_RANGE, Scenario, SceneParams, TIME_SCALE_RANGE,
+};
+
+/// The link format's version, written as `v=1`. A link without `v` is read as version 1.
+pub const LINK_VERSION: u32 = 1;
+/// The longest fragment read or written: about what a browser keeps in its address bar
+/// (Chromium's limit is 2 MB).
+pub const MAX_FRAGMENT_BYTES: usize = 2 << 20;
+/// The most bytes a fragment may inflate to: a compressed fragment cannot ask for more memory.
+pub const MAX_INFLATED_BYTES: usize = 64 << 20;
+
+/// A key of the query: its name, what it sets, the values it takes and its default.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Key {
+    Version,
+    Scene,
+    Integrator,
+    Stiffness,
+    Mass,
+    LinearDamping,
+    AngularDamping,
+    StepRate,
+    TimeScale,
+    Ghosts,
+    Plot,
+    Vectors,
+    Trail,
+    Dock,
+}
+
+impl Key {
+    /// In the order a link writes them.
+    pub const ALL: [Self; 14] = [
+        Self::Version,
+        Self::Scene,
+        Self::Integrator,
+        Self::Stiffness,
+        Self::Mass,
+        Self::LinearDamping,
+        Self::AngularDamping,
+        Self::StepRate,
+        Self::TimeScale,
+        Self::Ghosts,
+        Self::Plot,
+        Self::Vectors,
+        Self::Trail,
+        Self::Dock,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Version => "v",
+            Self::Scene => "scene",
+            Self::Integrator => "integrator",
+            Self::Stiffness => "k",
+            Self::Mass => "mass",
+            Self::LinearDamping => "linear-damping",
+            Self::AngularDamping => "angular-damping",
+            Self::StepRate => "rate",
+            Self::TimeScale => "time",
+            Self::Ghosts => "ghosts",
+            Self::Plot => "plot",
+            Self::Vectors => "vectors",
+            Self::Trail => "trail",
+            Self::Dock => "dock",
+        }
+    }
+
+    /// What it sets (docs/links.md's table).
+    pub fn meaning(self) -> &'static str {
+        match self {
+            Self::Version => "the link format's version",
+            Self::Scene => "a named scene, loaded with its scripted pull",
+            Self::Integrator => "the integrator",
+            Self::Stiffness => "band stiffness k",
+            Self::Mass => "box mass",
+            Self::LinearDamping => "linear damping coefficient b (force −b·v)",
+            Self::AngularDamping => "angular damping rate c",
+            Self::StepRate => "fixed steps per second",
+            Self::TimeScale => "time scale (slow motion below 1)",
+            Self::Ghosts => "every integrator and a reference beside the box",
+            Self::Plot => "the plot of speed against error (turns the ghosts on)",
+            Self::Vectors => "velocity and force arrows",
+            Self::Trail => "the pulled corner's trail",
+            Self::Dock => "the dock of instruments",
+        }
+    }
+
+    /// The values it takes (docs/links.md's table), from the core's own lists and ranges.
+    pub fn values(self) -> String {
+        match self {
+            Self::Version => LINK_VERSION.to_string(),
+            Self::Scene => Scenario::NAMES.join(", "),
+            Self::Integrator => {
+                let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
+                names.join(", ")
+            }
+            Self::Ghosts | Self::Plot | Self::Vectors | Self::Trail | Self::Dock => {
+                "on, off".to_owned()
+            }
+            _ => self.range().map(|r| r.to_string()).unwrap_or_default(),
+        }
+    }
+
+    /// Its default: what the game starts with when the key is absent.
+    pub fn default_value(self) -> String {
+        let tutorial = SceneParams::tutorial();
+        match self {
+            Self::Version => LINK_VERSION.to_string(),
+            Self::Scene => "none (the box at rest, no pull)".to_owned(),
+            Self::Integrator => Integrator::default().name().to_owned(),
+            Self::Stiffness | Self::Mass | Self::LinearDamping | Self::AngularDamping => {
+                "the scene's".to_owned()
+            }
+            Self::StepRate => number(tutorial.step_rate_hz),
+            Self::TimeScale => "1".to_owned(),
+            Self::Dock => "on".to_owned(),
+            Self::Ghosts | Self::Plot | Self::Vectors | Self::Trail => "off".to_owned(),
+        }
+    }
+
+    /// The range a number must lie in: the game's own (`physics::scene`).
+    pub fn range(self) -> Option<Range> {
+        match self {
+            Self::Stiffness => Some(STIFFNESS_RANGE),
+            Self::Mass => Some(MASS_RANGE),
+            Self::LinearDamping => Some(LINEAR_DAMPING_RANGE),
+            Self::AngularDamping => Some(ANGULAR_DAMPING_RANGE),
+            Self::StepRate => Some(STEP_RATE_RANGE),
+            Self::TimeScale => Some(TIME_SCALE_RANGE),
+            _ => None,
+        }
+    }
+
+    fn named(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|key| key.name() == name)
+    }
+}
+
+/// The overlays a link turns on or off; `None` leaves one as the game has it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LinkOverlays {
+    pub ghosts: Option<bool>,
+    pub plot: Option<bool>,
+    pub vectors: Option<bool>,
+    pub trail: Option<bool>,
+    pub dock: Option<bool>,
+}
+
+/// What a link sets: each field `None` when the link leaves it as the game starts.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Link {
+    /// One of [`Scenario::NAMES`].
+    pub scene: Option<String>,
+    pub integrator: Option<Integrator>,
+    pub stiffness: Option<f64>,
+    pub mass: Option<f64>,
+    pub linear_damping: Option<f64>,
+    pub angular_damping: Option<f64>,
+    pub step_rate_hz: Option<f64>,
+    pub time_scale: Option<f64>,
+    pub overlays: LinkOverlays,
+    /// A whole game, played from its start (its scene and settings are the replay's).
+    pub replay: Option<Replay>,
+}
+
+/// A part of a link that was not taken, and why.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LinkProblem {
+    /// The key as the link spells it (`replay` for the fragment).
+    pub key: String,
+    pub message: String,
+}
+
+impl fmt::Display for LinkProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.key, self.message)
+    }
+}
+
+impl Link {
+    /// Reads a link: a whole address (`https://.../?k=1e5#replay=...`), its query and fragment
+    /// (`?k=1e5#replay=...`), or a bare query (`k=1e5&rate=64`). Every key it cannot take is a
+    /// problem, named, and the rest is kept.
+    pub fn parse(address: &str) -> (Self, Vec<LinkProblem>) {
+        let mut link = Self::default();
+        let mut problems = Vec::new();
+        let (rest, fragment) = match address.split_once('#') {
+            Some((rest, fragment)) => (rest, Some(fragment)),
+            None => (address, None),
+        };
+        let query = match rest.split_once('?') {
+            Some((_, query)) => query,
+            // An address with no query, or a bare query.
+            None if rest.contains("://") || !rest.contains('=') => "",
+            None => rest,
+        };
+        for pair in query.split('&').filter(|pair| !pair.is_empty()) {
+            let (name, value) = pair.split_once('=').unwrap_or((pair, ""));
+            let (name, value) = (decode(name), decode(value));
+            if let Err(message) = link.take(&name, &value) {
+                problems.push(LinkProblem { key: name, message });
+            }
+        }
+        if let Some(fragment) = fragment.filter(|fragment| !fragment.is_empty()) {
+            match fragment.split_once('=') {
+                Some(("replay", data)) => match decode_replay(data) {
+                    Ok(replay) => link.replay = Some(replay),
+                    Err(message) => problems.push(LinkProblem {
+                        key: "replay".to_owned(),
+                        message,
+                    }),
+                },
+                _ => problems.push(LinkProblem {
+                    key: "#".to_owned(),
+                    message: "the fragment is not '#replay=...': ignored".to_owned(),
+                }),
+            }
+        }
+        (link, problems)
+    }
+
+    /// One key and its value put in place, or why not.
+    fn take(&mut self, name: &str, value: &str) -> Result<(), String> {
+        let Some(key) = Key::named(name) else {
+            return Err("not a key this build knows: ignored".to_owned());
+        };
+        let number = || -> Result<f64, String> {
+            let parsed: f64 = value
+                .trim()
+                .parse()
+                .map_err(|_| format!("'{value}' is not a number"))?;
+            let range = key.range().unwrap_or(Range::new(f64::MIN, f64::MAX, ""));
+            if range.contains(parsed) {
+                Ok(parsed)
+            } else {
+                Err(format!("must be {range}, got {value}"))
+            }
+        };
+        let switch = || match value {
+            "on" | "1" | "true" => Ok(true),
+            "off" | "0" | "false" => Ok(false),
+            _ => Err(format!("'{value}' is not on or off")),
+        };
+        match key {
+            Key::Version => match value.parse::<u32>() {
+                Ok(LINK_VERSION) => {}
+                _ => {
+                    return Err(format!(
+                        "version '{value}'; this build reads version {LINK_VERSION} (the keys it \
+                         knows were applied)"
+                    ));
+                }
+            },
+            Key::Scene => {
+                let name = Scenario::named(value)
+                    .map_err(|error| error.to_string())?
+                    .name;
+                self.scene = Some(name.to_owned());
+            }
+            Key::Integrator => {
+                self.integrator = Some(value.parse().map_err(|e| format!("{e}"))?);
+            }
+            Key::Stiffness => self.stiffness = Some(number()?),
+            Key::Mass => self.mass = Some(number()?),
+            Key::LinearDamping => self.linear_damping = Some(number()?),
+            Key::AngularDamping => self.angular_damping = Some(number()?),
+            Key::StepRate => self.step_rate_hz = Some(number()?),
+            Key::TimeScale => self.time_scale = Some(number()?),
+            Key::Ghosts => self.overlays.ghosts = Some(switch()?),
+            Key::Plot => self.overlays.plot = Some(switch()?),
+            Key::Vectors => self.overlays.vectors = Some(switch()?),
+            Key::Trail => self.overlays.trail = Some(switch()?),
+            Key::Dock => self.overlays.dock = Some(switch()?),
+        }
+        Ok(())
+    }
+
+    /// The keys a link with a replay ignores: the replay sets the scene and its settings.
+    pub fn settings_keys(&self) -> Vec<&'static str> {
+        [
+            (self.scene.is_some(), Key::Scene),
+            (self.integrator.is_some(), Key::Integrator),
+            (self.stiffness.is_some(), Key::Stiffness),
+            (self.mass.is_some(), Key::Mass),
+            (self.linear_damping.is_some(), Key::LinearDamping),
+            (self.angular_damping.is_some(), Key::AngularDamping),
+            (self.step_rate_hz.is_some(), Key::StepRate),
+        ]
+        .into_iter()
+        .filter(|(set, _)| *set)
+        .map(|(_, key)| key.name())
+        .collect()
+    }
+
+    /// The query and fragment (`?v=1&...#replay=...`), each key the link sets in
+    /// [`Key::ALL`]'s order; [`Link::parse`] reads it back to the same link. A replay too long
+    /// for a link ([`MAX_FRAGMENT_BYTES`]) is refused.
+    pub fn to_query(&self) -> Result<String, String> {
+        let mut pairs = vec![format!("v={LINK_VERSION}")];
+        let mut put = |key: Key, value: Option<String>| {
+            if let Some(value) = value {
+                pairs.push(format!("{}={value}", key.name()));
+            }
+        };
+        let switch = |on: Option<bool>| on.map(|on| if on { "on" } else { "off" }.to_owned());
+        put(Key::Scene, self.scene.clone());
+        put(
+            Key::Integrator,
+            self.integrator.map(|i| i.name().to_owned()),
+        );
+        put(Key::Stiffness, self.stiffness.map(number));
+        put(Key::Mass, self.mass.map(number));
+        put(Key::LinearDamping, self.linear_damping.map(number));
+        put(Key::AngularDamping, self.angular_damping.map(number));
+        put(Key::StepRate, self.step_rate_hz.map(number));
+        put(Key::TimeScale, self.time_scale.map(number));
+        put(Key::Ghosts, switch(self.overlays.ghosts));
+        put(Key::Plot, switch(self.overlays.plot));
+        put(Key::Vectors, switch(self.overlays.vectors));
+        put(Key::Trail, switch(self.overlays.trail));
+        put(Key::Dock, switch(self.overlays.dock));
+        let mut text = format!("?{}", pairs.join("&"));
+        if let Some(replay) = &self.replay {
+            let data = encode_replay(replay);
+            if data.len() > MAX_FRAGMENT_BYTES {
+                return Err(format!(
+                    "the game is too long for a link ({} KB, at most {} KB): save it as a file",
+                    data.len() / 1024,
+                    MAX_FRAGMENT_BYTES / 1024
+                ));
+            }
+            text.push_str("#replay=");
+            text.push_str(&data);
+        }
+        Ok(text)
+    }
+}
+
+/// A number as a link writes it: plain in the usual range (20, 0.05, 4096), in powers of ten
+/// beyond it (1e5, 1e-3); either way every bit of it, so it reads back the same.
+pub fn number(value: f64) -> String {
+    let magnitude = value.abs();
+    if value == 0.0 || (1e-2..1e5).contains(&magnitude) {
+        format!("{value}")
+    } else {
+        format!("{value:e}")
+    }
+}
+
+/// A replay as a fragment's data: its file deflated (level 9), in base64url without padding.
+pub fn encode_replay(replay: &Replay) -> String {
+    let deflated = miniz_oxide::deflate::compress_to_vec(&replay.to_bytes(), 9);
+    BASE64URL_NOPAD.encode(&deflated)
+}
+
+/// A fragment's data back to a replay, read and checked as a file is, then held to the game's
+/// ranges (`Replay::check_playable`).
+pub fn decode_replay(data: &str) -> Result<Replay, String> {
+    if data.len() > MAX_FRAGMENT_BYTES {
+        return Err(format!(
+            "longer than {} KB: not a link's replay",
+            MAX_FRAGMENT_BYTES / 1024
+        ));
+    }
+    let deflated = BASE64URL_NOPAD
+        .decode(data.trim_end_matches('=').as_bytes())
+        .map_err(|error| format!("not base64url: {error}"))?;
+    let bytes = miniz_oxide::inflate::decompress_to_vec_with_limit(&deflated, MAX_INFLATED_BYTES)
+        .map_err(|error| format!("not a deflated replay: {error}"))?;
+    let replay = Replay::from_bytes(&bytes).map_err(|error| error.to_string())?;
+    replay.check_playable().map_err(|error| error.to_string())?;
+    Ok(replay)
+}
+
+/// `%41` and `+` as a browser writes them, back to text (a bad escape is kept as written).
+fn decode(text: &str) -> String {
+    let bytes = text.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'+' => out.push(b' '),
+            b'%' if i + 2 < bytes.len() => {
+                let hex = std::str::from_utf8(&bytes[i + 1..i + 3]).ok();
+                match hex.and_then(|hex| u8::from_str_radix(hex, 16).ok()) {
+                    Some(byte) => {
+                        out.push(byte);
+                        i += 2;
+                    }
+                    None => out.push(b'%'),
+                }
+            }
+            byte => out.push(byte),
+        }
+        i += 1;
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}
