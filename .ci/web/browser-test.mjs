@@ -223,20 +223,22 @@ const pressPoint = (s, label) => {
 };
 // A spot of the dock where a finger may land without pressing a button: a text of a card
 // that lies in no button and is no button's label (the page lists one rectangle a label:
-// of two buttons named alike, the time's "/2" and the rate's, one is not listed).
-const dockSpot = (s) => {
+// of two buttons named alike, the time's "/2" and the rate's, one is not listed). For a drag
+// by `dy` (positive: the finger moves up), the spot with the most room that way.
+const dockSpot = (s, dy = 0) => {
   const v = s.viewport;
   const buttons = Object.values(s.panel);
   const top = dockTop(s);
-  return (s.texts ?? []).filter((t) => !Object.hasOwn(s.panel, t.text)).map((t) => centre(t.rect)).find(([x, y]) =>
+  const spots = (s.texts ?? []).filter((t) => !Object.hasOwn(s.panel, t.text)).map((t) => centre(t.rect)).filter(([x, y]) =>
     (wideWindow(s) ? x > v[0] + v[2] + 2 : y > top + 2) && y > 10 && y < s.height - 10 &&
     !buttons.some((b) => contains(b, [x, y], 2)));
+  return spots.reduce((best, q) => (!best || (dy > 0 ? q[1] > best[1] : q[1] < best[1]) ? q : best), null);
 };
 // Scrolls the dock by `dy` px (positive: what lies below comes into view): a finger's drag
 // from a spot with no button (a finger landing on a button presses it), else the wheel over
 // the dock.
 const scrollDock = async (p, s, dy, pointer) => {
-  const spot = pointer.touch ? dockSpot(s) : null;
+  const spot = pointer.touch ? dockSpot(s, dy) : null;
   if (spot) {
     const [x, y0] = spot;
     const y1 = Math.max(2, Math.min(s.height - 2, y0 - dy));
@@ -308,11 +310,13 @@ const openCard = async (p, title, pointer) => {
     return false;
   }
   let seen = null;
-  // Generous: on a busy machine SwiftShader draws a frame a second or slower.
-  for (const end = Date.now() + 30000; Date.now() < end;) {
+  // Generous: on a busy machine SwiftShader draws a frame a second or slower (and a drag that
+  // scrolls the dock takes several). Looked at once more after the last scroll.
+  for (const end = Date.now() + 30000; ;) {
     await frames(p, 1);
     seen = await lit(p, title);
     if (seen) return true;
+    if (Date.now() >= end) break;
     if (seen === null) await reveal(p, title, pointer);
   }
   openFailure = `${title}: pressed, its title ${seen === null ? "out of view" : "not lit"} 30 s later (${fmt((await api(p)).panel[title])})`;

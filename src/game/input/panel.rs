@@ -20,7 +20,10 @@ use crate::game::schedule::AfterBevySystems;
 use crate::game::schedule::{GameSystems, ScreenSystems};
 use crate::game::shared::{Overlays, SceneName, linear_damping_readout, readable, window_rect};
 use crate::game::theme::{self, colour, size, space};
-use crate::physics::{Integrator, Scenario, SceneParams};
+use crate::physics::{
+    ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, STIFFNESS_RANGE, Scenario,
+    SceneParams,
+};
 
 pub struct PanelPlugin;
 
@@ -90,13 +93,16 @@ const THUMB_SIZE: f32 = 18.0;
 impl Parameter {
     /// The slider's range and step: k and the mass on a logarithmic scale (log10 of the
     /// value), the damping rates on a linear one.
+    /// Each spans the game's range for its parameter (`physics::scene`).
     fn slider(self) -> (f32, f32, f32) {
-        match self {
-            Self::Stiffness => (-2.0, 12.0, 0.1),
-            Self::Mass => (-3.0, 3.0, 0.1),
-            Self::LinearDamping => (0.0, 50.0, 0.5),
-            Self::AngularDamping => (0.0, 20.0, 0.1),
-        }
+        let (range, step) = match self {
+            Self::Stiffness => (STIFFNESS_RANGE, 0.1),
+            Self::Mass => (MASS_RANGE, 0.1),
+            Self::LinearDamping => (LINEAR_DAMPING_RANGE, 0.5),
+            Self::AngularDamping => (ANGULAR_DAMPING_RANGE, 0.1),
+        };
+        let end = |value: f64| self.slider_position(value);
+        (end(range.low), end(range.high), step)
     }
 
     /// A slider's end as the readout shows the value (the linear damping by its coefficient,
