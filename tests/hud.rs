@@ -33,6 +33,7 @@ fn readings() -> HudReadings {
         residual: 0.0,
         recorded_steps: 150,
         status: None,
+        news: None,
         playback: None,
         scene: "tutorial".to_owned(),
         ghosts: Vec::new(),

@@ -22,6 +22,7 @@ import http from "node:http";
 import fs from "node:fs";
 import path from "node:path";
 import { execFileSync } from "node:child_process";
+import zlib from "node:zlib";
 
 const site = path.resolve(process.argv[2] ?? "site");
 const fixture = path.resolve("tests/fixtures/cross-platform.jsonl");
@@ -768,6 +769,61 @@ try {
   check(unopened.length === 0 && dark.length === 0, `desktop: every card opens, any number at once (not opened: ${unopened.join(", ") || "none"}; titles in view not lit: ${dark.join(", ") || "none"})`);
   checkLayout("desktop 960 x 720, the lab on, every card open", lab, 0.5);
   await pullOutOfView(page, "desktop", mouse, (label) => shot(`desktop-lab-${label}`));
+
+  // Links (docs/links.md). The panel's "link" puts the link of what is on screen in the
+  // address bar (and window.rubberBandBox.link); that link opened in a fresh page shows the
+  // same state, whose own C writes the same link back. A teacher's link with a key the game
+  // does not know and a value out of range opens the rest and names both (the hint line says
+  // the latest status for a while, the Readouts card keeps it).
+  // The fixture in a link's fragment (deflated, base64url, as the game writes it) plays back
+  // in the page to its recorded hash.
+  const openLink = async (address) => {
+    const p = await browser.newPage({ viewport: { width, height } });
+    await p.addInitScript(countFrames);
+    p.on("pageerror", (e) => { if (!String(e).includes("Using exceptions for control flow")) errors.push(String(e)); });
+    await p.goto(address);
+    await until(p, () => Boolean(window.rubberBandBox?.panel?.instruments), null, 120000);
+    return p;
+  };
+  // The link a page's share control writes: the key C, or the panel's "link" pressed.
+  const shareOf = async (p, press) => {
+    await p.evaluate(() => { if (window.rubberBandBox) delete window.rubberBandBox.link; });
+    await press();
+    await until(p, () => Boolean(window.rubberBandBox?.link), null, 20000);
+    return p.evaluate(() => window.rubberBandBox?.link ?? null);
+  };
+  const byKey = (p) => async () => { await p.focus("canvas"); await p.keyboard.press("c"); };
+  await openCard(page, "Controls", mouse);
+  const shared = await shareOf(page, () => pressButton(page, "link", mouse));
+  check(typeof shared === "string" && shared.startsWith(`${url}?v=1&`) && shared.includes("plot=on") && page.url() === shared,
+    `the panel's "link" writes the link of what is on screen to the address bar (${shared}; the address ${page.url()})`);
+  // The desktop's page is done with: every open page draws in every frame, and one game at a
+  // time keeps the machine's two cores for the page being checked.
+  await page.close();
+  if (shared) {
+    const again = await openLink(shared);
+    const back = await shareOf(again, byKey(again));
+    await again.screenshot({ path: path.join(screens, "link-opened.png") });
+    check(back === shared, `that link opened in a fresh page shows the same: its own C writes the same link (${back})`);
+    // Every page draws in every frame: one game at a time keeps the machine's two cores free.
+    await again.close();
+  }
+  const teacher = "?integrator=rk4&frobnicate=1&k=1e20&ghosts=on";
+  const taught = await openLink(url + teacher);
+  const said = await until(taught, () => (window.rubberBandBox?.texts ?? []).some((t) => t.text.includes("frobnicate")), null, 20000);
+  const statusSaid = ((await api(taught)).texts ?? []).find((t) => t.text.includes("not taken"))?.text;
+  const taughtBack = await shareOf(taught, byKey(taught));
+  await taught.screenshot({ path: path.join(screens, "link-in-part.png") });
+  await taught.close();
+  check(said && statusSaid?.includes("k: must be") && taughtBack === `${url}?v=1&integrator=rk4&ghosts=on`,
+    `a link taken in part names what it left under the scene ("${statusSaid}") and opens the rest (${taughtBack})`);
+  const fragment = zlib.deflateRawSync(fs.readFileSync(fixture), { level: 9 }).toString("base64url");
+  const replayed = await openLink(`${url}?v=1#replay=${fragment}`);
+  const played = await replayed.waitForFunction(() => window.rubberBandBox?.playback, null, { timeout: 180000 })
+    .then((handle) => handle.jsonValue()).catch(() => null);
+  check(played?.matched === true && played?.hash === nativeHash,
+    `the fixture in a link's fragment (${fragment.length} characters) plays back in the page to its recorded bits (${JSON.stringify(played)})`);
+  await replayed.close();
 
   // Phones, held upright and turned (CSS pixels, touch): the box is in view and uncovered; a
   // finger drags it; a tap on the Controls card's title (a tab on a tall window) opens it,

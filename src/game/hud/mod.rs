@@ -147,6 +147,7 @@ impl HudLine {
                 WARNING_COLOUR
             }
             HudLine::Status if readings.divergence.is_some() => WARNING_COLOUR,
+            HudLine::Hint if readings.news.is_some() => TEXT_COLOUR,
             HudLine::EnergyHeading
             | HudLine::Help
             | HudLine::Hint
@@ -160,7 +161,7 @@ impl HudLine {
         let e = &r.energies;
         match self {
             HudLine::Status => status_line(r),
-            HudLine::Hint => HINT.to_owned(),
+            HudLine::Hint => r.news.clone().unwrap_or_else(|| HINT.to_owned()),
             HudLine::SceneName => {
                 let summary = Scenario::named(&r.scene)
                     .map_or("a recorded game", |scenario| scenario.summary);
@@ -249,6 +250,17 @@ impl HudLine {
             HudLine::Help => help_line(),
         }
     }
+}
+
+/// How long the hint line says the latest status (a save, a value refused, a link left in
+/// part), in seconds of the wall's clock.
+pub const NEWS_SECONDS: f64 = 10.0;
+
+/// The latest status and when it came, by the wall's clock.
+#[derive(Default)]
+struct News {
+    text: Option<String>,
+    since: f64,
 }
 
 /// The hint under the scene: how to play, in a line a phone can hold.
@@ -417,6 +429,9 @@ pub struct HudReadings {
     /// Steps in the recording so far, and what the latest save said.
     pub recorded_steps: u64,
     pub status: Option<String>,
+    /// The latest status while it is news ([`NEWS_SECONDS`]): the hint line says it, so that a
+    /// player sees it with the dock's cards folded.
+    pub news: Option<String>,
     /// While a replay plays back: (steps played, steps in it).
     pub playback: Option<(u64, u64)>,
     /// The scene's name (the core's table's, or a recording's).
@@ -508,6 +523,7 @@ impl HudSources<'_, '_> {
             residual: self.books.residual,
             recorded_steps: self.recorder.steps(),
             status: self.status.0.clone(),
+            news: None,
             playback: self.playback.progress(),
             scene: self.scene.0.clone(),
             ghosts: self
@@ -629,10 +645,22 @@ fn spawn_hud(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
 
 fn show_hud(
     sources: HudSources,
+    real_time: Res<Time<Real>>,
+    mut news: Local<News>,
     mut lines: Query<(&HudLine, &mut Text, &mut TextColor), Without<GhostCell>>,
     mut cells: Query<(&GhostCell, &mut Text, &mut TextColor, &mut Node), Without<HudLine>>,
 ) {
-    let readings = sources.readings();
+    let mut readings = sources.readings();
+    let now = real_time.elapsed_secs_f64();
+    if sources.status.is_changed() && sources.status.0.is_some() {
+        *news = News {
+            text: sources.status.0.clone(),
+            since: now,
+        };
+    }
+    if now - news.since < NEWS_SECONDS {
+        readings.news.clone_from(&news.text);
+    }
     for (line, mut text, mut colour) in &mut lines {
         // Only write what changed, so change detection (and text layout) stays quiet.
         let content = line.text(&readings);

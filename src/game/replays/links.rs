@@ -188,6 +188,9 @@ fn publish(query: &str, game: bool) -> String {
     info!("link: {address}");
     if game {
         format!("game link ({} KB) {place}", address.len().div_ceil(1024))
+    } else if cfg!(target_arch = "wasm32") {
+        // The address bar shows it.
+        format!("link {place}")
     } else {
         format!("link {place}: {address}")
     }
