@@ -166,6 +166,39 @@ fn at_six_sizes_nothing_meets_and_the_scene_is_the_largest_region() {
     }
 }
 
+/// Learn mode's card, on every chapter (the longest equations: the energy's, the update
+/// loop's), at every size: open beside every other card on a wide window, alone on a tall one.
+#[test]
+fn learn_modes_card_lays_out_at_six_sizes() {
+    use rubber_band_box::game::learn::Learn;
+    use rubber_band_box::game::learn::chapters::CHAPTERS;
+    let mut game = laid_out_game();
+    game.world()
+        .write_message(PointerAction::Press(DVec2::new(200.0, 120.0)));
+    for chapter in 0..CHAPTERS.len() {
+        game.world().trigger(Learn::Chapter(chapter));
+        game.update(10);
+        for size in SIZES {
+            game.resize(size);
+            let mut state = Cards::default();
+            match Shape::of(size.as_vec2()) {
+                Shape::Wide => Card::ALL.iter().for_each(|card| state.set(*card, true)),
+                Shape::Tall => state.set(Card::Learn, true),
+            }
+            *game.world().resource_mut::<Cards>() = state;
+            let name = format!("{size}, chapter {}", chapter + 1);
+            let share = check(&mut game, size, &name);
+            assert!(share >= 0.4, "{name}: the scene has {share:.2} of the window");
+            let title = format!("{} of {}", chapter + 1, CHAPTERS.len());
+            let (texts, _) = shown(&mut game);
+            assert!(
+                texts.iter().any(|(text, _)| text.starts_with(&title)),
+                "{name}: the chapter's title is not shown"
+            );
+        }
+    }
+}
+
 /// Where the scene camera puts a world point on the window: its transform and its
 /// projection's scale, in the viewport Bevy's layout gave it.
 fn on_window(game: &mut Game, world_point: Vec2) -> Vec2 {

@@ -158,6 +158,8 @@ pub const WINDOW_SIZE: UVec2 = UVec2::new(960, 720);
 /// An instrument card of the dock, in the dock's order.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Card {
+    /// Learn mode's chapter (while in learn mode): first, so that a tall window shows it.
+    Learn,
     /// The panel: every control a key has.
     Controls,
     /// The scene, the integrator, the clock, the parameters, the replay.
@@ -173,7 +175,8 @@ pub enum Card {
 }
 
 impl Card {
-    pub const ALL: [Card; 6] = [
+    pub const ALL: [Card; 7] = [
+        Card::Learn,
         Card::Controls,
         Card::Readouts,
         Card::Energy,
@@ -184,6 +187,7 @@ impl Card {
 
     pub fn title(self) -> &'static str {
         match self {
+            Card::Learn => "Learn",
             Card::Controls => "Controls",
             Card::Readouts => "Readouts",
             Card::Energy => "Energy",
@@ -201,6 +205,7 @@ impl Card {
     /// overlay is on.
     pub fn offered(self, overlays: &Overlays) -> bool {
         match self {
+            Card::Learn => overlays.learn,
             Card::Ghosts => overlays.ghosts,
             Card::Plot => overlays.plot,
             _ => true,

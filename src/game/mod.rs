@@ -14,6 +14,7 @@
 //! - [`replays`]: the game's side of replays and scenes: recording, playback, the scenes on
 //!   the number keys, links opened and shared;
 //! - [`ghosts`]: every integrator and a reference stepping beside the live box;
+//! - [`learn`]: learn mode, the tutorial's chapters with their equations live;
 //! - [`stability`]: each integrator's distance from instability at the present settings;
 //! - [`hud`]: the heads-up display's text, its energy history and the window title;
 //! - [`screen`]: the cameras, interpolation, drawing and the dock's charts (need a window);
@@ -24,6 +25,7 @@ pub mod ghosts;
 pub mod hud;
 pub mod input;
 pub mod layout;
+pub mod learn;
 pub mod play;
 pub mod replays;
 pub mod schedule;
@@ -55,6 +57,7 @@ impl Plugin for GameLogicPlugin {
             replays::playback::PlaybackPlugin,
             replays::scenes::ScenesPlugin,
             replays::links::LinksPlugin,
+            learn::LearnPlugin,
             ghosts::GhostsPlugin,
             stability::StabilityPlugin,
             input::panel::PanelPlugin,

@@ -13,8 +13,8 @@
 //! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
 //!    interpolated between the last two steps, the end of a playback said;
 //! 4. `Update`, [`ScreenSystems`]: the regions arranged for the window, the camera placed,
-//!    the HUD's text and the window title, the panel, the drawing and the energy graph, then
-//!    the plot;
+//!    the HUD's text and the window title, learn mode's card, the panel, the drawing and the
+//!    energy graph, then the plot;
 //! 5. `PostUpdate` and `Last`, [`AfterBevySystems`]: after Bevy's UI layout the layout says
 //!    where the scene's viewport lies; after Bevy's window exit systems the recorder saves a
 //!    game that ends.
@@ -75,6 +75,8 @@ pub enum ScreenSystems {
     Camera,
     /// The HUD's text and the window title.
     Hud,
+    /// Learn mode's card: the chapter and its equations with this frame's numbers.
+    Learn,
     /// The panel's values and thumbs, read back from the resources.
     Panel,
     /// The box, the band and the overlays drawn, and the energy graph (the charts' gizmos
@@ -136,6 +138,7 @@ pub fn order_the_frame(app: &mut App) {
             ScreenSystems::Scale,
             ScreenSystems::Camera,
             ScreenSystems::Hud,
+            ScreenSystems::Learn,
             ScreenSystems::Panel,
             ScreenSystems::Draw,
             ScreenSystems::Plot,

@@ -40,6 +40,8 @@ pub struct Overlays {
     pub plot: bool,
     /// The dock of instruments shows unless hidden (H).
     pub hud_hidden: bool,
+    /// Learn mode's card shows (`learn`).
+    pub learn: bool,
 }
 
 /// The latest thing the game has to tell the player (a save, a replay opened or refused, a

@@ -8,6 +8,7 @@
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
+use crate::game::learn::Learn;
 use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
 use crate::game::replays::scenes::LoadScene;
@@ -51,6 +52,7 @@ pub const PLOT: KeyCode = KeyCode::KeyP;
 pub const HOME_VIEW: KeyCode = KeyCode::KeyF;
 pub const LINK: KeyCode = KeyCode::KeyC;
 pub const GAME_LINK: KeyCode = KeyCode::KeyU;
+pub const LEARN: KeyCode = KeyCode::KeyL;
 /// The named scenes, in the core's order ([`Scenario::NAMES`]).
 pub const SCENE_KEYS: [KeyCode; 10] = [
     KeyCode::Digit1,
@@ -108,6 +110,10 @@ pub enum Action {
     ShareLink,
     /// The same with the game so far in it.
     ShareGame,
+    /// Into learn mode, or out of it ([`Learn`]).
+    Learn,
+    NextChapter,
+    PreviousChapter,
     /// The scene at this place in [`Scenario::NAMES`].
     Scene(usize),
 }
@@ -173,7 +179,7 @@ pub struct Control {
 }
 
 /// Every key the game reads, in the order the help line lists them.
-pub const CONTROLS: [Control; 18] = [
+pub const CONTROLS: [Control; 19] = [
     Control {
         keys: &[PAUSE],
         actions: &[Action::TogglePause],
@@ -300,6 +306,13 @@ pub const CONTROLS: [Control; 18] = [
         name: "game link",
         effect: "the same with the game so far in it: whoever opens it sees your pull replayed to the bit",
     },
+    Control {
+        keys: &[LEARN],
+        actions: &[Action::Learn],
+        label: "L",
+        name: "learn",
+        effect: "learn mode: the tutorial's chapters, each with its equations written with the numbers of the moment and a task the game checks (docs/learn.md); L again leaves it and puts the game back as it was",
+    },
 ];
 
 /// The HUD's help line: "drag: pull  Space: pause  N: step ...".
@@ -406,6 +419,9 @@ fn apply_actions(
             // The recorder saves and says where ([`crate::game::replays::recording`]).
             Action::Save => commands.trigger(SaveReplay),
             Action::Open => open_replay(&mut c.status),
+            Action::Learn => commands.trigger(Learn::Toggle),
+            Action::NextChapter => commands.trigger(Learn::Next),
+            Action::PreviousChapter => commands.trigger(Learn::Previous),
             Action::ShareLink => commands.trigger(ShareLink { game: false }),
             Action::ShareGame => commands.trigger(ShareLink { game: true }),
             Action::Scene(index) => {

@@ -213,6 +213,20 @@ fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
             PanelButton::Send(Action::ToggleHud),
         );
     }
+    // Learn mode's card: its chapters' buttons, under its texts.
+    if let Some((learn, _)) = slots
+        .iter()
+        .find(|(_, slot)| **slot == Slot::Card(Card::Learn))
+    {
+        let row = spawn_row(&mut commands, learn, "");
+        for (label, action) in [
+            ("◂ back", Action::PreviousChapter),
+            ("next ▸", Action::NextChapter),
+            ("leave", Action::Learn),
+        ] {
+            spawn_button(&mut commands, row, label, PanelButton::Send(action));
+        }
+    }
     let Some((card, _)) = slots
         .iter()
         .find(|(_, slot)| **slot == Slot::Card(Card::Controls))
@@ -240,6 +254,7 @@ fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
         ("save", Action::Save),
         ("open", Action::Open),
         ("frame", Action::HomeView),
+        ("learn", Action::Learn),
     ] {
         spawn_button(&mut commands, row, label, PanelButton::Send(action));
     }
@@ -491,6 +506,7 @@ fn show_state(
             PanelButton::Send(Action::ToggleVectors) => (overlays.vectors, None),
             PanelButton::Send(Action::ToggleTrail) => (overlays.trail, None),
             PanelButton::Send(Action::ToggleHud) => (!overlays.hud_hidden, None),
+            PanelButton::Send(Action::Learn) => (overlays.learn, None),
             PanelButton::Send(_) => (false, None),
         };
         background.set_if_neq(BackgroundColor(if lit { LIT } else { BUTTON }));

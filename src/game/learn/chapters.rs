@@ -1,0 +1,185 @@
+//! The chapters of learn mode: the tutorial's ideas in its order, each on a scene of the core's
+//! table, with its equations and something to do. Data only: a chapter is added or moved here
+//! without touching a system.
+
+/// An equation a chapter shows, written as symbols and again with this frame's numbers
+/// ([`super::equations`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Equation {
+    /// ΣF = F_band + F_damp.
+    ForceSum,
+    /// a = ΣF / m.
+    Acceleration,
+    /// The centre's position and velocity.
+    Motion,
+    /// θ and ω.
+    Orientation,
+    /// ω decays: dω/dt = −c ω.
+    AngularDecay,
+    /// r = p − x: from the centre to the band's corner.
+    Arm,
+    /// τ = r × F.
+    Torque,
+    /// I = m (w² + h²) / 12.
+    Inertia,
+    /// α = Στ / I.
+    AngularAcceleration,
+    /// F = −k (p − q).
+    Spring,
+    /// The corner nearest the pointer.
+    NearestCorner,
+    /// F_damp = −b v.
+    LinearDamping,
+    /// τ_damp = −c I ω.
+    AngularDamping,
+    /// E = ½ m v² + ½ I ω² + ½ k |p − q|².
+    Energy,
+    /// Where the energy went: in by the hand, out by damping.
+    Ledger,
+    /// The update loop, one line a stage.
+    Update,
+}
+
+/// What a chapter asks the player to do; the game checks it ([`super::check`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Task {
+    /// Move the box 40 px with a band while it turns less than 0.05 rad.
+    MoveWithoutTurning,
+    /// Angular damping c set to 0 while the box still spins (|ω| above 1 rad/s).
+    SpinWithoutDamping,
+    /// A band turning the box clockwise, faster than 1 rad/s.
+    SpinClockwise,
+    /// The moment of inertia at least twice what the chapter started with.
+    DoubleTheInertia,
+    /// The band grabbed at three different corners.
+    ThreeCorners,
+    /// After a pull, the box back to rest: its kinetic energy under 1% of the most it had,
+    /// no band.
+    ComeToRest,
+    /// Five single steps taken while paused.
+    StepFiveTimes,
+}
+
+/// One chapter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Chapter {
+    pub title: &'static str,
+    /// The tutorial's sections it follows.
+    pub sections: &'static str,
+    /// A scene of the core's table (`Scenario::NAMES`).
+    pub scene: &'static str,
+    /// The integrator the chapter runs with (the tutorial's own for its update loop).
+    pub integrator: Option<&'static str>,
+    /// A few sentences in the project's own words.
+    pub text: &'static str,
+    pub equations: &'static [Equation],
+    pub task: Task,
+    /// The task, as the player reads it.
+    pub ask: &'static str,
+}
+
+/// The chapters, in the tutorial's order.
+pub const CHAPTERS: [Chapter; 7] = [
+    Chapter {
+        title: "Linear motion",
+        sections: "§3.2, §4.2",
+        scene: "diagonal",
+        integrator: None,
+        text: "A force whose line passes through the centre of mass moves the box as if all \
+               its mass sat there: F = m a, and the box does not turn. Here the band pulls \
+               along the diagonal, through the centre.",
+        equations: &[Equation::ForceSum, Equation::Acceleration, Equation::Motion],
+        task: Task::MoveWithoutTurning,
+        ask: "pull along a diagonal so that the box moves 40 px without turning",
+    },
+    Chapter {
+        title: "Orientation and angular velocity",
+        sections: "§3.3",
+        scene: "spin",
+        integrator: None,
+        text: "A rigid body also has an orientation θ, one number in 2D, and an angular \
+               velocity ω = dθ/dt. Nothing pulls this box: it only spins, and angular damping \
+               takes ω down at the rate c.",
+        equations: &[
+            Equation::Orientation,
+            Equation::AngularDecay,
+            Equation::Inertia,
+        ],
+        task: Task::SpinWithoutDamping,
+        ask: "set the angular damping to 0 while it spins: ω stops falling",
+    },
+    Chapter {
+        title: "A force at a point",
+        sections: "§4.2, §4.3",
+        scene: "tutorial",
+        integrator: None,
+        text: "A force applied away from the centre still accelerates the centre by F / m, \
+               and also turns the box: the torque is the perpendicular dot product of the arm \
+               r, from the centre to the point, with the force.",
+        equations: &[
+            Equation::Arm,
+            Equation::Torque,
+            Equation::Acceleration,
+            Equation::AngularAcceleration,
+        ],
+        task: Task::SpinClockwise,
+        ask: "pull so that the box spins clockwise",
+    },
+    Chapter {
+        title: "The moment of inertia",
+        sections: "§4.3.4, §4.3.6",
+        scene: "tutorial",
+        integrator: None,
+        text: "The moment of inertia is to turning what mass is to moving: the same torque \
+               gives a box with twice the inertia half the angular acceleration. For a box it \
+               grows with the mass and the square of its size.",
+        equations: &[
+            Equation::Inertia,
+            Equation::Torque,
+            Equation::AngularAcceleration,
+        ],
+        task: Task::DoubleTheInertia,
+        ask: "make the same pull turn the box half as fast: double I with the mass slider",
+    },
+    Chapter {
+        title: "The rubber band",
+        sections: "§5.2.3",
+        scene: "rest",
+        integrator: None,
+        text: "The band is a spring of zero rest length between the pointer and the corner \
+               nearest it when pressed: its force is k times the stretch, toward the pointer.",
+        equations: &[Equation::NearestCorner, Equation::Spring, Equation::Torque],
+        task: Task::ThreeCorners,
+        ask: "press near three different corners: the band takes the nearest each time",
+    },
+    Chapter {
+        title: "Damping",
+        sections: "§5.2.4",
+        scene: "tutorial",
+        integrator: None,
+        text: "Damping forces oppose the motion: −b v on the centre and −c I ω on the turn. \
+               They turn the band's work into heat, so the box always comes to rest: the ledger \
+               counts what went in and what went out.",
+        equations: &[
+            Equation::LinearDamping,
+            Equation::AngularDamping,
+            Equation::Energy,
+            Equation::Ledger,
+        ],
+        task: Task::ComeToRest,
+        ask: "pull, let go, and watch the energy leave until the box rests",
+    },
+    Chapter {
+        title: "The update loop",
+        sections: "§4.4, §5.2.4",
+        scene: "tutorial",
+        integrator: Some("seed"),
+        text: "Each step sums the forces and torques, turns them into accelerations, then \
+               updates the velocities and from them the positions: the tutorial's own order, \
+               run here by its own integrator. Other integrators do the same sums more \
+               carefully: the ghosts and the plot measure how much.",
+        equations: &[Equation::Update],
+        task: Task::StepFiveTimes,
+        ask: "pause (Space) and step (N) five times, reading each line",
+    },
+];

@@ -1,0 +1,236 @@
+//! The quantities a chapter's equations show, read from the body's components, the scene's
+//! parameters and the band, and each equation written twice: in symbols, then with this
+//! frame's numbers substituted, in the HUD's one number format.
+
+use bevy::math::DVec2;
+
+use super::chapters::Equation;
+use crate::game::shared::readable;
+use crate::physics::{BandEnds, BodyState, EnergyLedger, MassProperties, SceneParams};
+
+/// Everything a chapter's equations read, for one frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Quantities {
+    pub mass: f64,
+    pub size: DVec2,
+    pub inertia: f64,
+    pub state: BodyState,
+    pub stiffness: f64,
+    pub linear_damping: f64,
+    pub angular_damping: f64,
+    /// The band's corner (world) and anchor, while a band acts.
+    pub band: Option<(DVec2, DVec2)>,
+    pub ledger: EnergyLedger,
+    pub dt: f64,
+}
+
+impl Quantities {
+    pub fn of(
+        state: BodyState,
+        mass: &MassProperties,
+        params: &SceneParams,
+        band: Option<BandEnds>,
+        ledger: EnergyLedger,
+    ) -> Self {
+        Self {
+            mass: mass.mass(),
+            size: mass.size(),
+            inertia: mass.inertia(),
+            state,
+            stiffness: params.stiffness,
+            linear_damping: params.linear_damping,
+            angular_damping: params.angular_damping,
+            band: band.map(|band| (band.attachment(&state), band.anchor)),
+            ledger,
+            dt: params.dt(),
+        }
+    }
+
+    /// The arm r from the centre to the band's corner (zero without a band).
+    pub fn arm(&self) -> DVec2 {
+        self.band.map_or(DVec2::ZERO, |(corner, _)| {
+            corner - self.state.linear.position
+        })
+    }
+
+    /// The band's force F = −k (p − q) (zero without a band).
+    pub fn band_force(&self) -> DVec2 {
+        self.band.map_or(DVec2::ZERO, |(corner, anchor)| {
+            -self.stiffness * (corner - anchor)
+        })
+    }
+
+    /// τ = r × F.
+    pub fn band_torque(&self) -> f64 {
+        self.arm().perp_dot(self.band_force())
+    }
+
+    /// −b v.
+    pub fn damping_force(&self) -> DVec2 {
+        -self.linear_damping * self.state.linear.velocity
+    }
+
+    /// −c I ω.
+    pub fn damping_torque(&self) -> f64 {
+        -self.angular_damping * self.inertia * self.state.angular.angular_velocity
+    }
+
+    pub fn force_sum(&self) -> DVec2 {
+        self.band_force() + self.damping_force()
+    }
+
+    pub fn torque_sum(&self) -> f64 {
+        self.band_torque() + self.damping_torque()
+    }
+
+    /// ½ m v² + ½ I ω² + ½ k |p − q|².
+    pub fn energy(&self) -> (f64, f64, f64) {
+        let v = self.state.linear.velocity;
+        let omega = self.state.angular.angular_velocity;
+        let stretch = self
+            .band
+            .map_or(0.0, |(corner, anchor)| corner.distance_squared(anchor));
+        (
+            0.5 * self.mass * v.length_squared(),
+            0.5 * self.inertia * omega * omega,
+            0.5 * self.stiffness * stretch,
+        )
+    }
+}
+
+/// A number as the HUD writes it.
+pub fn n(value: f64) -> String {
+    readable(value).replace('-', "−")
+}
+
+/// A vector: (x, y).
+pub fn v(value: DVec2) -> String {
+    format!("({}, {})", n(value.x), n(value.y))
+}
+
+/// The equation's lines: its symbols, then the same with this frame's numbers.
+pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
+    let m = n(q.mass);
+    let x = q.state.linear.position;
+    let velocity = q.state.linear.velocity;
+    let theta = q.state.angular.orientation;
+    let omega = q.state.angular.angular_velocity;
+    let sum = q.force_sum();
+    let torque = q.torque_sum();
+    match equation {
+        Equation::ForceSum => vec![format!(
+            "ΣF = F_band + F_damp = {} + {} = {}",
+            v(q.band_force()),
+            v(q.damping_force()),
+            v(sum)
+        )],
+        Equation::Acceleration => vec![format!(
+            "a = ΣF / m = {} / {m} = {}",
+            v(sum),
+            v(sum / q.mass)
+        )],
+        Equation::Motion => vec![format!("x = {}   v = dx/dt = {}", v(x), v(velocity))],
+        Equation::Orientation => vec![format!(
+            "θ = {} rad   ω = dθ/dt = {} rad/s",
+            n(theta),
+            n(omega)
+        )],
+        Equation::AngularDecay => vec![format!(
+            "dω/dt = −c ω = −{} × {} = {} rad/s²",
+            n(q.angular_damping),
+            n(omega),
+            n(-q.angular_damping * omega)
+        )],
+        Equation::Arm => match q.band {
+            Some((corner, _)) => vec![format!(
+                "r = p − x = {} − {} = {}",
+                v(corner),
+                v(x),
+                v(q.arm())
+            )],
+            None => vec!["r = p − x: no band (press on the scene)".to_owned()],
+        },
+        Equation::Torque => {
+            let (r, f) = (q.arm(), q.band_force());
+            vec![format!(
+                "τ = r × F = {} × {} = {}",
+                v(r),
+                v(f),
+                n(q.band_torque())
+            )]
+        }
+        Equation::Inertia => vec![format!(
+            "I = m (w² + h²) / 12 = {m} × ({}² + {}²) / 12 = {}",
+            n(q.size.x),
+            n(q.size.y),
+            n(q.inertia)
+        )],
+        Equation::AngularAcceleration => vec![format!(
+            "α = Στ / I = {} / {} = {} rad/s²",
+            n(torque),
+            n(q.inertia),
+            n(torque / q.inertia)
+        )],
+        Equation::Spring => match q.band {
+            Some((corner, anchor)) => vec![format!(
+                "F = −k (p − q) = −{} × ({} − {}) = {}",
+                n(q.stiffness),
+                v(corner),
+                v(anchor),
+                v(q.band_force())
+            )],
+            None => vec!["F = −k (p − q): no band (press on the scene)".to_owned()],
+        },
+        Equation::NearestCorner => match q.band {
+            Some((corner, anchor)) => vec![format!(
+                "p = the corner nearest q = {}: {}, {} away",
+                v(anchor),
+                v(corner),
+                n(corner.distance(anchor))
+            )],
+            None => vec!["p = the corner nearest the pointer, when pressed".to_owned()],
+        },
+        Equation::LinearDamping => vec![format!(
+            "F_damp = −b v = −{} × {} = {}",
+            n(q.linear_damping),
+            v(velocity),
+            v(q.damping_force())
+        )],
+        Equation::AngularDamping => vec![format!(
+            "τ_damp = −c I ω = −{} × {} × {} = {}",
+            n(q.angular_damping),
+            n(q.inertia),
+            n(omega),
+            n(q.damping_torque())
+        )],
+        Equation::Energy => {
+            let (linear, turning, band) = q.energy();
+            vec![format!(
+                "E = ½mv² + ½Iω² + ½k|p − q|² = {} + {} + {} = {}",
+                n(linear),
+                n(turning),
+                n(band),
+                n(linear + turning + band)
+            )]
+        }
+        Equation::Ledger => vec![format!(
+            "in by the hand {}   out by damping {}",
+            n(q.ledger.work_in),
+            n(q.ledger.dissipated)
+        )],
+        Equation::Update => {
+            let a = sum / q.mass;
+            let alpha = torque / q.inertia;
+            vec![
+                format!("1  ΣF = {}", v(sum)),
+                format!("2  a = ΣF / m = {}", v(a)),
+                format!("3  Στ = Σ r × F = {}", n(torque)),
+                format!("4  α = Στ / I = {}", n(alpha)),
+                format!(
+                    "5  v += a dt, x += v dt, ω += α dt, θ += ω dt   (dt = {} s)",
+                    n(q.dt)
+                ),
+            ]
+        }
+    }
+}

@@ -1,0 +1,421 @@
+//! Learn mode (`L`, the panel's `learn`): the tutorial's chapters ([`chapters::CHAPTERS`]),
+//! each on a scene of the core's table, its equations written with this frame's numbers
+//! ([`equations`]) in the dock's *Learn* card, and a task the game checks. Leaving puts the
+//! game back as it was when the mode was entered: the scene, the settings, the overlays, the
+//! clock and the box.
+
+pub mod chapters;
+pub mod equations;
+
+use std::time::Duration;
+
+use bevy::prelude::*;
+
+use self::chapters::{CHAPTERS, Task};
+use self::equations::Quantities;
+use crate::game::input::pointer::Grip;
+use crate::game::layout::{Card, Cards, Slot};
+use crate::game::replays::playback::Playback;
+use crate::game::replays::recording::Recorder;
+use crate::game::replays::scenes::load_scene;
+use crate::game::schedule::{AfterStepsSystems, ScreenSystems};
+use crate::game::shared::{Overlays, SceneName};
+use crate::game::simulation::{
+    Band, EnergyBooks, ResetScene, RigidBox, StepCount, acting_band, body_state, rigid_box,
+};
+use crate::game::theme::{self, colour, size, space};
+use crate::physics::{
+    AngularState, AutoSettings, BodyState, Integrator, LinearState, MassProperties, SceneParams,
+};
+
+pub struct LearnPlugin;
+
+impl Plugin for LearnPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<Learning>()
+            .add_observer(learn)
+            .add_systems(Startup, spawn_card)
+            .add_systems(
+                RunFixedMainLoop,
+                check_task
+                    .run_if(|learning: Res<Learning>| learning.chapter.is_some())
+                    .in_set(AfterStepsSystems::Conclude),
+            )
+            .add_systems(Update, show_chapter.in_set(ScreenSystems::Learn));
+    }
+}
+
+/// What the learn controls ask.
+#[derive(Event, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Learn {
+    /// Into learn mode at its first chapter, or out of it.
+    Toggle,
+    Next,
+    Previous,
+    /// This chapter (entering the mode if need be).
+    Chapter(usize),
+}
+
+/// Learn mode's state: the chapter shown, what each task has seen, and the game to go back to.
+#[derive(Resource, Debug, Default)]
+pub struct Learning {
+    /// The chapter shown, while in learn mode.
+    pub chapter: Option<usize>,
+    /// Each chapter's task done.
+    pub done: [bool; CHAPTERS.len()],
+    progress: Progress,
+    saved: Option<Box<Saved>>,
+}
+
+/// What a task has seen since its chapter began.
+#[derive(Debug, Default, Clone)]
+struct Progress {
+    inertia_at_start: f64,
+    /// The player's band: where its pull started (position, orientation), whether the box
+    /// turned too much since.
+    pull_start: Option<(Vec2, f64)>,
+    turned: bool,
+    corners: Vec<[i64; 2]>,
+    pulled: bool,
+    most_energy: f64,
+    steps_seen: u64,
+    single_steps: u32,
+}
+
+/// The game as it was when learn mode was entered.
+#[derive(Debug, Clone)]
+struct Saved {
+    params: SceneParams,
+    integrator: Integrator,
+    auto: AutoSettings,
+    scene: SceneName,
+    overlays: Overlays,
+    cards: Cards,
+    speed: f64,
+    paused: bool,
+    body: Option<(BodyState, MassProperties)>,
+}
+
+impl Learning {
+    pub fn is_on(&self) -> bool {
+        self.chapter.is_some()
+    }
+}
+
+fn learn(learn: On<Learn>, mut commands: Commands) {
+    let asked = *learn;
+    commands.queue(move |world: &mut World| {
+        let chapter = world.resource::<Learning>().chapter;
+        let last = CHAPTERS.len() - 1;
+        match (asked, chapter) {
+            (Learn::Toggle, Some(_)) => leave(world),
+            (Learn::Toggle, None) => go_to(world, 0),
+            (Learn::Next, Some(index)) => go_to(world, (index + 1).min(last)),
+            (Learn::Previous, Some(index)) => go_to(world, index.saturating_sub(1)),
+            (Learn::Chapter(index), _) if index <= last => go_to(world, index),
+            _ => {}
+        }
+    });
+}
+
+/// The box's state and mass, if there is one.
+fn the_body(world: &mut World) -> Option<(BodyState, MassProperties)> {
+    let mut boxes =
+        world.query_filtered::<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>();
+    boxes
+        .iter(world)
+        .next()
+        .map(|(linear, angular, mass)| (body_state(linear, angular), *mass))
+}
+
+/// Shows chapter `index`: the game saved first if the mode is being entered; the chapter's
+/// scene loaded (its scripted pull plays until the player presses), its integrator put in
+/// place, its task started over, the *Learn* card open.
+pub fn go_to(world: &mut World, index: usize) {
+    let Some(chapter) = CHAPTERS.get(index) else {
+        return;
+    };
+    if world.resource::<Learning>().saved.is_none() {
+        let time = world.resource::<Time<Virtual>>();
+        let saved = Saved {
+            params: *world.resource::<SceneParams>(),
+            integrator: *world.resource::<Integrator>(),
+            auto: *world.resource::<AutoSettings>(),
+            scene: world.resource::<SceneName>().clone(),
+            overlays: *world.resource::<Overlays>(),
+            cards: world.resource::<Cards>().clone(),
+            speed: time.relative_speed_f64(),
+            paused: time.is_paused(),
+            body: the_body(world),
+        };
+        world.resource_mut::<Learning>().saved = Some(Box::new(saved));
+    }
+    if let Some(integrator) = chapter.integrator.and_then(|name| name.parse().ok()) {
+        world.insert_resource::<Integrator>(integrator);
+    }
+    load_scene(world, chapter.scene);
+    let mut overlays = world.resource_mut::<Overlays>();
+    overlays.learn = true;
+    // The arrows of force and velocity are the chapters' pictures.
+    overlays.vectors = true;
+    overlays.hud_hidden = false;
+    world.resource_mut::<Cards>().set(Card::Learn, true);
+    let inertia = world
+        .resource::<SceneParams>()
+        .mass_properties()
+        .map_or(0.0, |mass| mass.inertia());
+    let mut learning = world.resource_mut::<Learning>();
+    learning.chapter = Some(index);
+    learning.progress = Progress {
+        inertia_at_start: inertia,
+        ..default()
+    };
+}
+
+/// Out of learn mode: the game back as it was entered.
+pub fn leave(world: &mut World) {
+    let saved = {
+        let mut learning = world.resource_mut::<Learning>();
+        learning.chapter = None;
+        learning.saved.take()
+    };
+    let Some(saved) = saved else {
+        return;
+    };
+    // The chapter's script stops, its bands go, the books start over (as a reset does).
+    world.insert_resource(Playback::default());
+    world.trigger(ResetScene);
+    world.flush();
+    let bands: Vec<Entity> = world
+        .query_filtered::<Entity, With<Band>>()
+        .iter(world)
+        .collect();
+    for band in bands {
+        world.despawn(band);
+    }
+    world.insert_resource(saved.params);
+    world.insert_resource(saved.integrator);
+    world.insert_resource(saved.auto);
+    world.insert_resource(saved.scene);
+    world.insert_resource(saved.overlays);
+    world.insert_resource(saved.cards);
+    if let Ok(step) = Duration::try_from_secs_f64(saved.params.dt())
+        && !step.is_zero()
+    {
+        world.resource_mut::<Time<Fixed>>().set_timestep(step);
+    }
+    let mut time = world.resource_mut::<Time<Virtual>>();
+    time.set_relative_speed_f64(saved.speed);
+    if saved.paused {
+        time.pause();
+    } else {
+        time.unpause();
+    }
+    if let Some((state, mass)) = saved.body {
+        let boxes: Vec<Entity> = world
+            .query_filtered::<Entity, With<RigidBox>>()
+            .iter(world)
+            .collect();
+        for body in boxes {
+            world.entity_mut(body).insert(rigid_box(mass, state));
+        }
+    }
+    // A recording from here on starts where the game was.
+    world.resource_mut::<Recorder>().restart();
+}
+
+/// After the frame's steps: the chapter's task checked against what the steps did.
+#[allow(clippy::too_many_arguments)]
+fn check_task(
+    mut learning: ResMut<Learning>,
+    params: Res<SceneParams>,
+    grip: Res<Grip>,
+    steps: Res<StepCount>,
+    time: Res<Time<Virtual>>,
+    boxes: Query<(Entity, &LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    bands: Query<&Band>,
+) {
+    let Some(index) = learning.chapter else {
+        return;
+    };
+    let Ok((body, linear, angular, mass)) = boxes.single() else {
+        return;
+    };
+    // Only the player's own band counts, not a scene's script.
+    let band = acting_band(body, &bands).filter(|_| grip.0.is_some());
+    let state = body_state(linear, angular);
+    let progress = &mut learning.progress;
+    let stepped = steps.0.saturating_sub(progress.steps_seen);
+    let first_look = progress.steps_seen == 0;
+    progress.steps_seen = steps.0;
+    let done = match CHAPTERS[index].task {
+        Task::MoveWithoutTurning => {
+            let here = (state.linear.position.as_vec2(), state.angular.orientation);
+            match (band, progress.pull_start) {
+                (Some(_), None) => {
+                    progress.pull_start = Some(here);
+                    progress.turned = false;
+                    false
+                }
+                (Some(_), Some((from, angle))) => {
+                    progress.turned |= (here.1 - angle).abs() >= 0.05;
+                    !progress.turned && here.0.distance(from) >= 40.0
+                }
+                (None, _) => {
+                    progress.pull_start = None;
+                    false
+                }
+            }
+        }
+        Task::SpinWithoutDamping => {
+            params.angular_damping == 0.0 && state.angular.angular_velocity.abs() > 1.0
+        }
+        Task::SpinClockwise => band.is_some() && state.angular.angular_velocity < -1.0,
+        Task::DoubleTheInertia => {
+            progress.inertia_at_start > 0.0 && mass.inertia() >= 2.0 * progress.inertia_at_start
+        }
+        Task::ThreeCorners => {
+            if let Some(band) = band {
+                let corner = [
+                    band.local_point.x.signum() as i64,
+                    band.local_point.y.signum() as i64,
+                ];
+                if !progress.corners.contains(&corner) {
+                    progress.corners.push(corner);
+                }
+            }
+            progress.corners.len() >= 3
+        }
+        Task::ComeToRest => {
+            let energy = 0.5 * mass.mass() * state.linear.velocity.length_squared()
+                + 0.5 * mass.inertia() * state.angular.angular_velocity.powi(2);
+            progress.pulled |= band.is_some();
+            if progress.pulled {
+                progress.most_energy = progress.most_energy.max(energy);
+            }
+            progress.pulled
+                && band.is_none()
+                && progress.most_energy > 1.0
+                && energy < 0.01 * progress.most_energy
+        }
+        Task::StepFiveTimes => {
+            if time.is_paused() && !first_look && stepped == 1 {
+                progress.single_steps += 1;
+            }
+            progress.single_steps >= 5
+        }
+    };
+    if done && !learning.done[index] {
+        learning.done[index] = true;
+    }
+}
+
+/// The *Learn* card's texts.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LearnText {
+    Title,
+    Body,
+    Equations,
+    Task,
+}
+
+fn spawn_card(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
+    let Some((card, _)) = slots
+        .iter()
+        .find(|(_, slot)| **slot == Slot::Card(Card::Learn))
+    else {
+        return;
+    };
+    let texts: Vec<Entity> = [
+        (LearnText::Title, size::TITLE, colour::TEXT),
+        (LearnText::Body, size::BODY, colour::DIM),
+        (LearnText::Equations, size::BODY, colour::TEXT),
+        (LearnText::Task, size::BODY, colour::TEXT),
+    ]
+    .into_iter()
+    .map(|(text, font, colour)| {
+        commands
+            .spawn((
+                Name::new(format!("Learn {text:?}")),
+                text,
+                Text::default(),
+                theme::text_font(font),
+                TextColor(colour),
+                Node {
+                    margin: UiRect::axes(px(space::PAD + 2.0), px(3)),
+                    ..default()
+                },
+            ))
+            .id()
+    })
+    .collect();
+    // First in the card, whenever the panel puts the chapter's buttons in it.
+    commands.entity(card).insert_children(0, &texts);
+}
+
+/// The chapter's texts from the game's state this frame.
+pub fn chapter_texts(
+    learning: &Learning,
+    quantities: Option<&Quantities>,
+) -> Option<[(LearnText, String); 4]> {
+    let index = learning.chapter?;
+    let chapter = &CHAPTERS[index];
+    let equations = quantities.map_or_else(String::new, |q| {
+        chapter
+            .equations
+            .iter()
+            .flat_map(|&equation| equations::lines(equation, q))
+            .collect::<Vec<_>>()
+            .join("\n")
+    });
+    let task = if learning.done[index] {
+        format!("✓ {}: done", chapter.ask)
+    } else {
+        format!("▸ {}", chapter.ask)
+    };
+    Some([
+        (
+            LearnText::Title,
+            format!(
+                "{} of {}  {}  ({})",
+                index + 1,
+                CHAPTERS.len(),
+                chapter.title,
+                chapter.sections
+            ),
+        ),
+        (LearnText::Body, chapter.text.to_owned()),
+        (LearnText::Equations, equations),
+        (LearnText::Task, task),
+    ])
+}
+
+/// The card written from this frame's components.
+fn show_chapter(
+    learning: Res<Learning>,
+    params: Res<SceneParams>,
+    books: Res<EnergyBooks>,
+    boxes: Query<(Entity, &LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    bands: Query<&Band>,
+    mut texts: Query<(&LearnText, &mut Text)>,
+) {
+    let quantities = boxes.single().ok().map(|(body, linear, angular, mass)| {
+        Quantities::of(
+            body_state(linear, angular),
+            mass,
+            &params,
+            acting_band(body, &bands),
+            books.ledger,
+        )
+    });
+    let Some(shown) = chapter_texts(&learning, quantities.as_ref()) else {
+        return;
+    };
+    for (which, mut text) in &mut texts {
+        if let Some((_, content)) = shown.iter().find(|(kind, _)| kind == which)
+            && text.0 != *content
+        {
+            text.0.clone_from(content);
+        }
+    }
+}
