@@ -86,7 +86,7 @@ pub const CHAPTERS: [Chapter; 7] = [
         scene: "diagonal",
         integrator: None,
         text: "A force whose line passes through the centre of mass moves the box as if all \
-               its mass sat there: F = m a, and the box does not turn. Here the band pulls \
+               its mass sat there: F\u{a0}=\u{a0}m\u{a0}a, and the box does not turn. Here the band pulls \
                along the diagonal, through the centre.",
         equations: &[Equation::ForceSum, Equation::Acceleration, Equation::Motion],
         task: Task::MoveWithoutTurning,
@@ -113,7 +113,7 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§4.2, §4.3",
         scene: "tutorial",
         integrator: None,
-        text: "A force applied away from the centre still accelerates the centre by F / m, \
+        text: "A force applied away from the centre still accelerates the centre by F\u{a0}/\u{a0}m, \
                and also turns the box: the torque is the perpendicular dot product of the arm \
                r, from the centre to the point, with the force.",
         equations: &[

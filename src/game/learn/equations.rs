@@ -103,6 +103,15 @@ pub fn n(value: f64) -> String {
     readable(value).replace('-', "−")
 }
 
+/// A factor after an operator: a negative one in parentheses, `× (−0.6)`.
+pub fn f(value: f64) -> String {
+    if value.is_sign_negative() && value != 0.0 {
+        format!("({})", n(value))
+    } else {
+        n(value)
+    }
+}
+
 /// A vector: (x, y).
 pub fn v(value: DVec2) -> String {
     format!("({}, {})", n(value.x), n(value.y))
@@ -138,7 +147,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
         Equation::AngularDecay => vec![format!(
             "dω/dt = −c ω = −{} × {} = {} rad/s²",
             n(q.angular_damping),
-            n(omega),
+            f(omega),
             n(-q.angular_damping * omega)
         )],
         Equation::Arm => match q.band {
@@ -167,7 +176,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
         )],
         Equation::AngularAcceleration => vec![format!(
             "α = Στ / I = {} / {} = {} rad/s²",
-            n(torque),
+            f(torque),
             n(q.inertia),
             n(torque / q.inertia)
         )],
@@ -200,7 +209,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
             "τ_damp = −c I ω = −{} × {} × {} = {}",
             n(q.angular_damping),
             n(q.inertia),
-            n(omega),
+            f(omega),
             n(q.damping_torque())
         )],
         Equation::Energy => {
