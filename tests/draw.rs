@@ -322,6 +322,63 @@ fn the_vectors_and_the_trail_are_drawn_only_when_on() {
     assert!(trail[0].points.len() >= 9, "{}", trail[0].points.len());
 }
 
+/// Learn mode draws its equations' pictures in their colours: the arm r from the centre to
+/// the band's corner, and the torque as an arc about the centre, sweeping in its sense (a
+/// pull from the lower right turns the box clockwise); none outside learn mode.
+#[test]
+fn learn_mode_draws_the_arm_and_the_torques_arc_in_their_colours() {
+    use rubber_band_box::game::learn::Learn;
+    use rubber_band_box::game::theme::colour;
+    let arm = LinearRgba::from(colour::ARM);
+    let torque = LinearRgba::from(colour::TORQUE);
+    let mut game = screen_game();
+    game.update(1);
+    game.press_at(DVec2::new(150.0, -200.0));
+    game.update(3);
+    let outside = drawn(&mut game);
+    assert!(
+        !outside
+            .iter()
+            .any(|d| same_colour(d.colour, arm) || same_colour(d.colour, torque))
+    );
+    game.mouse(ButtonState::Released);
+    // The chapter on a force at a point; the player's pull.
+    game.world().trigger(Learn::Chapter(2));
+    game.update(2);
+    game.press_at(DVec2::new(150.0, -200.0));
+    game.update(3);
+    let (linear, angular) = game.state();
+    let band = game.the_band();
+    let state = rubber_band_box::physics::BodyState { linear, angular };
+    let corner = band.ends.attachment(&state).as_vec2();
+    let centre = linear.position.as_vec2();
+    let inside = drawn(&mut game);
+    // The shaft (the interpolated state lies within a step of the body's).
+    let shaft = inside
+        .iter()
+        .find(|d| {
+            same_colour(d.colour, arm)
+                && d.points.len() == 2
+                && d.points[1].distance(d.points[0]) > 20.0
+        })
+        .expect("the arm's shaft");
+    assert!(
+        shaft.points[0].distance(centre) < 5.0 && shaft.points[1].distance(corner) < 5.0,
+        "{shaft:?}"
+    );
+    let arc = inside
+        .iter()
+        .find(|d| same_colour(d.colour, torque) && d.points.len() > 10)
+        .expect("the torque's arc");
+    // Clockwise: each point turns the negative way about the centre.
+    let turn = arc
+        .points
+        .windows(2)
+        .map(|w| (w[0] - centre).perp_dot(w[1] - centre))
+        .sum::<f32>();
+    assert!(turn < 0.0, "the arc turns {turn}");
+}
+
 /// On a phone the text shrinks a little with the window, to 0.85 at the least (text a
 /// person can still read); at the game's own size and above it is at 1.
 #[test]

@@ -188,7 +188,10 @@ fn learn_modes_card_lays_out_at_six_sizes() {
             *game.world().resource_mut::<Cards>() = state;
             let name = format!("{size}, chapter {}", chapter + 1);
             let share = check(&mut game, size, &name);
-            assert!(share >= 0.4, "{name}: the scene has {share:.2} of the window");
+            assert!(
+                share >= 0.4,
+                "{name}: the scene has {share:.2} of the window"
+            );
             let title = format!("{} of {}", chapter + 1, CHAPTERS.len());
             let (texts, _) = shown(&mut game);
             assert!(

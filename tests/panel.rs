@@ -131,6 +131,33 @@ fn a_click_or_a_tap_on_a_button_does_what_its_key_does() {
     assert!(!open(&mut game, Card::Controls));
 }
 
+/// Learn mode by the panel: `learn` enters it and opens its card, `next ▸` and `◂ back` move
+/// between chapters, `leave` ends it and folds the card away.
+#[test]
+fn the_learn_buttons_walk_the_chapters() {
+    use rubber_band_box::game::learn::Learning;
+    let mut game = Game::stepping();
+    let chapter = |game: &mut Game| game.world().resource::<Learning>().chapter;
+    let learn = button(&mut game, PanelButton::Send(Action::Learn));
+    click(&mut game, learn, PointerId::Mouse);
+    assert_eq!(chapter(&mut game), Some(0));
+    assert!(open(&mut game, Card::Learn));
+    assert!(game.world().resource::<Overlays>().learn);
+    let next = button(&mut game, PanelButton::Send(Action::NextChapter));
+    for wanted in [1, 2, 2] {
+        if wanted == 2 && chapter(&mut game) == Some(2) {
+            let back = button(&mut game, PanelButton::Send(Action::PreviousChapter));
+            click(&mut game, back, PointerId::Touch(3));
+            assert_eq!(chapter(&mut game), Some(1));
+        }
+        click(&mut game, next, PointerId::Touch(3));
+        assert_eq!(chapter(&mut game), Some(wanted));
+    }
+    click(&mut game, learn, PointerId::Mouse);
+    assert_eq!(chapter(&mut game), None);
+    assert!(!game.world().resource::<Overlays>().learn);
+}
+
 /// Every action a key sends has a button, but for the digits' scenes (each has one) and the
 /// single-key cycles the panel shows as choices.
 #[test]

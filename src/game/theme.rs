@@ -87,6 +87,13 @@ pub mod colour {
     pub const KINETIC: Color = Color::srgb(0.35, 0.75, 1.0);
     pub const BAND_ENERGY: Color = Color::srgb(1.0, 0.3, 0.8);
     pub const TOTAL: Color = Color::srgb(1.0, 0.85, 0.2);
+    /// The arrows on the box, and learn mode's equations of what they show.
+    pub const VELOCITY: Color = Color::srgb(0.3, 0.9, 0.4);
+    pub const FORCE: Color = Color::srgb(1.0, 0.55, 0.1);
+    /// The arm r, from the centre to the band's corner.
+    pub const ARM: Color = Color::srgb(0.45, 0.85, 1.0);
+    /// The torque τ, an arc about the centre in its sense.
+    pub const TORQUE: Color = Color::srgb(0.8, 0.55, 1.0);
 }
 
 /// An integrator's colour, from the core's one table ([`Integrator::colour`]): the same in

@@ -15,6 +15,7 @@ use bevy::ui_widgets::{
 
 use crate::game::input::controls::{Action, Parameter};
 use crate::game::layout::{Card, CardButton, Cards, Shape, Slot};
+use crate::game::learn::ChapterButtons;
 #[cfg(target_arch = "wasm32")]
 use crate::game::schedule::AfterBevySystems;
 use crate::game::schedule::{GameSystems, ScreenSystems};
@@ -39,6 +40,7 @@ impl Plugin for PanelPlugin {
         app.add_observer(press_button)
             .add_observer(move_slider)
             .add_systems(Startup, spawn_panel)
+            .add_systems(PostStartup, spawn_chapter_buttons)
             .add_systems(RunFixedMainLoop, tap_buttons.in_set(GameSystems::Input))
             .add_systems(
                 Update,
@@ -202,6 +204,19 @@ fn spawn_row(commands: &mut Commands, parent: Entity, title: &str) -> Entity {
     row
 }
 
+/// Learn mode's buttons, where its card keeps them (spawned in `Startup`, so found after it).
+fn spawn_chapter_buttons(mut commands: Commands, rows: Query<Entity, With<ChapterButtons>>) {
+    for row in &rows {
+        for (label, action) in [
+            ("◂ back", Action::PreviousChapter),
+            ("next ▸", Action::NextChapter),
+            ("leave", Action::Learn),
+        ] {
+            spawn_button(&mut commands, row, label, PanelButton::Send(action));
+        }
+    }
+}
+
 fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     // The dock's own switch stands on the status line, where a finger finds it with the dock
     // hidden.
@@ -212,20 +227,6 @@ fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
             "instruments",
             PanelButton::Send(Action::ToggleHud),
         );
-    }
-    // Learn mode's card: its chapters' buttons, under its texts.
-    if let Some((learn, _)) = slots
-        .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::Learn))
-    {
-        let row = spawn_row(&mut commands, learn, "");
-        for (label, action) in [
-            ("◂ back", Action::PreviousChapter),
-            ("next ▸", Action::NextChapter),
-            ("leave", Action::Learn),
-        ] {
-            spawn_button(&mut commands, row, label, PanelButton::Send(action));
-        }
     }
     let Some((card, _)) = slots
         .iter()

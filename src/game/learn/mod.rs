@@ -11,7 +11,7 @@ use std::time::Duration;
 
 use bevy::prelude::*;
 
-use self::chapters::{CHAPTERS, Task};
+use self::chapters::{CHAPTERS, Equation, Task};
 use self::equations::Quantities;
 use crate::game::input::pointer::Grip;
 use crate::game::layout::{Card, Cards, Slot};
@@ -315,9 +315,35 @@ fn check_task(
 pub enum LearnText {
     Title,
     Body,
-    Equations,
+    /// A line of the chapter's equations, in the colour of what it is about.
+    Line(usize),
     Task,
 }
+
+/// The most equation lines a chapter writes (the update loop's five, and one to spare).
+pub const LINES: usize = 6;
+
+/// An equation's colour: that of its arrow on the box, else the text's.
+pub fn equation_colour(equation: Equation) -> Color {
+    match equation {
+        Equation::ForceSum
+        | Equation::Acceleration
+        | Equation::Spring
+        | Equation::NearestCorner
+        | Equation::LinearDamping => colour::FORCE,
+        Equation::Motion => colour::VELOCITY,
+        Equation::Arm => colour::ARM,
+        Equation::Torque | Equation::AngularAcceleration | Equation::AngularDamping => {
+            colour::TORQUE
+        }
+        _ => colour::TEXT,
+    }
+}
+
+/// Where the panel puts the chapter's buttons: under the title, where the equations' changing
+/// lengths never move them.
+#[derive(Component, Debug)]
+pub struct ChapterButtons;
 
 fn spawn_card(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     let Some((card, _)) = slots
@@ -326,68 +352,79 @@ fn spawn_card(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     else {
         return;
     };
-    let texts: Vec<Entity> = [
-        (LearnText::Title, size::TITLE, colour::TEXT),
-        (LearnText::Body, size::BODY, colour::DIM),
-        (LearnText::Equations, size::BODY, colour::TEXT),
-        (LearnText::Task, size::BODY, colour::TEXT),
-    ]
-    .into_iter()
-    .map(|(text, font, colour)| {
-        commands
-            .spawn((
-                Name::new(format!("Learn {text:?}")),
-                text,
-                Text::default(),
-                theme::text_font(font),
-                TextColor(colour),
-                Node {
-                    margin: UiRect::axes(px(space::PAD + 2.0), px(3)),
-                    ..default()
-                },
-            ))
-            .id()
-    })
-    .collect();
-    // First in the card, whenever the panel puts the chapter's buttons in it.
-    commands.entity(card).insert_children(0, &texts);
+    let text = |commands: &mut Commands, which: LearnText, font: f32, gap: f32| {
+        commands.spawn((
+            Name::new(format!("Learn {which:?}")),
+            which,
+            Text::default(),
+            theme::text_font(font),
+            TextColor(colour::TEXT),
+            Node {
+                margin: UiRect::axes(px(space::PAD + 2.0), px(gap)),
+                ..default()
+            },
+            ChildOf(card),
+        ));
+    };
+    text(&mut commands, LearnText::Title, size::TITLE, 3.0);
+    commands.spawn((
+        Name::new("Learn buttons"),
+        ChapterButtons,
+        Node {
+            flex_direction: FlexDirection::Row,
+            flex_wrap: FlexWrap::Wrap,
+            ..default()
+        },
+        ChildOf(card),
+    ));
+    text(&mut commands, LearnText::Body, size::BODY, 3.0);
+    for line in 0..LINES {
+        text(&mut commands, LearnText::Line(line), size::BODY, 1.0);
+    }
+    text(&mut commands, LearnText::Task, size::BODY, 3.0);
 }
 
-/// The chapter's texts from the game's state this frame.
+/// The chapter's texts from the game's state this frame, each with its colour.
 pub fn chapter_texts(
     learning: &Learning,
     quantities: Option<&Quantities>,
-) -> Option<[(LearnText, String); 4]> {
+) -> Option<Vec<(LearnText, String, Color)>> {
     let index = learning.chapter?;
     let chapter = &CHAPTERS[index];
-    let equations = quantities.map_or_else(String::new, |q| {
+    let title = format!(
+        "{} of {}  {}  ({})",
+        index + 1,
+        CHAPTERS.len(),
+        chapter.title,
+        chapter.sections
+    );
+    let mut texts = vec![
+        (LearnText::Title, title, colour::TEXT),
+        (LearnText::Body, chapter.text.to_owned(), colour::DIM),
+    ];
+    let lines: Vec<(String, Color)> = quantities.map_or_else(Vec::new, |q| {
         chapter
             .equations
             .iter()
-            .flat_map(|&equation| equations::lines(equation, q))
-            .collect::<Vec<_>>()
-            .join("\n")
+            .flat_map(|&equation| {
+                let colour = equation_colour(equation);
+                equations::lines(equation, q)
+                    .into_iter()
+                    .map(move |line| (line, colour))
+            })
+            .collect()
     });
+    for line in 0..LINES {
+        let (text, colour) = lines.get(line).cloned().unwrap_or_default();
+        texts.push((LearnText::Line(line), text, colour));
+    }
     let task = if learning.done[index] {
-        format!("✓ {}: done", chapter.ask)
+        (format!("✓ {}: done", chapter.ask), colour::VELOCITY)
     } else {
-        format!("▸ {}", chapter.ask)
+        (format!("▸ {}", chapter.ask), colour::TEXT)
     };
-    Some([
-        (
-            LearnText::Title,
-            format!(
-                "{} of {}  {}  ({})",
-                index + 1,
-                CHAPTERS.len(),
-                chapter.title,
-                chapter.sections
-            ),
-        ),
-        (LearnText::Body, chapter.text.to_owned()),
-        (LearnText::Equations, equations),
-        (LearnText::Task, task),
-    ])
+    texts.push((LearnText::Task, task.0, task.1));
+    Some(texts)
 }
 
 /// The card written from this frame's components.
@@ -397,7 +434,7 @@ fn show_chapter(
     books: Res<EnergyBooks>,
     boxes: Query<(Entity, &LinearState, &AngularState, &MassProperties), With<RigidBox>>,
     bands: Query<&Band>,
-    mut texts: Query<(&LearnText, &mut Text)>,
+    mut texts: Query<(&LearnText, &mut Text, &mut TextColor)>,
 ) {
     let quantities = boxes.single().ok().map(|(body, linear, angular, mass)| {
         Quantities::of(
@@ -411,11 +448,12 @@ fn show_chapter(
     let Some(shown) = chapter_texts(&learning, quantities.as_ref()) else {
         return;
     };
-    for (which, mut text) in &mut texts {
-        if let Some((_, content)) = shown.iter().find(|(kind, _)| kind == which)
-            && text.0 != *content
-        {
-            text.0.clone_from(content);
+    for (which, mut text, mut colour) in &mut texts {
+        if let Some((_, content, wanted)) = shown.iter().find(|(kind, ..)| kind == which) {
+            if text.0 != *content {
+                text.0.clone_from(content);
+            }
+            colour.set_if_neq(TextColor(*wanted));
         }
     }
 }

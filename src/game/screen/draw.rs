@@ -11,7 +11,10 @@ use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
 use crate::game::ghosts::{Ghost, GhostKind, Ghosts};
+use crate::game::input::pointer::SceneCamera;
 use crate::game::layout::SceneViewport;
+use crate::game::learn::Learning;
+use crate::game::learn::chapters::{CHAPTERS, Equation};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::view::{CameraFrame, interpolated_state, shown_area, world_per_pixel};
 use crate::game::shared::Overlays;
@@ -43,6 +46,7 @@ impl Plugin for DrawPlugin {
                     draw_boxes,
                     draw_bands,
                     draw_vectors.run_if(|overlays: Res<Overlays>| overlays.vectors),
+                    draw_learning.run_if(|learning: Res<Learning>| learning.is_on()),
                     (record_trail, draw_trail).chain(),
                     draw_ghosts,
                 )
@@ -133,8 +137,8 @@ pub fn band_colour(length: f64) -> Color {
     Color::srgb(1.0, 0.0, (length / BAND_MAGENTA_LENGTH).min(1.0) as f32)
 }
 
-const VELOCITY_COLOUR: Color = Color::srgb(0.3, 0.9, 0.4);
-const FORCE_COLOUR: Color = Color::srgb(1.0, 0.55, 0.1);
+const VELOCITY_COLOUR: Color = colour::VELOCITY;
+const FORCE_COLOUR: Color = colour::FORCE;
 /// The velocity arrow shows where the centre will be in this many seconds.
 const VELOCITY_ARROW_SECONDS: f32 = 0.25;
 /// The force arrow grows with the logarithm of the force, so that k = 20 and k = 1e9 both fit.
@@ -165,6 +169,73 @@ fn draw_vectors(
         let force = band.ends.wrench(&state, params.stiffness).force;
         let arrow = force.normalize_or_zero() * force_arrow_length(force.length());
         gizmos.arrow_2d(corner.as_vec2(), (corner + arrow).as_vec2(), FORCE_COLOUR);
+    }
+}
+
+/// How far the torque's arc sweeps about the centre, in its sense, and its radius (world px).
+const TORQUE_SWEEP: f32 = 1.5 * std::f32::consts::PI;
+const TORQUE_RADIUS: f32 = 22.0;
+
+/// Learn mode's pictures of its equations, in their colours: the arm r from the centre to the
+/// band's corner, the torque τ as an arc about the centre in its sense; with no band, the corner
+/// a press would take, nearest the pointer (the rubber band's chapter).
+fn draw_learning(
+    mut gizmos: Gizmos,
+    (learning, params, fixed_time): (Res<Learning>, Res<SceneParams>, Res<Time<Fixed>>),
+    bodies: Query<(Entity, &RenderSnapshots, &MassProperties), With<RigidBox>>,
+    bands: Query<&Band>,
+    window: Option<Single<&Window>>,
+    camera: Option<Single<(&Camera, &GlobalTransform), With<SceneCamera>>>,
+) {
+    let Some(chapter) = learning.chapter.and_then(|index| CHAPTERS.get(index)) else {
+        return;
+    };
+    let shows = |equation: Equation| chapter.equations.contains(&equation);
+    for (body, snapshots, mass) in &bodies {
+        let state = interpolated_state(snapshots, &fixed_time);
+        let centre = state.linear.position.as_vec2();
+        let band = bands.iter().find(|band| band.body == body);
+        if let Some(band) = band {
+            let corner = band.ends.attachment(&state).as_vec2();
+            if shows(Equation::Arm) || shows(Equation::Torque) {
+                gizmos.arrow_2d(centre, corner, colour::ARM);
+            }
+            let torque = band.ends.wrench(&state, params.stiffness).torque;
+            if shows(Equation::Torque) && torque != 0.0 {
+                torque_arc(
+                    &mut gizmos,
+                    centre,
+                    state.angular.orientation as f32,
+                    torque,
+                );
+            }
+        } else if shows(Equation::NearestCorner)
+            && let (Some(window), Some(camera)) = (window.as_deref(), camera.as_deref())
+            && let Some(cursor) = window.cursor_position()
+            && let Ok(pointer) = camera.0.viewport_to_world_2d(camera.1, cursor)
+        {
+            let nearest = mass.nearest_corner(&state, pointer.as_dvec2());
+            let corner = state.local_to_world(nearest).as_vec2();
+            gizmos.circle_2d(corner, 6.0, colour::FORCE);
+            gizmos.line_2d(corner, pointer, colour::FORCE.with_alpha(0.4));
+        }
+    }
+}
+
+/// An arc about `centre` sweeping in the torque's sense (counter-clockwise for a positive one),
+/// with its head at the end.
+fn torque_arc(gizmos: &mut Gizmos, centre: Vec2, from: f32, torque: f64) {
+    let sense = if torque > 0.0 { 1.0 } else { -1.0 };
+    let at = |angle: f32| centre + TORQUE_RADIUS * Vec2::from_angle(angle);
+    let points = (0..=32).map(|k| at(from + sense * TORQUE_SWEEP * k as f32 / 32.0));
+    gizmos.linestrip_2d(points, colour::TORQUE);
+    let end = from + sense * TORQUE_SWEEP;
+    let tip = at(end);
+    // The tangent at the end, in the sweep's sense.
+    let ahead = Vec2::from_angle(end + sense * std::f32::consts::FRAC_PI_2);
+    for side in [-0.5f32, 0.5] {
+        let back = Vec2::from_angle(side).rotate(-ahead) * 8.0;
+        gizmos.line_2d(tip, tip + back, colour::TORQUE);
     }
 }
 
