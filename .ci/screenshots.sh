@@ -4,7 +4,7 @@
 #   resized to a phone held upright (390 x 844): the tutorial's scripted pull with the ghosts
 #   and the plot on (keys 1 and P);
 # - in the browser, the pictures the browser test takes (headless Chromium, software WebGL2),
-#   at a desktop's and a phone's viewport.
+#   at a desktop's and a phone's viewport, and learn mode's seven chapters at the desktop's.
 # Needs Debian's xvfb, mesa-vulkan-drivers, xdotool and imagemagick (installed if missing) and
 # what .ci/web/run.sh needs. Run: bash .ci/screenshots.sh
 set -euo pipefail
@@ -69,3 +69,10 @@ bash .ci/web/run.sh
 cp site/screens/desktop-lab.png assets/screenshot-web.png
 cp site/screens/phone-390-lab-plot.png assets/screenshot-web-phone.png
 echo "assets/screenshot-web.png assets/screenshot-web-phone.png"
+# Learn mode's chapters, at the desktop's size (docs/learn.md), in 128 colours (a third the
+# bytes, no visible loss on the UI's flat colours).
+mkdir -p assets/learn
+for chapter in 1 2 3 4 5 6 7; do
+    convert "site/screens/desktop-learn-$chapter.png" -colors 128 "PNG8:assets/learn/chapter-$chapter.png"
+done
+echo "assets/learn/chapter-1.png ... chapter-7.png"

@@ -143,8 +143,14 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
             wanted.push(v(damp));
             wanted.push(n(damp_torque));
             wanted.push(n(kinetic + turning + elastic));
-            wanted.push(n(ledger.work_in));
-            wanted.push(n(ledger.dissipated));
+            let f = |x: f64| if x < 0.0 { format!("({})", n(x)) } else { n(x) };
+            wanted.push(format!(
+                "E₀ + W_hand − W_damp = {} + {} − {} = {}",
+                n(ledger.initial),
+                f(ledger.work_in),
+                f(ledger.dissipated),
+                n(ledger.initial + ledger.work_in - ledger.dissipated)
+            ));
         }
         Task::StepFiveTimes => {
             wanted.push(format!("ΣF = {}", v(sum)));

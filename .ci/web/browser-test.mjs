@@ -446,6 +446,39 @@ const boxAlwaysInView = async (p, snap, samples = 12, least = 0.6) => {
   };
 };
 
+// Learn mode (docs/learn.md): the Controls card's "learn" opens the Learn card; every chapter,
+// reached by its "next ▸", shows its title ("3 of 7 ...") and an equation of its own with
+// numbers in it, with every corner of the box in the viewport; "leave" ends the mode. An
+// equation of each chapter, as the card writes it (a line a text):
+const FIRST_EQUATIONS = ["ΣF = F_band + F_damp = (", "θ = ", "τ = r × F = (", "I = m (w² + h²) / 12 = ", "τ = r × F = (", "F_damp = −b v = −", "1  ΣF = ("];
+const walkChapters = async (p, where, pointer, snap) => {
+  const entered = await openCard(p, "Controls", pointer) && await pressButton(p, "learn", pointer);
+  const missing = [];
+  let walked = 0;
+  for (let chapter = 1; entered && chapter <= FIRST_EQUATIONS.length; chapter++) {
+    const title = `${chapter} of ${FIRST_EQUATIONS.length}`;
+    const titled = await until(p, (title) => (window.rubberBandBox?.texts ?? []).some((t) => t.text.startsWith(title)), title, 20000);
+    await settle(p);
+    const s = await api(p);
+    await snap(`learn-${chapter}`);
+    const equation = (s.texts ?? []).find((t) => t.text.includes(FIRST_EQUATIONS[chapter - 1]) && /\d/.test(t.text));
+    const off = (s.box ?? []).filter((c) => !s.viewport || !contains(s.viewport, c, 1));
+    if (!titled || !equation || !s.box?.length || off.length) {
+      missing.push(`chapter ${chapter}: title ${titled ? "shown" : "missing"}, equation ${equation ? "shown" : `"${FIRST_EQUATIONS[chapter - 1]}" missing`}, corners ${fmt(s.box)} in viewport ${fmt(s.viewport)}`);
+    } else {
+      walked++;
+    }
+    if (chapter < FIRST_EQUATIONS.length && !(await pressButton(p, "next ▸", pointer))) {
+      missing.push(`chapter ${chapter}: "next ▸" not pressed (${fmt(s.panel["next ▸"])})`);
+      break;
+    }
+  }
+  const left = entered && await pressButton(p, "leave", pointer) &&
+    await until(p, () => !window.rubberBandBox?.panel?.["next ▸"], null, 20000);
+  check(entered && walked === FIRST_EQUATIONS.length && left,
+    `${where}: learn mode walks all ${FIRST_EQUATIONS.length} chapters, each showing its title, an equation of its own with its numbers and the whole box in the viewport (${walked} shown${missing.length ? `; ${missing.join("; ")}` : ""}); "leave" ends it (${left})`);
+};
+
 try {
   const width = 960, height = 720;
   const page = await browser.newPage({ viewport: { width, height } });
@@ -824,6 +857,14 @@ try {
   check(played?.matched === true && played?.hash === nativeHash,
     `the fixture in a link's fragment (${fragment.length} characters) plays back in the page to its recorded bits (${JSON.stringify(played)})`);
   await replayed.close();
+  const learner = await browser.newPage({ viewport: { width, height } });
+  await learner.addInitScript(countFrames);
+  learner.on("pageerror", (e) => { if (!String(e).includes("Using exceptions for control flow")) errors.push(String(e)); });
+  await learner.goto(url);
+  await until(learner, () => Boolean(window.rubberBandBox?.panel?.instruments), null, 120000);
+  await walkChapters(learner, "desktop 960 x 720", mouseOf(learner),
+    (label) => learner.screenshot({ path: path.join(screens, `desktop-${label}.png`) }));
+  await learner.close();
 
   // Phones, held upright and turned (CSS pixels, touch): the box is in view and uncovered; a
   // finger drags it; a tap on the Controls card's title (a tab on a tall window) opens it,
@@ -936,6 +977,7 @@ try {
         checkLayout(`${where}, the lab on, the "${title}" tab open`, s, 0.4);
       }
     }
+    if (name === "phone-390") await walkChapters(phone, where, finger, (label) => snap(label));
     await context.close();
   }
   check(errors.length === 0, `no console errors${errors.length ? ": " + errors.join(" | ") : ""}`);

@@ -159,7 +159,8 @@ pub const CHAPTERS: [Chapter; 7] = [
         integrator: None,
         text: "Damping forces oppose the motion: −b v on the centre and −c I ω on the turn. \
                They turn the band's work into heat, so the box always comes to rest: the ledger \
-               counts what went in and what went out.",
+               adds what the hand put in to the energy at the start and takes away what damping \
+               took out, which leaves E.",
         equations: &[
             Equation::LinearDamping,
             Equation::AngularDamping,
@@ -177,7 +178,8 @@ pub const CHAPTERS: [Chapter; 7] = [
         text: "Each step sums the forces and torques, turns them into accelerations, then \
                updates the velocities and from them the positions: the tutorial's own order, \
                run here by its own integrator. Other integrators do the same sums more \
-               carefully: the ghosts and the plot measure how much.",
+               carefully: G shows them all beside the box and P plots their error against \
+               their cost, the way into the lab.",
         equations: &[Equation::Update],
         task: Task::StepFiveTimes,
         ask: "pause (Space) and step (N) five times, reading each line",

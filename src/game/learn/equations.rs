@@ -223,9 +223,11 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
             )]
         }
         Equation::Ledger => vec![format!(
-            "in by the hand {}   out by damping {}",
-            n(q.ledger.work_in),
-            n(q.ledger.dissipated)
+            "E₀ + W_hand − W_damp = {} + {} − {} = {}",
+            n(q.ledger.initial),
+            f(q.ledger.work_in),
+            f(q.ledger.dissipated),
+            n(q.ledger.initial + q.ledger.work_in - q.ledger.dissipated)
         )],
         Equation::Update => {
             let a = sum / q.mass;
