@@ -166,6 +166,31 @@ fn at_six_sizes_nothing_meets_and_the_scene_is_the_largest_region() {
     }
 }
 
+/// A message under the scene (the hint line says the latest status for a while) moves
+/// nothing: the line holds one line whatever it says, so a button below it stays where a
+/// finger is about to land.
+#[test]
+fn a_message_under_the_scene_moves_nothing() {
+    let mut game = laid_out_game();
+    for size in SIZES {
+        game.resize(size);
+        game.update(4);
+        let before = game.world().resource::<SceneViewport>().0;
+        game.world()
+            .resource_mut::<rubber_band_box::game::shared::StatusMessage>()
+            .0 = Some("replay over: 1234 steps, the recorded states to the bit (hash 0123456789abcdef), and more words to wrap".to_owned());
+        game.update(4);
+        assert_eq!(game.world().resource::<SceneViewport>().0, before, "{size}");
+        let (texts, _) = shown(&mut game);
+        assert!(
+            texts
+                .iter()
+                .any(|(text, _)| text.starts_with("replay over")),
+            "{size}"
+        );
+    }
+}
+
 /// Learn mode's card, on every chapter (the longest equations: the energy's, the update
 /// loop's), at every size: open beside every other card on a wide window, alone on a tall one.
 #[test]

@@ -408,12 +408,13 @@ const inPolygon = (corners, [x, y]) => {
 
 // A scene's scripted pull played with the Controls card open: in every frame sampled every
 // corner of the box lies in the viewport (the rectangles the page publishes), and the box is
-// drawn there, under nothing: its fill's pixels in the viewport cover most of its area on the
-// page, the polygon of the corners the page publishes for the frame taken (the camera widens
-// to keep the box in view, so the box's size on screen varies). Its outline lies over the
+// drawn there, under nothing: in the median frame its fill's pixels in the viewport cover
+// most of its area on the page, the polygon of the corners the page publishes for the frame
+// taken (the camera widens to keep the box in view, so the box's size on screen varies). Its outline lies over the
 // fill's edge, and the band's pixels over the box count as the box's.
 const boxAlwaysInView = async (p, snap, samples = 12, least = 0.6) => {
   let [worst, best] = [Infinity, 0];
+  const fills = [];
   const outside = [];
   let [sampled, skipped] = [0, 0];
   for (let tries = 0; sampled < samples && tries < 3 * samples; tries++) {
@@ -439,10 +440,16 @@ const boxAlwaysInView = async (p, snap, samples = 12, least = 0.6) => {
     const crossing = pixels(png, isBand, bounds).filter((q) => inPolygon(b.box, [q[0] + 0.5, q[1] + 0.5])).length;
     const seen = (pixels(png, isBox, b.viewport).length + crossing) / area;
     [worst, best] = [Math.min(worst, seen), Math.max(best, seen)];
+    fills.push(seen);
   }
+  // The median frame: on a loaded machine the frame taken can lie outside the two reads (the
+  // box then elsewhere than the corners say, the band over it uncounted); a box covered for
+  // real is covered in most frames.
+  fills.sort((x, y) => x - y);
+  const median = fills.length ? fills[Math.floor(fills.length / 2)] : 0;
   return {
-    ok: sampled >= samples / 2 && outside.length === 0 && worst >= least,
-    said: `${sampled} frames, ${skipped} skipped as the camera zoomed while taken; every corner in the viewport${outside.length ? ` but in ${outside.length} frames: ${outside.slice(0, 3).join("; ")}` : ""}; its fill ${(100 * worst).toFixed(0)}% to ${(100 * best).toFixed(0)}% of its area on the page, the corners' polygon (at least ${100 * least}% wanted)`,
+    ok: sampled >= samples / 2 && outside.length === 0 && median >= least,
+    said: `${sampled} frames, ${skipped} skipped as the camera zoomed while taken; every corner in the viewport${outside.length ? ` but in ${outside.length} frames: ${outside.slice(0, 3).join("; ")}` : ""}; its fill ${(100 * median).toFixed(0)}% of its area on the page in the median frame, ${(100 * worst).toFixed(0)}% to ${(100 * best).toFixed(0)}% in all, the corners' polygon (at least ${100 * least}% wanted in the median)`,
   };
 };
 
@@ -454,7 +461,7 @@ const FIRST_EQUATIONS = ["ΣF = F_band + F_damp = (", "θ = ", "τ = r × F = ("
 const walkChapters = async (p, where, pointer, snap) => {
   const entered = await openCard(p, "Controls", pointer) && await pressButton(p, "learn", pointer);
   const missing = [];
-  let walked = 0;
+  let [walked, retaps] = [0, 0];
   for (let chapter = 1; entered && chapter <= FIRST_EQUATIONS.length; chapter++) {
     const title = `${chapter} of ${FIRST_EQUATIONS.length}`;
     const titled = await until(p, (title) => (window.rubberBandBox?.texts ?? []).some((t) => t.text.startsWith(title)), title, 20000);
@@ -468,15 +475,25 @@ const walkChapters = async (p, where, pointer, snap) => {
     } else {
       walked++;
     }
-    if (chapter < FIRST_EQUATIONS.length && !(await pressButton(p, "next ▸", pointer))) {
-      missing.push(`chapter ${chapter}: "next ▸" not pressed (${fmt(s.panel["next ▸"])})`);
-      break;
+    if (chapter < FIRST_EQUATIONS.length) {
+      // As a player would, a tap that did not take is tapped again (at most three times).
+      const next = `${chapter + 1} of ${FIRST_EQUATIONS.length}`;
+      let moved = false;
+      for (let tries = 0; !moved && tries < 3; tries++) {
+        if (tries > 0) retaps++;
+        if (!(await pressButton(p, "next ▸", pointer))) break;
+        moved = await until(p, (next) => (window.rubberBandBox?.texts ?? []).some((t) => t.text.startsWith(next)), next, 8000);
+      }
+      if (!moved) {
+        missing.push(`chapter ${chapter}: "next ▸" pressed three times, no next chapter (${fmt((await api(p)).panel["next ▸"])})`);
+        break;
+      }
     }
   }
   const left = entered && await pressButton(p, "leave", pointer) &&
     await until(p, () => !window.rubberBandBox?.panel?.["next ▸"], null, 20000);
   check(entered && walked === FIRST_EQUATIONS.length && left,
-    `${where}: learn mode walks all ${FIRST_EQUATIONS.length} chapters, each showing its title, an equation of its own with its numbers and the whole box in the viewport (${walked} shown${missing.length ? `; ${missing.join("; ")}` : ""}); "leave" ends it (${left})`);
+    `${where}: learn mode walks all ${FIRST_EQUATIONS.length} chapters, each showing its title, an equation of its own with its numbers and the whole box in the viewport (${walked} shown, ${retaps} taps repeated${missing.length ? `; ${missing.join("; ")}` : ""}); "leave" ends it (${left})`);
 };
 
 try {

@@ -434,7 +434,9 @@ fn spawn_regions(mut commands: Commands) {
         },
         ChildOf(scene),
     ));
-    commands.spawn((bar("Hint line", Slot::Hint), ChildOf(scene)));
+    let mut hint = bar("Hint line", Slot::Hint);
+    hint.3.overflow = Overflow::clip_x();
+    commands.spawn((hint, ChildOf(scene)));
 
     let dock = commands
         .spawn((

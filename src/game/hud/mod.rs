@@ -577,11 +577,19 @@ fn spawn_hud(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
             Slot::Card(_) => UiRect::axes(px(space::PAD + 2.0), px(1)),
             _ => UiRect::ZERO,
         };
+        // The hint line holds one line whatever it says (a long status is cut at the window's
+        // edge), so that nothing below it moves when a message comes and goes.
+        let layout = if line == HudLine::Hint {
+            TextLayout::no_wrap()
+        } else {
+            TextLayout::default()
+        };
         commands.spawn((
             Name::new(format!("HUD {line:?}")),
             Hud,
             line,
             Text::default(),
+            layout,
             line.font(),
             TextColor(TEXT_COLOUR),
             Pickable::IGNORE,
