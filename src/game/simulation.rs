@@ -208,6 +208,18 @@ pub fn body_state(linear: &LinearState, angular: &AngularState) -> BodyState {
     }
 }
 
+/// The fixed clock's step set to `seconds`, if the clock can keep it (it counts whole
+/// nanoseconds and panics on a zero step); whether it was set.
+pub fn set_fixed_step(time: &mut Time<Fixed>, seconds: f64) -> bool {
+    match Duration::try_from_secs_f64(seconds) {
+        Ok(step) if !step.is_zero() => {
+            time.set_timestep(step);
+            true
+        }
+        _ => false,
+    }
+}
+
 /// Bevy's fixed clock counts whole nanoseconds and panics on a zero step: a rate it cannot
 /// represent is refused with a message, and the clock keeps its step.
 pub fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {

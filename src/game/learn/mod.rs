@@ -7,8 +7,6 @@
 pub mod chapters;
 pub mod equations;
 
-use std::time::Duration;
-
 use bevy::prelude::*;
 
 use self::chapters::{CHAPTERS, Equation, Task};
@@ -22,6 +20,7 @@ use crate::game::schedule::{AfterStepsSystems, ScreenSystems};
 use crate::game::shared::{Overlays, SceneName};
 use crate::game::simulation::{
     Band, EnergyBooks, ResetScene, RigidBox, StepCount, acting_band, body_state, rigid_box,
+    set_fixed_step,
 };
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{
@@ -199,11 +198,7 @@ pub fn leave(world: &mut World) {
     world.insert_resource(saved.scene);
     world.insert_resource(saved.overlays);
     world.insert_resource(saved.cards);
-    if let Ok(step) = Duration::try_from_secs_f64(saved.params.dt())
-        && !step.is_zero()
-    {
-        world.resource_mut::<Time<Fixed>>().set_timestep(step);
-    }
+    set_fixed_step(&mut world.resource_mut::<Time<Fixed>>(), saved.params.dt());
     let mut time = world.resource_mut::<Time<Virtual>>();
     time.set_relative_speed_f64(saved.speed);
     if saved.paused {

@@ -4,8 +4,6 @@
 //! the address bar, the clipboard and the status line. A link the game cannot take whole is
 //! taken in part, and what was left is named on the status line.
 
-use std::time::Duration;
-
 use bevy::prelude::*;
 
 use crate::game::replays::playback;
@@ -13,6 +11,7 @@ use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::GameSystems;
 use crate::game::shared::{Overlays, SceneName, StatusMessage};
+use crate::game::simulation::set_fixed_step;
 use crate::physics::{Integrator, Scenario, SceneParams};
 use crate::replay::link::{Link, LinkOverlays};
 
@@ -79,9 +78,7 @@ pub fn open_link(world: &mut World, link: Link) -> Vec<String> {
         if let Some(rate) = link.step_rate_hz {
             world.resource_mut::<SceneParams>().step_rate_hz = rate;
             // The scene below is loaded at this step (in range: the clock can keep it).
-            if let Ok(step) = Duration::try_from_secs_f64(1.0 / rate) {
-                world.resource_mut::<Time<Fixed>>().set_timestep(step);
-            }
+            set_fixed_step(&mut world.resource_mut::<Time<Fixed>>(), 1.0 / rate);
         }
         if let Some(scene) = &link.scene {
             load_scene(world, scene);

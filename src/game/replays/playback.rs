@@ -8,8 +8,6 @@
 //! start and the recorder starts over with it, so that at the replay's end the two hashes say
 //! whether the game stepped to the recorded bits.
 
-use std::time::Duration;
-
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
@@ -18,7 +16,7 @@ use crate::game::replays::recording::Recorder;
 use crate::game::schedule::{AfterStepsSystems, GameSystems, PhysicsSystems};
 use crate::game::shared::SceneName;
 use crate::game::shared::StatusMessage;
-use crate::game::simulation::{Band, ResetScene, RigidBox, rigid_box};
+use crate::game::simulation::{Band, ResetScene, RigidBox, rigid_box, set_fixed_step};
 use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams};
 use crate::replay::{Record, Replay, TrajectoryHash};
 
@@ -216,12 +214,8 @@ fn play_step(
                 }
                 **params = next;
                 *settings.integrator = recorded.integrator;
-                // Checked in the game's ranges when opened; the clock panics on a zero step.
-                if let Ok(step) = Duration::try_from_secs_f64(recorded.dt)
-                    && !step.is_zero()
-                {
-                    settings.time.set_timestep(step);
-                }
+                // Checked in the game's ranges when opened.
+                set_fixed_step(&mut settings.time, recorded.dt);
             }
             Record::Step { band, .. } => {
                 playback.played += 1;
@@ -277,11 +271,7 @@ pub fn open(world: &mut World, replay: Replay) {
     world.insert_resource(params);
     world.insert_resource(integrator);
     world.insert_resource(auto);
-    if let Ok(step) = Duration::try_from_secs_f64(dt)
-        && !step.is_zero()
-    {
-        world.resource_mut::<Time<Fixed>>().set_timestep(step);
-    }
+    set_fixed_step(&mut world.resource_mut::<Time<Fixed>>(), dt);
     world.resource_mut::<Recorder>().restart();
     world.insert_resource(SceneName(replay.header.scene.clone()));
     world.insert_resource(Playback::of(replay));
