@@ -77,17 +77,21 @@ impl Range {
     }
 }
 
+/// A number written whole: plain in the usual range (20, 0.05, 4096), in powers of ten beyond
+/// it (1e5, 1e-3); either way every bit of it, so that it reads back the same (a range's ends,
+/// a link's values).
+pub fn exact(value: f64) -> String {
+    if value == 0.0 || (1e-2..1e5).contains(&value.abs()) {
+        format!("{value}")
+    } else {
+        format!("{value:e}")
+    }
+}
+
 /// "from 8 to 4096 Hz".
 impl fmt::Display for Range {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let end = |value: f64| {
-            if value == 0.0 || (1e-2..1e5).contains(&value.abs()) {
-                format!("{value}")
-            } else {
-                format!("{value:e}")
-            }
-        };
-        write!(f, "from {} to {}", end(self.low), end(self.high))?;
+        write!(f, "from {} to {}", exact(self.low), exact(self.high))?;
         if !self.unit.is_empty() {
             write!(f, " {}", self.unit)?;
         }

@@ -9,6 +9,7 @@ use std::fmt;
 use data_encoding::BASE64URL_NOPAD;
 
 use super::format::Replay;
+use crate::physics::param_error::exact;
 use crate::physics::{
     ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, Range, STEP_RATE_RANGE,
     STIFFNESS_RANGE, Scenario, SceneParams, TIME_SCALE_RANGE,
@@ -125,7 +126,7 @@ impl Key {
             Self::Stiffness | Self::Mass | Self::LinearDamping | Self::AngularDamping => {
                 "the scene's".to_owned()
             }
-            Self::StepRate => number(tutorial.step_rate_hz),
+            Self::StepRate => exact(tutorial.step_rate_hz),
             Self::TimeScale => "1".to_owned(),
             Self::Dock => "on".to_owned(),
             Self::Ghosts | Self::Plot | Self::Vectors | Self::Trail => "off".to_owned(),
@@ -322,12 +323,12 @@ impl Link {
             Key::Integrator,
             self.integrator.map(|i| i.name().to_owned()),
         );
-        put(Key::Stiffness, self.stiffness.map(number));
-        put(Key::Mass, self.mass.map(number));
-        put(Key::LinearDamping, self.linear_damping.map(number));
-        put(Key::AngularDamping, self.angular_damping.map(number));
-        put(Key::StepRate, self.step_rate_hz.map(number));
-        put(Key::TimeScale, self.time_scale.map(number));
+        put(Key::Stiffness, self.stiffness.map(exact));
+        put(Key::Mass, self.mass.map(exact));
+        put(Key::LinearDamping, self.linear_damping.map(exact));
+        put(Key::AngularDamping, self.angular_damping.map(exact));
+        put(Key::StepRate, self.step_rate_hz.map(exact));
+        put(Key::TimeScale, self.time_scale.map(exact));
         put(Key::Ghosts, switch(self.overlays.ghosts));
         put(Key::Plot, switch(self.overlays.plot));
         put(Key::Vectors, switch(self.overlays.vectors));
@@ -347,17 +348,6 @@ impl Link {
             text.push_str(&data);
         }
         Ok(text)
-    }
-}
-
-/// A number as a link writes it: plain in the usual range (20, 0.05, 4096), in powers of ten
-/// beyond it (1e5, 1e-3); either way every bit of it, so it reads back the same.
-pub fn number(value: f64) -> String {
-    let magnitude = value.abs();
-    if value == 0.0 || (1e-2..1e5).contains(&magnitude) {
-        format!("{value}")
-    } else {
-        format!("{value:e}")
     }
 }
 

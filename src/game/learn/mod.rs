@@ -25,6 +25,7 @@ use crate::game::simulation::{
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{
     AngularState, AutoSettings, BodyState, Integrator, LinearState, MassProperties, SceneParams,
+    kinetic_energy,
 };
 
 pub struct LearnPlugin;
@@ -282,8 +283,7 @@ fn check_task(
             progress.corners.len() >= 3
         }
         Task::ComeToRest => {
-            let energy = 0.5 * mass.mass() * state.linear.velocity.length_squared()
-                + 0.5 * mass.inertia() * state.angular.angular_velocity.powi(2);
+            let energy = kinetic_energy(&state, mass);
             progress.pulled |= band.is_some();
             if progress.pulled {
                 progress.most_energy = progress.most_energy.max(energy);
