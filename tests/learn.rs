@@ -13,6 +13,7 @@ use common::{Game, world_to_screen};
 use rubber_band_box::game::input::controls::Parameter;
 use rubber_band_box::game::input::controls::{LEARN, PAUSE, SINGLE_STEP};
 use rubber_band_box::game::learn::chapters::{CHAPTERS, Task};
+use rubber_band_box::game::learn::twin::{CentreTwin, TWIN_OFFSET};
 use rubber_band_box::game::learn::{LINES, Learn, LearnText, Learning};
 use rubber_band_box::game::shared::{Overlays, SceneName, readable};
 use rubber_band_box::game::simulation::{Band, EnergyBooks, RigidBox};
@@ -119,6 +120,22 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
             ));
             wanted.push(v(sum / m));
             wanted.push(n(torques / inertia));
+            // The centre twin: the same band's anchor moved by the offset, held at its centre.
+            let twin = world.resource::<CentreTwin>().body.clone().expect("a twin");
+            let state = twin.stepper.state;
+            let pulled = band.map(|ends| ends.anchor + TWIN_OFFSET);
+            assert_eq!(twin.anchor(), pulled);
+            if let Some(q) = pulled {
+                let f = -params.stiffness * (state.linear.position - q);
+                wanted.push(format!(
+                    "twin: F = −k (x − q) = {}, a = F / m = {}",
+                    v(f),
+                    v(f / m)
+                ));
+                // Pulled through its centre, it never turns.
+                assert_eq!(state.angular.orientation, 0.0);
+                wanted.push("twin: r = 0, τ = 0 × F = 0, θ = 0 rad".to_owned());
+            }
         }
         Task::DoubleTheInertia => {
             wanted.push(format!("= {}", n(inertia)));
@@ -280,6 +297,41 @@ fn each_chapters_task_passes_under_its_action_and_not_without() {
         );
         assert!(task_done(index, true), "chapter {}: not done", index + 1);
     }
+}
+
+/// The moment of inertia's chapter takes the size as well as the mass: a side √2 times as
+/// long doubles I, the box drawn and stepped at its new size.
+#[test]
+fn a_side_root_two_times_as_long_does_the_inertias_task() {
+    use rubber_band_box::game::input::controls::Action;
+    let index = CHAPTERS
+        .iter()
+        .position(|chapter| chapter.task == Task::DoubleTheInertia)
+        .unwrap();
+    let mut game = Game::stepping();
+    game.update(2);
+    chapter(&mut game, index);
+    let side = game.world().resource::<SceneParams>().size.x;
+    game.world()
+        .write_message(Action::Set(Parameter::Size, 1.2 * side));
+    game.update(3);
+    assert!(!game.world().resource::<Learning>().done[index]);
+    game.world().write_message(Action::Set(
+        Parameter::Size,
+        std::f64::consts::SQRT_2 * side,
+    ));
+    game.update(3);
+    let mut boxes = game
+        .world()
+        .query_filtered::<&MassProperties, With<RigidBox>>();
+    let size = boxes.single(game.world()).unwrap().size();
+    assert_eq!(size, DVec2::splat(std::f64::consts::SQRT_2 * side));
+    assert!(game.world().resource::<Learning>().done[index]);
+    let shown = equations(&mut game);
+    assert!(
+        shown.contains(&format!("({}² + {}²)", n(size.x), n(size.y))),
+        "{shown}"
+    );
 }
 
 #[test]

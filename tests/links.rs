@@ -49,8 +49,8 @@ fn shared(game: &mut Game, with_game: bool) -> String {
 }
 
 /// The query of a teacher's link: every key set, none at the game's default.
-const SET_UP: &str = "?v=1&scene=stiff&integrator=rk4&k=2e5&mass=0.5&linear-damping=0.25&\
-                      angular-damping=3&rate=64&time=0.5&ghosts=on&vectors=on&trail=on&dock=off";
+const SET_UP: &str = "?v=1&scene=stiff&integrator=rk4&k=2e5&mass=0.5&size=90&\
+                      linear-damping=0.25&angular-damping=3&rate=64&time=0.5&ghosts=on&vectors=on&trail=on&dock=off";
 
 #[test]
 fn a_link_opens_what_it_names_and_the_share_control_writes_it_back() {
@@ -60,6 +60,7 @@ fn a_link_opens_what_it_names_and_the_share_control_writes_it_back() {
     let params = *world.resource::<SceneParams>();
     assert_eq!(params.stiffness, 2e5);
     assert_eq!(params.mass, 0.5);
+    assert_eq!(params.size, bevy::math::DVec2::splat(90.0));
     assert_eq!(params.linear_damping, 0.25);
     assert_eq!(params.angular_damping, 3.0);
     assert_eq!(params.step_rate_hz, 64.0);
@@ -75,13 +76,13 @@ fn a_link_opens_what_it_names_and_the_share_control_writes_it_back() {
     let overlays = *world.resource::<Overlays>();
     assert!(overlays.ghosts && overlays.vectors && overlays.trail && overlays.hud_hidden);
     assert!(!overlays.plot);
-    // The box has the link's mass.
-    let mass = world
+    // The box has the link's mass and size.
+    let mass = *world
         .query::<&rubber_band_box::physics::MassProperties>()
         .single(world)
-        .unwrap()
-        .mass();
-    assert_eq!(mass, 0.5);
+        .unwrap();
+    assert_eq!(mass.mass(), 0.5);
+    assert_eq!(mass.size(), bevy::math::DVec2::splat(90.0));
     assert_eq!(status(&mut game), "", "nothing was left");
     assert_eq!(shared(&mut game, false), SET_UP);
 }

@@ -313,8 +313,8 @@ fn the_panel_shows_values_in_the_huds_units() {
     }
 }
 
-/// Each slider's ends read in the same units: k from 0.01 to 1e12 and the mass from 1e-3 to
-/// 1000 (logarithmic), the linear damping's coefficient from 0 to 50, the angular rate from 0
+/// Each slider's ends read in the same units: k from 0.01 to 1e12, the mass from 1e-3 to
+/// 1000 and the size from 1 to 640 px (logarithmic), the linear damping's coefficient from 0 to 50, the angular rate from 0
 /// to 20 /s.
 #[test]
 fn the_sliders_ends_say_their_values_in_the_readouts_units() {
@@ -333,6 +333,8 @@ fn the_sliders_ends_say_their_values_in_the_readouts_units() {
         ("k", "1.0e12"),
         ("mass", "1.0e-3"),
         ("mass", "1000"),
+        ("size", "1 px"),
+        ("size", "640 px"),
         ("linear damping", "b 0"),
         ("linear damping", "b 50"),
         ("angular damping", "0 /s"),

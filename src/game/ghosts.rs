@@ -213,7 +213,10 @@ fn step_ghosts(
     let Ok((body, linear, angular, mass)) = boxes.single() else {
         return;
     };
-    if ghosts.ghosts.is_empty() || std::mem::take(&mut ghosts.restart) {
+    // Taken at every step, so that a restart asked while the ghosts were off is not done
+    // again a step after they start.
+    let restart = std::mem::take(&mut ghosts.restart);
+    if ghosts.ghosts.is_empty() || restart {
         let start = body_state(linear, angular);
         ghosts.ghosts = Integrator::ALL
             .map(GhostKind::Method)

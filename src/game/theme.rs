@@ -94,6 +94,8 @@ pub mod colour {
     pub const ARM: Color = Color::srgb(0.45, 0.85, 1.0);
     /// The torque τ, an arc about the centre in its sense.
     pub const TORQUE: Color = Color::srgb(0.8, 0.55, 1.0);
+    /// Learn mode's centre twin, its outline and its lines.
+    pub const TWIN: Color = Color::srgb(0.75, 0.78, 0.85);
 }
 
 /// An integrator's colour, from the core's one table ([`Integrator::colour`]): the same in

@@ -11,8 +11,8 @@ use data_encoding::BASE64URL_NOPAD;
 use super::format::Replay;
 use crate::physics::param_error::exact;
 use crate::physics::{
-    ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, Range, STEP_RATE_RANGE,
-    STIFFNESS_RANGE, Scenario, SceneParams, TIME_SCALE_RANGE,
+    ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, Range, SIZE_RANGE,
+    STEP_RATE_RANGE, STIFFNESS_RANGE, Scenario, SceneParams, TIME_SCALE_RANGE,
 };
 
 /// The link format's version, written as `v=1`. A link without `v` is read as version 1.
@@ -31,6 +31,7 @@ pub enum Key {
     Integrator,
     Stiffness,
     Mass,
+    Size,
     LinearDamping,
     AngularDamping,
     StepRate,
@@ -44,12 +45,13 @@ pub enum Key {
 
 impl Key {
     /// In the order a link writes them.
-    pub const ALL: [Self; 14] = [
+    pub const ALL: [Self; 15] = [
         Self::Version,
         Self::Scene,
         Self::Integrator,
         Self::Stiffness,
         Self::Mass,
+        Self::Size,
         Self::LinearDamping,
         Self::AngularDamping,
         Self::StepRate,
@@ -68,6 +70,7 @@ impl Key {
             Self::Integrator => "integrator",
             Self::Stiffness => "k",
             Self::Mass => "mass",
+            Self::Size => "size",
             Self::LinearDamping => "linear-damping",
             Self::AngularDamping => "angular-damping",
             Self::StepRate => "rate",
@@ -88,6 +91,7 @@ impl Key {
             Self::Integrator => "the integrator",
             Self::Stiffness => "band stiffness k",
             Self::Mass => "box mass",
+            Self::Size => "the box's side (width and height)",
             Self::LinearDamping => "linear damping coefficient b (force −b·v)",
             Self::AngularDamping => "angular damping rate c",
             Self::StepRate => "fixed steps per second",
@@ -123,9 +127,11 @@ impl Key {
             Self::Version => LINK_VERSION.to_string(),
             Self::Scene => "none (the box at rest, no pull)".to_owned(),
             Self::Integrator => Integrator::default().name().to_owned(),
-            Self::Stiffness | Self::Mass | Self::LinearDamping | Self::AngularDamping => {
-                "the scene's".to_owned()
-            }
+            Self::Stiffness
+            | Self::Mass
+            | Self::Size
+            | Self::LinearDamping
+            | Self::AngularDamping => "the scene's".to_owned(),
             Self::StepRate => exact(tutorial.step_rate_hz),
             Self::TimeScale => "1".to_owned(),
             Self::Dock => "on".to_owned(),
@@ -138,6 +144,7 @@ impl Key {
         match self {
             Self::Stiffness => Some(STIFFNESS_RANGE),
             Self::Mass => Some(MASS_RANGE),
+            Self::Size => Some(SIZE_RANGE),
             Self::LinearDamping => Some(LINEAR_DAMPING_RANGE),
             Self::AngularDamping => Some(ANGULAR_DAMPING_RANGE),
             Self::StepRate => Some(STEP_RATE_RANGE),
@@ -169,6 +176,8 @@ pub struct Link {
     pub integrator: Option<Integrator>,
     pub stiffness: Option<f64>,
     pub mass: Option<f64>,
+    /// The box's side: its width and height.
+    pub size: Option<f64>,
     pub linear_damping: Option<f64>,
     pub angular_damping: Option<f64>,
     pub step_rate_hz: Option<f64>,
@@ -277,6 +286,7 @@ impl Link {
             }
             Key::Stiffness => self.stiffness = Some(number()?),
             Key::Mass => self.mass = Some(number()?),
+            Key::Size => self.size = Some(number()?),
             Key::LinearDamping => self.linear_damping = Some(number()?),
             Key::AngularDamping => self.angular_damping = Some(number()?),
             Key::StepRate => self.step_rate_hz = Some(number()?),
@@ -297,6 +307,7 @@ impl Link {
             (self.integrator.is_some(), Key::Integrator),
             (self.stiffness.is_some(), Key::Stiffness),
             (self.mass.is_some(), Key::Mass),
+            (self.size.is_some(), Key::Size),
             (self.linear_damping.is_some(), Key::LinearDamping),
             (self.angular_damping.is_some(), Key::AngularDamping),
             (self.step_rate_hz.is_some(), Key::StepRate),
@@ -325,6 +336,7 @@ impl Link {
         );
         put(Key::Stiffness, self.stiffness.map(exact));
         put(Key::Mass, self.mass.map(exact));
+        put(Key::Size, self.size.map(exact));
         put(Key::LinearDamping, self.linear_damping.map(exact));
         put(Key::AngularDamping, self.angular_damping.map(exact));
         put(Key::StepRate, self.step_rate_hz.map(exact));

@@ -123,14 +123,17 @@ pub enum Action {
 pub enum Parameter {
     Stiffness,
     Mass,
+    /// The side of the (square) box.
+    Size,
     LinearDamping,
     AngularDamping,
 }
 
 impl Parameter {
-    pub const ALL: [Self; 4] = [
+    pub const ALL: [Self; 5] = [
         Self::Stiffness,
         Self::Mass,
+        Self::Size,
         Self::LinearDamping,
         Self::AngularDamping,
     ];
@@ -139,6 +142,7 @@ impl Parameter {
         match self {
             Self::Stiffness => "k",
             Self::Mass => "mass",
+            Self::Size => "size",
             Self::LinearDamping => "linear damping",
             Self::AngularDamping => "angular damping",
         }
@@ -148,6 +152,7 @@ impl Parameter {
         match self {
             Self::Stiffness => params.stiffness,
             Self::Mass => params.mass,
+            Self::Size => params.size.x,
             Self::LinearDamping => params.linear_damping,
             Self::AngularDamping => params.angular_damping,
         }
@@ -157,6 +162,7 @@ impl Parameter {
         match self {
             Self::Stiffness => params.stiffness = value,
             Self::Mass => params.mass = value,
+            Self::Size => params.size = bevy::math::DVec2::splat(value),
             Self::LinearDamping => params.linear_damping = value,
             Self::AngularDamping => params.angular_damping = value,
         }

@@ -22,8 +22,8 @@ use crate::game::schedule::{GameSystems, ScreenSystems};
 use crate::game::shared::{Overlays, SceneName, linear_damping_readout, readable, window_rect};
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{
-    ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, STIFFNESS_RANGE, Scenario,
-    SceneParams,
+    ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, SIZE_RANGE,
+    STIFFNESS_RANGE, Scenario, SceneParams,
 };
 
 pub struct PanelPlugin;
@@ -93,13 +93,14 @@ const SLIDER_WIDTH: f32 = 150.0;
 const THUMB_SIZE: f32 = 18.0;
 
 impl Parameter {
-    /// The slider's range and step: k and the mass on a logarithmic scale (log10 of the
+    /// The slider's range and step: k, the mass and the size on a logarithmic scale (log10 of the
     /// value), the damping rates on a linear one.
     /// Each spans the game's range for its parameter (`physics::scene`).
     fn slider(self) -> (f32, f32, f32) {
         let (range, step) = match self {
             Self::Stiffness => (STIFFNESS_RANGE, 0.1),
             Self::Mass => (MASS_RANGE, 0.1),
+            Self::Size => (SIZE_RANGE, 0.05),
             Self::LinearDamping => (LINEAR_DAMPING_RANGE, 0.5),
             Self::AngularDamping => (ANGULAR_DAMPING_RANGE, 0.1),
         };
@@ -113,13 +114,14 @@ impl Parameter {
         let value = readable(self.value_at(position));
         match self {
             Self::Stiffness | Self::Mass => value,
+            Self::Size => format!("{value} px"),
             Self::LinearDamping => format!("b {value}"),
             Self::AngularDamping => format!("{value} /s"),
         }
     }
 
     fn logarithmic(self) -> bool {
-        matches!(self, Self::Stiffness | Self::Mass)
+        matches!(self, Self::Stiffness | Self::Mass | Self::Size)
     }
 
     fn slider_position(self, value: f64) -> f32 {
@@ -597,6 +599,7 @@ fn parameter_readout(parameter: Parameter, params: &SceneParams) -> String {
     let value = parameter.get(params);
     match parameter {
         Parameter::Stiffness | Parameter::Mass => readable(value),
+        Parameter::Size => format!("{} px", readable(value)),
         Parameter::LinearDamping => linear_damping_readout(value, params.mass),
         Parameter::AngularDamping => format!("{} /s", readable(value)),
     }

@@ -20,6 +20,8 @@ pub enum Equation {
     Arm,
     /// τ = r × F.
     Torque,
+    /// The centre twin: the same band held at its centre, r = 0, so it never turns.
+    CentrePull,
     /// I = m (w² + h²) / 12.
     Inertia,
     /// α = Στ / I.
@@ -73,6 +75,8 @@ pub struct Chapter {
     /// A few sentences in the project's own words.
     pub text: &'static str,
     pub equations: &'static [Equation],
+    /// A twin of the box beside it, pulled by the same band at its centre ([`super::twin`]).
+    pub centre_twin: bool,
     pub task: Task,
     /// The task, as the player reads it.
     pub ask: &'static str,
@@ -89,6 +93,7 @@ pub const CHAPTERS: [Chapter; 7] = [
                its mass sat there: F\u{a0}=\u{a0}m\u{a0}a, and the box does not turn. Here the band pulls \
                along the diagonal, through the centre.",
         equations: &[Equation::ForceSum, Equation::Acceleration, Equation::Motion],
+        centre_twin: false,
         task: Task::MoveWithoutTurning,
         ask: "pull along a diagonal so that the box moves 40 px without turning",
     },
@@ -105,6 +110,7 @@ pub const CHAPTERS: [Chapter; 7] = [
             Equation::AngularDecay,
             Equation::Inertia,
         ],
+        centre_twin: false,
         task: Task::SpinWithoutDamping,
         ask: "set the angular damping to 0 while it spins: ω stops falling",
     },
@@ -115,13 +121,16 @@ pub const CHAPTERS: [Chapter; 7] = [
         integrator: None,
         text: "A force applied away from the centre still accelerates the centre by F\u{a0}/\u{a0}m, \
                and also turns the box: the torque is the perpendicular dot product of the arm \
-               r, from the centre to the point, with the force.",
+               r, from the centre to the point, with the force. The outline below is a twin \
+               that the same band pulls at its centre: it moves alike and never turns.",
         equations: &[
             Equation::Arm,
             Equation::Torque,
             Equation::Acceleration,
             Equation::AngularAcceleration,
+            Equation::CentrePull,
         ],
+        centre_twin: true,
         task: Task::SpinClockwise,
         ask: "pull so that the box spins clockwise",
     },
@@ -132,14 +141,16 @@ pub const CHAPTERS: [Chapter; 7] = [
         integrator: None,
         text: "The moment of inertia is to turning what mass is to moving: the same torque \
                gives a box with twice the inertia half the angular acceleration. For a box it \
-               grows with the mass and the square of its size.",
+               grows with the mass and the square of its size: the Controls card's mass and \
+               size sliders change both here.",
         equations: &[
             Equation::Inertia,
             Equation::Torque,
             Equation::AngularAcceleration,
         ],
+        centre_twin: false,
         task: Task::DoubleTheInertia,
-        ask: "make the same pull turn the box half as fast: double I with the mass slider",
+        ask: "make the same pull turn the box half as fast: double I (mass ×2, or size ×1.41)",
     },
     Chapter {
         title: "The rubber band",
@@ -149,6 +160,7 @@ pub const CHAPTERS: [Chapter; 7] = [
         text: "The band is a spring of zero rest length between the pointer and the corner \
                nearest it when pressed: its force is k times the stretch, toward the pointer.",
         equations: &[Equation::NearestCorner, Equation::Spring, Equation::Torque],
+        centre_twin: false,
         task: Task::ThreeCorners,
         ask: "press near three different corners: the band takes the nearest each time",
     },
@@ -167,6 +179,7 @@ pub const CHAPTERS: [Chapter; 7] = [
             Equation::Energy,
             Equation::Ledger,
         ],
+        centre_twin: false,
         task: Task::ComeToRest,
         ask: "pull, let go, and watch the energy leave until the box rests",
     },
@@ -181,6 +194,7 @@ pub const CHAPTERS: [Chapter; 7] = [
                carefully: G shows them all beside the box and P plots their error against \
                their cost, the way into the lab.",
         equations: &[Equation::Update],
+        centre_twin: false,
         task: Task::StepFiveTimes,
         ask: "pause (Space) and step (N) five times, reading each line",
     },

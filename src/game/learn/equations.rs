@@ -5,6 +5,7 @@
 use bevy::math::DVec2;
 
 use super::chapters::Equation;
+use super::twin::Twin;
 use crate::game::shared::readable;
 use crate::physics::{BandEnds, BodyState, EnergyLedger, MassProperties, SceneParams};
 
@@ -22,6 +23,8 @@ pub struct Quantities {
     pub band: Option<(DVec2, DVec2)>,
     pub ledger: EnergyLedger,
     pub dt: f64,
+    /// The centre twin's state and its band's anchor while one pulls ([`super::twin`]).
+    pub twin: Option<(BodyState, Option<DVec2>)>,
 }
 
 impl Quantities {
@@ -43,6 +46,23 @@ impl Quantities {
             band: band.map(|band| (band.attachment(&state), band.anchor)),
             ledger,
             dt: params.dt(),
+            twin: None,
+        }
+    }
+
+    /// With the centre twin's numbers, when a chapter shows one.
+    pub fn with_twin(self, twin: Option<&Twin>) -> Self {
+        Self {
+            twin: twin.map(|twin| (twin.stepper.state, twin.anchor())),
+            ..self
+        }
+    }
+
+    /// The twin's band force, −k (x − q) at its centre (zero without a band).
+    pub fn twin_force(&self) -> DVec2 {
+        match self.twin {
+            Some((state, Some(anchor))) => -self.stiffness * (state.linear.position - anchor),
+            _ => DVec2::ZERO,
         }
     }
 
@@ -168,6 +188,20 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
                 n(q.band_torque())
             )]
         }
+        Equation::CentrePull => match q.twin {
+            Some((twin, Some(_))) => vec![
+                format!(
+                    "twin: F = −k (x − q) = {}, a = F / m = {}",
+                    v(q.twin_force()),
+                    v(q.twin_force() / q.mass)
+                ),
+                format!(
+                    "twin: r = 0, τ = 0 × F = 0, θ = {} rad",
+                    n(twin.angular.orientation)
+                ),
+            ],
+            _ => vec!["twin (below): pulled at its centre, r = 0 and τ = 0".to_owned()],
+        },
         Equation::Inertia => vec![format!(
             "I = m (w² + h²) / 12 = {m} × ({}² + {}²) / 12 = {}",
             n(q.size.x),

@@ -6,17 +6,19 @@
 
 pub mod chapters;
 pub mod equations;
+pub mod twin;
 
 use bevy::prelude::*;
 
 use self::chapters::{CHAPTERS, Equation, Task};
 use self::equations::Quantities;
+use self::twin::CentreTwin;
 use crate::game::input::pointer::Grip;
 use crate::game::layout::{Card, Cards, Slot};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::load_scene;
-use crate::game::schedule::{AfterStepsSystems, ScreenSystems};
+use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
 use crate::game::shared::{Overlays, SceneName};
 use crate::game::simulation::{
     Band, EnergyBooks, ResetScene, RigidBox, StepCount, acting_band, body_state, rigid_box,
@@ -33,8 +35,11 @@ pub struct LearnPlugin;
 impl Plugin for LearnPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Learning>()
+            .init_resource::<CentreTwin>()
             .add_observer(learn)
+            .add_observer(twin::restart_on_reset)
             .add_systems(Startup, spawn_card)
+            .add_systems(FixedUpdate, twin::step_twin.in_set(PhysicsSystems::Observe))
             .add_systems(
                 RunFixedMainLoop,
                 check_task
@@ -160,6 +165,7 @@ pub fn go_to(world: &mut World, index: usize) {
     overlays.vectors = true;
     overlays.hud_hidden = false;
     world.resource_mut::<Cards>().set(Card::Learn, true);
+    world.resource_mut::<CentreTwin>().wanted = chapter.centre_twin;
     let inertia = world
         .resource::<SceneParams>()
         .mass_properties()
@@ -179,6 +185,7 @@ pub fn leave(world: &mut World) {
         learning.chapter = None;
         learning.saved.take()
     };
+    world.resource_mut::<CentreTwin>().wanted = false;
     let Some(saved) = saved else {
         return;
     };
@@ -268,7 +275,9 @@ fn check_task(
         }
         Task::SpinClockwise => band.is_some() && state.angular.angular_velocity < -1.0,
         Task::DoubleTheInertia => {
-            progress.inertia_at_start > 0.0 && mass.inertia() >= 2.0 * progress.inertia_at_start
+            // A side times √2 doubles I up to the last bit.
+            let twice = 2.0 * progress.inertia_at_start * (1.0 - 1e-12);
+            progress.inertia_at_start > 0.0 && mass.inertia() >= twice
         }
         Task::ThreeCorners => {
             if let Some(band) = band {
@@ -326,6 +335,7 @@ pub fn equation_colour(equation: Equation) -> Color {
         | Equation::Spring
         | Equation::NearestCorner
         | Equation::LinearDamping => colour::FORCE,
+        Equation::CentrePull => colour::TWIN,
         Equation::Motion => colour::VELOCITY,
         Equation::Arm => colour::ARM,
         Equation::Torque | Equation::AngularAcceleration | Equation::AngularDamping => {
@@ -427,6 +437,7 @@ fn show_chapter(
     learning: Res<Learning>,
     params: Res<SceneParams>,
     books: Res<EnergyBooks>,
+    twin: Res<CentreTwin>,
     boxes: Query<(Entity, &LinearState, &AngularState, &MassProperties), With<RigidBox>>,
     bands: Query<&Band>,
     mut texts: Query<(&LearnText, &mut Text, &mut TextColor)>,
@@ -439,6 +450,7 @@ fn show_chapter(
             acting_band(body, &bands),
             books.ledger,
         )
+        .with_twin(twin.body.as_ref())
     });
     let Some(shown) = chapter_texts(&learning, quantities.as_ref()) else {
         return;

@@ -4,6 +4,7 @@
 //! the address bar, the clipboard and the status line. A link the game cannot take whole is
 //! taken in part, and what was left is named on the status line.
 
+use bevy::math::DVec2;
 use bevy::prelude::*;
 
 use crate::game::replays::playback;
@@ -95,6 +96,9 @@ pub fn open_link(world: &mut World, link: Link) -> Vec<String> {
                 *field = value;
             }
         }
+        if let Some(side) = link.size {
+            params.size = DVec2::splat(side);
+        }
         match params.check_playable() {
             Ok(()) => world.insert_resource(params),
             Err(error) => problems.push(format!("{error}")),
@@ -150,6 +154,8 @@ pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
         link.integrator = (integrator != Integrator::default()).then_some(integrator);
         link.stiffness = differs(params.stiffness, base.stiffness);
         link.mass = differs(params.mass, base.mass);
+        // A square box's side (every scene's box is square).
+        link.size = (params.size != base.size).then_some(params.size.x);
         link.linear_damping = differs(params.linear_damping, base.linear_damping);
         link.angular_damping = differs(params.angular_damping, base.angular_damping);
         link.step_rate_hz = differs(params.step_rate_hz, base.step_rate_hz);

@@ -15,6 +15,7 @@ use crate::game::input::pointer::SceneCamera;
 use crate::game::layout::SceneViewport;
 use crate::game::learn::Learning;
 use crate::game::learn::chapters::{CHAPTERS, Equation};
+use crate::game::learn::twin::CentreTwin;
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::view::{CameraFrame, interpolated_state, shown_area, world_per_pixel};
 use crate::game::shared::Overlays;
@@ -43,6 +44,7 @@ impl Plugin for DrawPlugin {
                 Update,
                 (
                     draw_scene_border,
+                    refill_resized_boxes,
                     draw_boxes,
                     draw_bands,
                     draw_vectors.run_if(|overlays: Res<Overlays>| overlays.vectors),
@@ -60,19 +62,40 @@ fn thicken_lines(mut store: ResMut<GizmoConfigStore>) {
     config.line.width = 2.0;
 }
 
-/// Gives a new box its filled body.
-fn fill_box(add: On<Add, RigidBox>, boxes: Query<&MassProperties>, mut commands: Commands) {
-    let Ok(mass) = boxes.get(add.entity) else {
-        return;
-    };
+/// The size a box's filled body was built for.
+#[derive(Component, Debug, Clone, Copy, PartialEq)]
+struct FilledSize(DVec2);
+
+/// A box's filled body for its size.
+fn box_fill(size: DVec2) -> impl Bundle {
     let rectangle = shapes::Rectangle {
-        extents: mass.size().as_vec2(),
+        extents: size.as_vec2(),
         origin: RectangleOrigin::Center,
         radii: None,
     };
-    commands
-        .entity(add.entity)
-        .insert(ShapeBuilder::with(&rectangle).fill(BOX_FILL).build());
+    (
+        ShapeBuilder::with(&rectangle).fill(BOX_FILL).build(),
+        FilledSize(size),
+    )
+}
+
+/// Gives a new box its filled body.
+fn fill_box(add: On<Add, RigidBox>, boxes: Query<&MassProperties>, mut commands: Commands) {
+    if let Ok(mass) = boxes.get(add.entity) {
+        commands.entity(add.entity).insert(box_fill(mass.size()));
+    }
+}
+
+/// Builds a box's body again when its size changes (the size slider, a link, a replay).
+fn refill_resized_boxes(
+    boxes: Query<(Entity, &MassProperties, &FilledSize), Changed<MassProperties>>,
+    mut commands: Commands,
+) {
+    for (entity, mass, filled) in &boxes {
+        if mass.size() != filled.0 {
+            commands.entity(entity).insert(box_fill(mass.size()));
+        }
+    }
 }
 
 /// Gives a new band a pin at its anchor.
@@ -178,10 +201,12 @@ const TORQUE_RADIUS: f32 = 22.0;
 
 /// Learn mode's pictures of its equations, in their colours: the arm r from the centre to the
 /// band's corner, the torque τ as an arc about the centre in its sense; with no band, the corner
-/// a press would take, nearest the pointer (the rubber band's chapter).
+/// a press would take, nearest the pointer (the rubber band's chapter); the centre twin and
+/// its band.
 fn draw_learning(
     mut gizmos: Gizmos,
     (learning, params, fixed_time): (Res<Learning>, Res<SceneParams>, Res<Time<Fixed>>),
+    twin: Res<CentreTwin>,
     bodies: Query<(Entity, &RenderSnapshots, &MassProperties), With<RigidBox>>,
     bands: Query<&Band>,
     window: Option<Single<&Window>>,
@@ -191,6 +216,22 @@ fn draw_learning(
         return;
     };
     let shows = |equation: Equation| chapter.equations.contains(&equation);
+    if let Some(twin) = &twin.body {
+        let state = RenderSnapshots {
+            previous: twin.previous,
+            current: twin.stepper.state,
+        }
+        .interpolate(fixed_time.overstep_fraction_f64().clamp(0.0, 1.0));
+        let centre = state.linear.position.as_vec2();
+        let pose = Isometry2d::new(centre, Rot2::radians(state.angular.orientation as f32));
+        gizmos.rect_2d(pose, twin.stepper.mass.size().as_vec2(), colour::TWIN);
+        gizmos.cross_2d(pose, 4.0, colour::TWIN);
+        if let Some(anchor) = twin.anchor() {
+            let anchor = anchor.as_vec2();
+            gizmos.line_2d(centre, anchor, band_colour(centre.distance(anchor).into()));
+            gizmos.circle_2d(anchor, PIN_RADIUS, colour::TWIN);
+        }
+    }
     for (body, snapshots, mass) in &bodies {
         let state = interpolated_state(snapshots, &fixed_time);
         let centre = state.linear.position.as_vec2();
