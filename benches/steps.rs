@@ -21,10 +21,8 @@ use rubber_band_box::game::simulation::{
     Band, RigidBox, SimulationPlugin, rigid_box, run_single_threaded,
 };
 use rubber_band_box::measure::references::StiffCase;
-use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
-use rubber_band_box::physics::{
-    BandEnds, BodyState, Integrator, Run, Scenario, SceneParams, Stepper,
-};
+use rubber_band_box::physics::scenes::TUTORIAL_PULL_TARGET;
+use rubber_band_box::physics::{BandEnds, BodyState, Integrator, Run, Scene, SceneParams, Stepper};
 
 fn core_step(c: &mut Criterion) {
     let mut group = c.benchmark_group("core_step");
@@ -67,7 +65,7 @@ fn stiff_auto(c: &mut Criterion) {
         let dt = 1.0 / rate;
         group.bench_function(format!("k{k:e}/{rate}Hz/{}ticks", case.ticks), |b| {
             b.iter(|| {
-                let mut run = Run::of(&case.scenario, Integrator::Auto, dt).expect("valid");
+                let mut run = Run::of(&case.scene, Integrator::Auto, dt).expect("valid");
                 for _ in 0..case.ticks {
                     run.advance().expect("stable");
                 }
@@ -166,9 +164,9 @@ fn ghosts(c: &mut Criterion) {
 }
 
 fn ghost_app(scene: &str, stiffness: Option<f64>, ghosts_on: bool) -> App {
-    let mut scenario = Scenario::named(scene).unwrap();
+    let mut scene = Scene::named(scene).unwrap();
     if let Some(k) = stiffness {
-        scenario.params.stiffness = k;
+        scene.params.stiffness = k;
     }
     let mut app = App::new();
     app.add_plugins(MinimalPlugins)
@@ -176,7 +174,7 @@ fn ghost_app(scene: &str, stiffness: Option<f64>, ghosts_on: bool) -> App {
         .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
             10,
         )))
-        .insert_resource(scenario.params)
+        .insert_resource(scene.params)
         .insert_resource(Overlays {
             ghosts: ghosts_on,
             ..default()
@@ -186,7 +184,7 @@ fn ghost_app(scene: &str, stiffness: Option<f64>, ghosts_on: bool) -> App {
     app.finish();
     app.cleanup();
     app.update();
-    let mass = scenario.params.mass_properties().unwrap();
+    let mass = scene.params.mass_properties().unwrap();
     let world = app.world_mut();
     let body = world
         .query_filtered::<Entity, With<RigidBox>>()

@@ -14,8 +14,7 @@ use crate::game;
 use crate::game::play::PlayOptions;
 use crate::measure::simulate::{ReplayJob, SimulateError, write_replay, write_run};
 use crate::physics::{
-    AutoSettings, BodyState, Integrator, MIN_STEP, Pull, Run, STEP_RATE_RANGE, Scenario,
-    SceneParams,
+    AutoSettings, BodyState, Integrator, MIN_STEP, Pull, Run, STEP_RATE_RANGE, Scene, SceneParams,
 };
 use crate::replay::Replay;
 
@@ -66,8 +65,8 @@ pub struct PlayArgs {
 pub struct SimulateArgs {
     // The lists in the help come from the core's tables, not a copy.
     #[arg(long, default_value = "tutorial", value_parser = parse_scene,
-          help = format!("Named scene: {}", Scenario::NAMES.join(", ")))]
-    pub scene: Scenario,
+          help = format!("Named scene: {}", Scene::NAMES.join(", ")))]
+    pub scene: Scene,
     #[arg(long, value_parser = parse_integrator, help = integrator_help())]
     pub integrator: Option<Integrator>,
     /// Fixed step in seconds, at least a microsecond (wider than the game's range, for
@@ -271,8 +270,8 @@ fn parse_integrator(text: &str) -> Result<Integrator, String> {
     text.parse().map_err(|error| format!("{error}"))
 }
 
-fn parse_scene(text: &str) -> Result<Scenario, String> {
-    Scenario::named(text).map_err(|error| error.to_string())
+fn parse_scene(text: &str) -> Result<Scene, String> {
+    Scene::named(text).map_err(|error| error.to_string())
 }
 
 fn parse_numbers<const N: usize>(text: &str, what: &str) -> Result<[f64; N], String> {

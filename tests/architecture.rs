@@ -243,6 +243,89 @@ fn each_room_imports_only_the_rooms_under_it() {
     );
 }
 
+/// The game's rooms from the bottom up (docs/architecture.md): a room may import its own
+/// level and those under it. `game` itself (mod.rs) and `play` wire everything.
+const GAME_LAYERS: [&[&str]; 9] = [
+    &["schedule", "shared", "theme", "web"],
+    &["simulation", "stability"],
+    &["ghosts", "layout", "pointer"],
+    &["replays"],
+    &["learn"],
+    &["input"],
+    &["hud"],
+    &["screen"],
+    &["play", ""],
+];
+
+/// A game module's room (`game::replays::links` is in `replays`) and its level.
+fn game_layer(module: &str) -> Option<usize> {
+    let room = module.strip_prefix("game")?;
+    let room = room.strip_prefix("::").unwrap_or(room);
+    let room = room.split("::").next().unwrap_or("");
+    GAME_LAYERS.iter().position(|rooms| rooms.contains(&room))
+}
+
+/// Every import inside the game that reaches up a level, as "module -> target".
+fn upward_in_the_game(graph: &BTreeMap<String, BTreeSet<String>>) -> Vec<String> {
+    graph
+        .iter()
+        .filter(|(module, _)| module.starts_with("game"))
+        .flat_map(|(module, imported)| {
+            imported
+                .iter()
+                .filter(|target| target.starts_with("game"))
+                .filter_map(
+                    move |target| match (game_layer(module), game_layer(target)) {
+                        (Some(from), Some(to)) => {
+                            (to > from).then(|| format!("{module} -> {target}"))
+                        }
+                        _ => Some(format!("{module} -> {target} (a room outside GAME_LAYERS)")),
+                    },
+                )
+        })
+        .collect()
+}
+
+#[test]
+fn each_room_of_the_game_imports_only_the_rooms_under_it() {
+    let graph = graph();
+    for module in graph.keys().filter(|module| module.starts_with("game")) {
+        assert!(
+            game_layer(module).is_some(),
+            "{module} is in no room of GAME_LAYERS"
+        );
+    }
+    // The reader sees the edges the levels allow.
+    assert!(graph["game::replays::playback"].contains("game::pointer"));
+    assert!(graph["game::input::controls"].contains("game::replays::scenes"));
+    let upward = upward_in_the_game(&graph);
+    assert!(
+        upward.is_empty(),
+        "imports up a level of the game:\n{}",
+        upward.join("\n")
+    );
+}
+
+#[test]
+fn the_game_check_finds_an_import_up_a_level() {
+    let mut graph = BTreeMap::new();
+    graph.insert(
+        "game::replays::recording".to_owned(),
+        BTreeSet::from([
+            "game::input::controls".to_owned(),
+            "game::pointer".to_owned(),
+        ]),
+    );
+    graph.insert(
+        "game::pointer".to_owned(),
+        BTreeSet::from(["game::layout".to_owned(), "physics".to_owned()]),
+    );
+    assert_eq!(
+        upward_in_the_game(&graph),
+        ["game::replays::recording -> game::input::controls"]
+    );
+}
+
 #[test]
 fn nothing_imports_the_command_line_and_the_shared_leaves_import_no_plugin() {
     let graph = graph();

@@ -200,11 +200,11 @@ fn the_report_says_when_it_cannot_write_its_files() {
     );
 }
 
-/// The named scenes live once, in the core (`Scenario::NAMES`): docs/simulate.md's `--scene` row and the
+/// The named scenes live once, in the core (`Scene::NAMES`): docs/simulate.md's `--scene` row and the
 /// CLI's help name each of them, and the CLI accepts each.
 #[test]
 fn the_docs_and_the_help_name_every_scene_the_core_has() {
-    use rubber_band_box::physics::Scenario;
+    use rubber_band_box::physics::Scene;
     let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/simulate.md"))
         .expect("docs/simulate.md");
     let row = page
@@ -212,13 +212,13 @@ fn the_docs_and_the_help_name_every_scene_the_core_has() {
         .find(|line| line.starts_with("| `--scene NAME` |"))
         .expect("docs/simulate.md documents --scene");
     let listed = row.matches("`").count() / 2 - 1;
-    assert_eq!(listed, Scenario::NAMES.len(), "{row}");
+    assert_eq!(listed, Scene::NAMES.len(), "{row}");
     let help = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
         .args(["simulate", "--help"])
         .output()
         .expect("the binary runs");
     let help = String::from_utf8_lossy(&help.stdout).replace('\n', " ");
-    for name in Scenario::NAMES {
+    for name in Scene::NAMES {
         assert!(
             row.contains(&format!("`{name}`")),
             "docs/simulate.md lacks {name}"
@@ -273,7 +273,7 @@ fn last_row(args: &[&str]) -> Vec<f64> {
 /// value and differs from the run without it.
 #[test]
 fn the_scene_overrides_change_what_they_name() {
-    use rubber_band_box::physics::{Integrator, Run, Scenario};
+    use rubber_band_box::physics::{Integrator, Run, Scene};
     let base = ["--integrator", "rk4", "--steps", "50"];
     let plain = last_row(&base);
     for (flag, value) in [
@@ -289,8 +289,8 @@ fn the_scene_overrides_change_what_they_name() {
         args.extend([flag, text.as_str()]);
         let row = last_row(&args);
         assert_ne!(row[2..8], plain[2..8], "{flag} changed nothing");
-        let scenario = Scenario::named("tutorial").unwrap();
-        let mut params = scenario.params;
+        let scene = Scene::named("tutorial").unwrap();
+        let mut params = scene.params;
         match flag {
             "--k" => params.stiffness = value,
             "--mass" => params.mass = value,
@@ -301,8 +301,8 @@ fn the_scene_overrides_change_what_they_name() {
         }
         let mut run = Run::new(
             params,
-            scenario.initial,
-            scenario.pulls_in_steps(0.01),
+            scene.initial,
+            scene.pulls_in_steps(0.01),
             Integrator::Rk4,
             0.01,
         )

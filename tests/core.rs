@@ -398,12 +398,12 @@ fn angular_momentum_and_the_bands_rate_by_hand() {
 /// them by name).
 #[test]
 fn each_named_scene_is_what_it_says() {
-    use rubber_band_box::physics::Scenario;
-    use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
+    use rubber_band_box::physics::Scene;
+    use rubber_band_box::physics::scenes::TUTORIAL_PULL_TARGET;
     let tutorial = SceneParams::tutorial();
     let held = f64::INFINITY;
-    for name in Scenario::NAMES {
-        let s = Scenario::named(name).unwrap();
+    for name in Scene::NAMES {
+        let s = Scene::named(name).unwrap();
         assert_eq!(s.name, name);
         let spin = s.initial.angular.angular_velocity;
         let targets: Vec<DVec2> = s.pulls.iter().map(|p| p.2).collect();
@@ -432,5 +432,5 @@ fn each_named_scene_is_what_it_says() {
             other => panic!("a scene this test does not know: {other}"),
         }
     }
-    assert!(Scenario::named("moon").is_err());
+    assert!(Scene::named("moon").is_err());
 }

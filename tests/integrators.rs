@@ -3,17 +3,17 @@
 use bevy::math::DVec2;
 use rubber_band_box::measure::references::diagonal_exact;
 use rubber_band_box::measure::report::hard_cases;
-use rubber_band_box::physics::scenario::TUTORIAL_PULL_TARGET;
+use rubber_band_box::physics::scenes::TUTORIAL_PULL_TARGET;
 use rubber_band_box::physics::{
-    AutoSettings, BodyState, Integrator, Pull, Run, Scenario, SceneParams, Stepper,
+    AutoSettings, BodyState, Integrator, Pull, Run, Scene, SceneParams, Stepper,
     angular_momentum_about,
 };
 
 /// The largest pose error against the closed form over 2 s of the diagonal pull.
 fn diagonal_error(integrator: Integrator, dt: f64) -> f64 {
-    let scenario = Scenario::named("diagonal").unwrap();
-    let mass = scenario.params.mass_properties().unwrap();
-    let mut run = Run::of(&scenario, integrator, dt).unwrap();
+    let scene = Scene::named("diagonal").unwrap();
+    let mass = scene.params.mass_properties().unwrap();
+    let mut run = Run::of(&scene, integrator, dt).unwrap();
     let steps = (2.0 / dt).round() as u64;
     let mut worst: f64 = 0.0;
     for _ in 0..steps {
@@ -60,7 +60,7 @@ fn each_integrator_converges_on_the_diagonal_pull_at_its_order() {
 #[test]
 fn no_integrator_turns_the_box_on_the_diagonal_pull() {
     for integrator in Integrator::ALL {
-        let mut run = Run::of(&Scenario::named("diagonal").unwrap(), integrator, 0.01).unwrap();
+        let mut run = Run::of(&Scene::named("diagonal").unwrap(), integrator, 0.01).unwrap();
         for _ in 0..500 {
             run.advance().unwrap();
             let s = run.stepper.state;
@@ -82,8 +82,8 @@ struct InvariantDrift {
 }
 
 fn undamped_drift(integrator: Integrator, steps: u64) -> Result<InvariantDrift, u64> {
-    let scenario = Scenario::named("undamped").unwrap();
-    let mut run = Run::of(&scenario, integrator, 0.01).unwrap();
+    let scene = Scene::named("undamped").unwrap();
+    let mut run = Run::of(&scene, integrator, 0.01).unwrap();
     let mass = run.stepper.mass;
     let anchor = TUTORIAL_PULL_TARGET;
     let e0 = run.stepper.energy();
@@ -382,7 +382,7 @@ fn seed_reproduces_the_tutorials_trajectory_to_round_off() {
 fn the_default_integrator_never_diverges_on_a_hard_case() {
     let default = Integrator::default();
     for case in hard_cases(true) {
-        let mut run = Run::of(&case.scenario, default, 1.0 / case.rate).unwrap();
+        let mut run = Run::of(&case.scene, default, 1.0 / case.rate).unwrap();
         // `Ok` is the check: every step taken, every state sane and within the energy bound.
         run.advance_by(case.steps)
             .unwrap_or_else(|d| panic!("{}: {d}", case.name));
@@ -394,7 +394,7 @@ fn every_integrator_stays_bounded_or_reports_its_divergence() {
     let mut diverged = Vec::new();
     for case in hard_cases(true) {
         for integrator in Integrator::ALL {
-            let mut run = Run::of(&case.scenario, integrator, 1.0 / case.rate).unwrap();
+            let mut run = Run::of(&case.scene, integrator, 1.0 / case.rate).unwrap();
             // `Ok` needs no check: it already means every step was taken, every state sane.
             if let Err(d) = run.advance_by(case.steps) {
                 // Reported at the step refused; the run stays at the last sane state.
@@ -415,7 +415,7 @@ fn every_integrator_stays_bounded_or_reports_its_divergence() {
 /// the box near the limit, moving outward at 1000 px/s, leaves it at step 3 of 0.01 s.
 #[test]
 fn a_run_refuses_the_first_step_that_leaves_the_state_limit() {
-    let undamped = Scenario::named("undamped").unwrap().params;
+    let undamped = Scene::named("undamped").unwrap().params;
     let near_limit = BodyState::from_array([1e12 - 25.0, 0.0, 0.0, 1000.0, 0.0, 0.0]);
     let mut run = Run::new(undamped, near_limit, vec![], Integrator::Rk4, 0.01).unwrap();
     run.advance_by(2).unwrap();
@@ -432,7 +432,7 @@ fn a_run_refuses_the_first_step_that_leaves_the_state_limit() {
 /// alone would fire steps earlier).
 #[test]
 fn a_run_refuses_the_first_step_whose_energy_leaves_every_physical_bound() {
-    let stiff = Scenario::named("stiff").unwrap().params;
+    let stiff = Scene::named("stiff").unwrap().params;
     let corner = DVec2::new(30.0, 30.0);
     let pull = Pull {
         start: 0,
@@ -478,7 +478,7 @@ fn a_run_refuses_the_first_step_whose_energy_leaves_every_physical_bound() {
 #[test]
 fn a_zero_length_band_exerts_nothing() {
     for integrator in Integrator::ALL {
-        let mut run = Run::of(&Scenario::named("zero-length").unwrap(), integrator, 0.01).unwrap();
+        let mut run = Run::of(&Scene::named("zero-length").unwrap(), integrator, 0.01).unwrap();
         run.advance_by(100).unwrap();
         assert_eq!(run.stepper.state, BodyState::default(), "{integrator}");
     }
@@ -486,9 +486,9 @@ fn a_zero_length_band_exerts_nothing() {
 
 #[test]
 fn the_implicit_step_holds_a_very_stiff_band_at_its_corner() {
-    let mut scenario = Scenario::named("stiff").unwrap();
-    scenario.params.stiffness = 1e9;
-    let mut run = Run::of(&scenario, Integrator::Implicit, 1.0 / 64.0).unwrap();
+    let mut scene = Scene::named("stiff").unwrap();
+    scene.params.stiffness = 1e9;
+    let mut run = Run::of(&scene, Integrator::Implicit, 1.0 / 64.0).unwrap();
     run.advance_by(640).unwrap();
     let band = run.stepper.band.unwrap();
     assert!(band.length(&run.stepper.state) < 1e-3);
@@ -527,9 +527,9 @@ fn auto_meets_its_tolerance_at_any_step() {
 fn auto_takes_more_substeps_for_a_stiffer_band_and_falls_back_beyond_its_budget() {
     let settings = AutoSettings::default();
     let substeps_at = |k: f64| {
-        let mut scenario = Scenario::named("stiff").unwrap();
-        scenario.params.stiffness = k;
-        let mut run = Run::of(&scenario, Integrator::Auto, 0.01).unwrap();
+        let mut scene = Scene::named("stiff").unwrap();
+        scene.params.stiffness = k;
+        let mut run = Run::of(&scene, Integrator::Auto, 0.01).unwrap();
         run.advance().unwrap();
         run.last_step
     };
@@ -548,9 +548,9 @@ fn auto_takes_more_substeps_for_a_stiffer_band_and_falls_back_beyond_its_budget(
     assert!(stiffest.fell_back, "{stiffest:?}");
 
     // Fall-backs are counted, and the run stays bounded.
-    let mut scenario = Scenario::named("stiff").unwrap();
-    scenario.params.stiffness = 1e9;
-    let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / 64.0).unwrap();
+    let mut scene = Scene::named("stiff").unwrap();
+    scene.params.stiffness = 1e9;
+    let mut run = Run::of(&scene, Integrator::Auto, 1.0 / 64.0).unwrap();
     run.advance_by(640).unwrap();
     // Every step: the band is held throughout and its rate, 2 sqrt(k/m) = 28284/s, needs
     // about 28284 / 64 / 0.3 = 1474 Taylor steps a fixed step, past the budget of 200.
@@ -575,9 +575,9 @@ fn autos_engine_converges_at_the_order_of_its_series_on_the_diagonal_pull() {
         let errors: Vec<f64> = [0.2, 0.1, 0.05]
             .iter()
             .map(|&dt| {
-                let scenario = Scenario::named("diagonal").unwrap();
-                let mass = scenario.params.mass_properties().unwrap();
-                let mut run = Run::of(&scenario, Integrator::Auto, dt).unwrap();
+                let scene = Scene::named("diagonal").unwrap();
+                let mass = scene.params.mass_properties().unwrap();
+                let mut run = Run::of(&scene, Integrator::Auto, dt).unwrap();
                 run.stepper.auto = one_step_per_fixed_step(order);
                 let mut worst: f64 = 0.0;
                 for _ in 0..(2.0 / dt).round() as u64 {
@@ -621,10 +621,10 @@ fn auto_meets_the_stiff_targets_at_each_horizon_without_falling_back() {
     let references = stiff_references();
     assert_eq!(references.len(), 10);
     for (k, rate, ticks, reference, agreement) in references {
-        let mut scenario = Scenario::named("stiff").unwrap();
-        scenario.params.stiffness = k;
-        let mass = scenario.params.mass_properties().unwrap();
-        let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
+        let mut scene = Scene::named("stiff").unwrap();
+        scene.params.stiffness = k;
+        let mass = scene.params.mass_properties().unwrap();
+        let mut run = Run::of(&scene, Integrator::Auto, 1.0 / rate).unwrap();
         run.advance_by(ticks).unwrap();
         let error = run.stepper.state.pose_error(&reference, &mass);
         // The targets of the stiffness table (docs/report.md); the fixture's two solutions agree to well
@@ -643,9 +643,9 @@ fn auto_meets_the_stiff_targets_at_each_horizon_without_falling_back() {
 fn beyond_every_horizon_auto_falls_back_counts_it_and_never_gains_energy() {
     for k in [1e8, 1e9, 1e12] {
         for rate in [100.0, 64.0] {
-            let mut scenario = Scenario::named("undamped").unwrap();
-            scenario.params.stiffness = k;
-            let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
+            let mut scene = Scene::named("undamped").unwrap();
+            scene.params.stiffness = k;
+            let mut run = Run::of(&scene, Integrator::Auto, 1.0 / rate).unwrap();
             let e0 = run.stepper.energy();
             let mut previous = e0;
             let steps = (10.0 * rate) as u64;
@@ -669,9 +669,9 @@ fn beyond_every_horizon_auto_falls_back_counts_it_and_never_gains_energy() {
 #[test]
 fn the_ledger_balances_on_stiff_pulls_where_auto_did_not_fall_back() {
     for (k, rate, ticks, _, _) in stiff_references() {
-        let mut scenario = Scenario::named("stiff").unwrap();
-        scenario.params.stiffness = k;
-        let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
+        let mut scene = Scene::named("stiff").unwrap();
+        scene.params.stiffness = k;
+        let mut run = Run::of(&scene, Integrator::Auto, 1.0 / rate).unwrap();
         for _ in 0..ticks {
             run.advance().unwrap();
             let residual = run.ledger.residual(run.stepper.energy()).abs();
@@ -688,9 +688,9 @@ fn the_ledger_balances_on_stiff_pulls_where_auto_did_not_fall_back() {
 
 #[test]
 fn a_tighter_budget_makes_auto_fall_back_sooner() {
-    let mut scenario = Scenario::named("stiff").unwrap();
-    scenario.params.stiffness = 1e5;
-    let mut run = Run::of(&scenario, Integrator::Auto, 0.01).unwrap();
+    let mut scene = Scene::named("stiff").unwrap();
+    scene.params.stiffness = 1e5;
+    let mut run = Run::of(&scene, Integrator::Auto, 0.01).unwrap();
     // k = 1e5 at 100 Hz needs about ten Taylor steps a fixed step.
     run.stepper.auto = AutoSettings {
         max_substeps: 2,
@@ -708,8 +708,8 @@ fn a_tighter_budget_makes_auto_fall_back_sooner() {
 #[test]
 fn soak_ten_million_undamped_steps() {
     let steps = 10_000_000;
-    let scenario = Scenario::named("undamped").unwrap();
-    let mut run = Run::of(&scenario, Integrator::default(), 0.01).unwrap();
+    let scene = Scene::named("undamped").unwrap();
+    let mut run = Run::of(&scene, Integrator::default(), 0.01).unwrap();
     let mass = run.stepper.mass;
     let e0 = run.stepper.energy();
     let l0 = angular_momentum_about(&run.stepper.state, &mass, TUTORIAL_PULL_TARGET);
@@ -738,8 +738,8 @@ fn soak_ten_million_undamped_steps() {
 /// The largest ledger residual over a run of the seed scene (pulled 2 s, released, 4 s),
 /// relative to the energy that passed through.
 fn ledger_residual(integrator: Integrator, dt: f64) -> f64 {
-    let scenario = Scenario::named("tutorial").unwrap();
-    let mut run = Run::of(&scenario, integrator, dt).unwrap();
+    let scene = Scene::named("tutorial").unwrap();
+    let mut run = Run::of(&scene, integrator, dt).unwrap();
     let mut worst: f64 = 0.0;
     for _ in 0..(4.0 / dt).round() as u64 {
         run.advance().unwrap();
@@ -1056,13 +1056,13 @@ fn dop853_meets_the_stiff_references_and_trades_accuracy_for_work_by_its_toleran
     use rubber_band_box::physics::integrators::dop853;
     for (k, rate, ticks, reference, _) in stiff_references().into_iter().filter(|&(k, ..)| k <= 1e5)
     {
-        let mut scenario = Scenario::named("stiff").unwrap();
-        scenario.params.stiffness = k;
-        let mass = scenario.params.mass_properties().unwrap();
+        let mut scene = Scene::named("stiff").unwrap();
+        scene.params.stiffness = k;
+        let mass = scene.params.mass_properties().unwrap();
         // The stiff pull, each fixed step one DOP853 integration; a budget, so that a broken
         // controller fails here rather than loops.
         let run = |tolerance: f64| -> (BodyState, u32) {
-            let mut stepper = Stepper::new(scenario.params).unwrap();
+            let mut stepper = Stepper::new(scene.params).unwrap();
             stepper.grab(TUTORIAL_PULL_TARGET);
             let model = stepper.model();
             let (mut state, mut attempts) = (stepper.state, 0);
@@ -1138,7 +1138,7 @@ fn dop853_follows_damped_free_motion_and_integrates_what_damping_takes() {
 #[test]
 fn dop853_gives_up_a_step_beyond_its_budget() {
     use rubber_band_box::physics::integrators::dop853;
-    let mut stepper = Stepper::new(Scenario::named("stiff").unwrap().params).unwrap();
+    let mut stepper = Stepper::new(Scene::named("stiff").unwrap().params).unwrap();
     stepper.params.stiffness = 1e6;
     stepper.grab(TUTORIAL_PULL_TARGET);
     let model = stepper.model();
@@ -1254,7 +1254,7 @@ fn autos_engine_never_lets_a_fast_decay_grow() {
 /// back.
 #[test]
 fn auto_pulls_the_far_anchor_without_falling_back() {
-    let far = Scenario::named("far").unwrap();
+    let far = Scene::named("far").unwrap();
     let mut run = Run::of(&far, Integrator::Auto, 0.01).unwrap();
     run.advance_by(200).unwrap();
     assert_eq!(run.fallbacks, 0);
@@ -1273,12 +1273,12 @@ fn the_engines_error_follows_their_tolerance() {
         .into_iter()
         .find(|&(k, rate, ..)| k == 1e4 && rate == 100.0)
         .unwrap();
-    let mut scenario = Scenario::named("stiff").unwrap();
-    scenario.params.stiffness = k;
-    let mass = scenario.params.mass_properties().unwrap();
+    let mut scene = Scene::named("stiff").unwrap();
+    scene.params.stiffness = k;
+    let mass = scene.params.mass_properties().unwrap();
     let tolerances = [1e-3, 1e-5, 1e-7];
     let dop853_error = |tolerance: f64| {
-        let mut stepper = Stepper::new(scenario.params).unwrap();
+        let mut stepper = Stepper::new(scene.params).unwrap();
         stepper.grab(TUTORIAL_PULL_TARGET);
         let model = stepper.model();
         let mut state = stepper.state;
@@ -1291,7 +1291,7 @@ fn the_engines_error_follows_their_tolerance() {
         state.pose_error(&reference, &mass)
     };
     let auto_error = |tolerance: f64| {
-        let mut run = Run::of(&scenario, Integrator::Auto, 1.0 / rate).unwrap();
+        let mut run = Run::of(&scene, Integrator::Auto, 1.0 / rate).unwrap();
         run.stepper.auto.tolerance = tolerance;
         run.advance_by(ticks).unwrap();
         assert_eq!(run.fallbacks, 0);
@@ -1316,7 +1316,7 @@ fn the_engines_error_follows_their_tolerance() {
 /// stops there, in one Taylor step, instead of computing all twenty.
 #[test]
 fn autos_series_stops_early_on_a_soft_band() {
-    let tutorial = Scenario::named("tutorial").unwrap();
+    let tutorial = Scene::named("tutorial").unwrap();
     let mut run = Run::of(&tutorial, Integrator::Auto, 0.01).unwrap();
     let mut orders = Vec::new();
     for _ in 0..300 {

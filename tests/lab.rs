@@ -10,7 +10,7 @@ use rubber_band_box::game::input::controls::{
 };
 use rubber_band_box::game::replays::playback::{Playback, PlaybackEnd};
 use rubber_band_box::game::shared::SceneName;
-use rubber_band_box::physics::{BodyState, Integrator, Scenario};
+use rubber_band_box::physics::{BodyState, Integrator, Scene};
 
 fn lab() -> Game {
     Game::keeping_trajectory(Duration::from_secs_f64(1.0 / 60.0), |_| {})
@@ -182,21 +182,21 @@ fn ghosts_restart_with_a_reset_and_a_scene_and_go_when_switched_off() {
 /// which the game steps to the core's bits.
 #[test]
 fn number_keys_load_the_core_scenes_and_play_their_scripts() {
-    for (key, name) in SCENE_KEYS.iter().zip(Scenario::NAMES) {
-        let scenario = Scenario::named(name).unwrap();
+    for (key, name) in SCENE_KEYS.iter().zip(Scene::NAMES) {
+        let scene = Scene::named(name).unwrap();
         let mut game = lab();
         game.tap_key(*key);
         game.update(2);
         let params = *game.world().resource::<SceneParams>();
-        assert_eq!(params.stiffness, scenario.params.stiffness, "{name}");
-        assert_eq!(params.mass, scenario.params.mass, "{name}");
+        assert_eq!(params.stiffness, scene.params.stiffness, "{name}");
+        assert_eq!(params.mass, scene.params.mass, "{name}");
         assert_eq!(params.step_rate_hz, 100.0, "{name}");
         assert_eq!(game.world().resource::<SceneName>().0, name);
         let line = game.hud(HudLine::SceneName);
-        assert_eq!(line, format!("scene {name}: {}", scenario.summary));
+        assert_eq!(line, format!("scene {name}: {}", scene.summary));
         assert_eq!(
             game.bands().len(),
-            usize::from(!scenario.pulls.is_empty()),
+            usize::from(!scene.pulls.is_empty()),
             "{name}"
         );
         for _ in 0..1000 {

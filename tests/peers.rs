@@ -9,13 +9,13 @@ use rubber_band_box::measure::peers::ours::Ours;
 use rubber_band_box::measure::peers::rapier::Rapier;
 use rubber_band_box::measure::peers::{Contender, PeerRun, unwrap_angle};
 use rubber_band_box::measure::references::reference_state;
-use rubber_band_box::physics::{BodyState, Integrator, Run, Scenario};
+use rubber_band_box::physics::{BodyState, Integrator, Run, Scene};
 
 #[test]
 fn our_contender_steps_exactly_as_the_core() {
-    let scenario = Scenario::named("tutorial").unwrap();
-    let mut app = PeerRun::<Ours>::of(&scenario, 100.0);
-    let mut core = Run::of(&scenario, Integrator::Auto, 0.01).unwrap();
+    let scene = Scene::named("tutorial").unwrap();
+    let mut app = PeerRun::<Ours>::of(&scene, 100.0);
+    let mut core = Run::of(&scene, Integrator::Auto, 0.01).unwrap();
     for _ in 0..300 {
         app.advance();
         core.advance().unwrap();
@@ -26,12 +26,12 @@ fn our_contender_steps_exactly_as_the_core() {
 /// A box at rest with no band stays at rest, and a pulled one moves toward the anchor and
 /// ends near the reference: the set-up (mass, damping, spring, no gravity) is the scene's.
 fn holds_the_scene<C: Contender>(tolerance: f64) {
-    let rest = Scenario::named("rest").unwrap();
+    let rest = Scene::named("rest").unwrap();
     let mut run = PeerRun::<C>::of(&rest, 100.0);
     run.advance_by(50);
     assert_eq!(run.state(), BodyState::default(), "{}", C::NAME);
 
-    let tutorial = Scenario::named("tutorial").unwrap();
+    let tutorial = Scene::named("tutorial").unwrap();
     let mut run = PeerRun::<C>::of(&tutorial, 100.0);
     run.advance_by(400);
     let reference = reference_state(&tutorial, 4.0, 1e-4);
@@ -53,7 +53,7 @@ fn rapier_holds_the_scene() {
 fn a_released_band_stops_pulling() {
     // Pulled for 2 s then released: afterwards only damping acts, so the speed only falls.
     fn speeds<C: Contender>() -> Vec<f64> {
-        let tutorial = Scenario::named("tutorial").unwrap();
+        let tutorial = Scene::named("tutorial").unwrap();
         let mut run = PeerRun::<C>::of(&tutorial, 100.0);
         run.advance_by(201);
         (0..100)
@@ -84,7 +84,7 @@ fn angles_unwrap_to_the_nearest_turn() {
 #[test]
 fn the_band_acts_from_the_first_step() {
     fn first_step<C: Contender>() -> BodyState {
-        let tutorial = Scenario::named("tutorial").unwrap();
+        let tutorial = Scene::named("tutorial").unwrap();
         let mut run = PeerRun::<C>::of(&tutorial, 100.0);
         run.advance();
         run.state()
@@ -109,7 +109,7 @@ fn the_band_acts_from_the_first_step() {
 /// cannot hold stays exact).
 fn never_sleeps_and_is_not_speed_capped<C: Contender>() {
     // Released at 2 s, then damped at b/m = 1 /s: by 10 s a few hundredths of a px/s.
-    let tutorial = Scenario::named("tutorial").unwrap();
+    let tutorial = Scene::named("tutorial").unwrap();
     let mut run = PeerRun::<C>::of(&tutorial, 100.0);
     run.advance_by(900);
     let at_9_s = run.state().linear.velocity.length();
@@ -127,7 +127,7 @@ fn never_sleeps_and_is_not_speed_capped<C: Contender>() {
         C::NAME
     );
 
-    let far = Scenario::named("far").unwrap();
+    let far = Scene::named("far").unwrap();
     let mut run = PeerRun::<C>::of(&far, 100.0);
     run.advance_by(10);
     let speed = run.state().linear.velocity.length();
@@ -146,10 +146,10 @@ fn bevy_rapier2d_never_sleeps_and_is_not_speed_capped() {
 
 #[test]
 fn avian2d_keeps_f64_positions_with_no_transform_round_trip() {
-    let mut scenario = Scenario::named("rest").unwrap();
-    scenario.initial.linear.position.x = 1000.1;
+    let mut scene = Scene::named("rest").unwrap();
+    scene.initial.linear.position.x = 1000.1;
     assert_ne!(f64::from(1000.1_f32), 1000.1);
-    let mut run = PeerRun::<Avian>::of(&scenario, 100.0);
+    let mut run = PeerRun::<Avian>::of(&scene, 100.0);
     run.advance_by(10);
     assert_eq!(run.state().linear.position.x, 1000.1);
 }

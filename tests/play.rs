@@ -9,7 +9,7 @@ use rubber_band_box::game::play::{PlayOptions, prepare};
 use rubber_band_box::game::replays::playback::Playback;
 use rubber_band_box::game::replays::recording::Recorder;
 use rubber_band_box::game::shared::SceneName;
-use rubber_band_box::physics::{AutoSettings, Integrator, Scenario, SceneParams};
+use rubber_band_box::physics::{AutoSettings, Integrator, Scene, SceneParams};
 use rubber_band_box::replay::script::scene_replay;
 
 /// A scratch folder of this test process.
@@ -85,7 +85,7 @@ fn recording_into_a_missing_folder_is_refused_before_the_game_starts() {
 
 #[test]
 fn a_replay_starts_the_game_with_its_scene_settings_and_integrator() {
-    let scene = Scenario::named("stiff").unwrap();
+    let scene = Scene::named("stiff").unwrap();
     let replay = scene_replay(
         &scene,
         1.0 / 128.0,

@@ -16,7 +16,7 @@ use proptest::prelude::*;
 
 use common::Game;
 use rubber_band_box::game::input::controls;
-use rubber_band_box::game::input::pointer::Grip;
+use rubber_band_box::game::pointer::Grip;
 use rubber_band_box::game::simulation::{ForceAccumulator, RigidBox, Tap};
 use rubber_band_box::physics::{
     AngularState, BodyState, Integrator, LinearState, MIN_STEP, Pull, Run, SceneParams, Stepper,
@@ -118,7 +118,7 @@ proptest! {
                 // Stepped by hand, one step at a time, every step before the reported one
                 // is sane and the run reaches the very state it was left at.
                 // Alongside, the refusal bound recomputed from the run's inputs (see
-                // `DIVERGENCE_FACTOR`, src/physics/scenario.rs): 1e3 times the reachable energy,
+                // `DIVERGENCE_FACTOR`, src/physics/scenes.rs): 1e3 times the reachable energy,
                 // the initial kinetic energy plus the band's energy at each attachment, plus 1 J.
                 let active = |step: u64| {
                     pulls.iter().rposition(|pull| pull.start <= step && step < pull.end)

@@ -26,11 +26,7 @@ impl Plugin for GhostsPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Ghosts>()
             .add_observer(restart_on_reset)
-            .add_systems(
-                FixedUpdate,
-                // The step's band is in the accumulator between these two.
-                step_ghosts.in_set(PhysicsSystems::Observe),
-            );
+            .add_systems(FixedUpdate, step_ghosts.in_set(PhysicsSystems::Observe));
     }
 }
 

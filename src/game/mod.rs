@@ -10,12 +10,13 @@
 //! - [`layout`]: the window's regions: the scene's viewport, the status and hint lines, the
 //!   dock of instrument cards;
 //! - [`simulation`]: the physics plugin that steps the core in `FixedUpdate`;
-//! - [`input`]: the pointer, the keys and the on-screen panel, which all send actions;
+//! - [`pointer`]: the mouse and the finger, which hold the band;
 //! - [`replays`]: the game's side of replays and scenes: recording, playback, the scenes on
 //!   the number keys, links opened and shared;
 //! - [`ghosts`]: every integrator and a reference stepping beside the live box;
 //! - [`learn`]: learn mode, the tutorial's chapters with their equations live;
 //! - [`stability`]: each integrator's distance from instability at the present settings;
+//! - [`input`]: the keys and the on-screen panel, which send the same actions;
 //! - [`hud`]: the heads-up display's text, its energy history and the window title;
 //! - [`screen`]: the cameras, interpolation, drawing and the dock's charts (need a window);
 //! - `web`, in the browser only: the page's side (downloads, files opened, what the page
@@ -27,6 +28,7 @@ pub mod input;
 pub mod layout;
 pub mod learn;
 pub mod play;
+pub mod pointer;
 pub mod replays;
 pub mod schedule;
 pub mod screen;
@@ -51,7 +53,7 @@ impl Plugin for GameLogicPlugin {
             theme::ThemePlugin,
             layout::LayoutPlugin,
             simulation::SimulationPlugin,
-            input::pointer::PointerPlugin,
+            pointer::PointerPlugin,
             input::controls::ControlsPlugin,
             replays::recording::RecordingPlugin,
             replays::playback::PlaybackPlugin,

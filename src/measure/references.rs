@@ -10,14 +10,14 @@ use bevy::math::DVec2;
 use crate::physics::integrators::dop853;
 use crate::physics::integrators::taylor::{self, TaylorSettings};
 use crate::physics::{
-    AutoSettings, BandEnds, BodyState, Integrator, MassProperties, Run, Scenario, SceneParams,
+    AutoSettings, BandEnds, BodyState, Integrator, MassProperties, Run, Scene, SceneParams,
 };
 use crate::replay::Replay;
 use crate::replay::run::ReplayRun;
 
 /// A scene of the work-precision sweep and how its reference is obtained.
 pub struct WorkScene {
-    pub scenario: Scenario,
+    pub scene: Scene,
     /// Simulated time; short for the chaotic stiff band.
     pub horizon: f64,
     /// Step of the fine RK4 reference (unused where the answer is exact).
@@ -28,39 +28,39 @@ pub struct WorkScene {
 }
 
 /// The converged answer of a work scene at time `t`.
-pub fn work_reference(scene: &WorkScene, t: f64) -> BodyState {
-    match scene.exact {
+pub fn work_reference(work: &WorkScene, t: f64) -> BodyState {
+    match work.exact {
         Some(exact) => exact(t),
-        None => reference_state(&scene.scenario, t, scene.reference_step),
+        None => reference_state(&work.scene, t, work.reference_step),
     }
 }
 
 pub fn work_scenes() -> Vec<WorkScene> {
-    let named = |name: &str| Scenario::named(name).expect("a built-in scene");
+    let named = |name: &str| Scene::named(name).expect("a built-in scene");
     vec![
         WorkScene {
-            scenario: named("diagonal"),
+            scene: named("diagonal"),
             horizon: 4.0,
             reference_step: 0.0,
             exact: Some(diagonal_exact),
             energy_invariant: false,
         },
         WorkScene {
-            scenario: named("tutorial"),
+            scene: named("tutorial"),
             horizon: 4.0,
             reference_step: 1e-5,
             exact: None,
             energy_invariant: false,
         },
         WorkScene {
-            scenario: named("stiff"),
+            scene: named("stiff"),
             horizon: 0.1,
             reference_step: 1e-6,
             exact: None,
             energy_invariant: false,
         },
         WorkScene {
-            scenario: named("undamped"),
+            scene: named("undamped"),
             horizon: 10.0,
             reference_step: 1e-5,
             exact: None,
@@ -86,11 +86,11 @@ pub fn diagonal_exact(t: f64) -> BodyState {
     state
 }
 
-/// A fine RK4 run of `scenario` to time `t`, with an even number of steps so that pulls at
+/// A fine RK4 run of `scene` to time `t`, with an even number of steps so that pulls at
 /// whole seconds fall on step boundaries.
-pub fn reference_state(scenario: &Scenario, t: f64, step: f64) -> BodyState {
+pub fn reference_state(scene: &Scene, t: f64, step: f64) -> BodyState {
     let n = ((t / step).ceil() as u64).max(2).next_multiple_of(2);
-    let mut run = Run::of(scenario, Integrator::Rk4, t / n as f64).expect("valid scene");
+    let mut run = Run::of(scene, Integrator::Rk4, t / n as f64).expect("valid scene");
     run.advance_by(n)
         .expect("the reference converges on every built-in scene");
     run.stepper.state
@@ -153,16 +153,16 @@ impl Engine {
 /// A stiff pull (one pull, held from the start) run by `engine`: the final state and the
 /// force evaluations (Taylor: coefficient orders) per fixed step; None if the engine gave up.
 pub fn run_engine(
-    scenario: &Scenario,
+    scene: &Scene,
     rate: f64,
     ticks: u64,
     engine: Engine,
 ) -> Option<(BodyState, f64)> {
-    let mass = scenario.params.mass_properties().ok()?;
-    let band = BandEnds::grabbing(&mass, &scenario.initial, scenario.pulls.first()?.2);
-    let model = scenario.params.force_model(mass, Some(band));
+    let mass = scene.params.mass_properties().ok()?;
+    let band = BandEnds::grabbing(&mass, &scene.initial, scene.pulls.first()?.2);
+    let model = scene.params.force_model(mass, Some(band));
     let dt = 1.0 / rate;
-    let mut state = scenario.initial;
+    let mut state = scene.initial;
     let mut evaluations = 0.0;
     for _ in 0..ticks {
         match engine {
@@ -210,30 +210,30 @@ pub struct StiffCase {
     pub k: f64,
     pub rate: f64,
     pub ticks: u64,
-    pub scenario: Scenario,
+    pub scene: Scene,
     pub reference: Option<StiffReference>,
 }
 
 impl StiffCase {
     pub fn new(k: f64, rate: f64) -> Self {
         let Some(horizon) = resolvable_horizon(k) else {
-            let mut scenario = Scenario::named("undamped").expect("built-in");
-            scenario.params.stiffness = k;
+            let mut scene = Scene::named("undamped").expect("built-in");
+            scene.params.stiffness = k;
             return Self {
                 k,
                 rate,
                 ticks: (UNRESOLVABLE_SECONDS * rate).round() as u64,
-                scenario,
+                scene,
                 reference: None,
             };
         };
-        let mut scenario = Scenario::named("stiff").expect("built-in");
-        scenario.params.stiffness = k;
+        let mut scene = Scene::named("stiff").expect("built-in");
+        scene.params.stiffness = k;
         let ticks = ((horizon * rate).round() as u64).max(1);
-        let mass = scenario.params.mass_properties().expect("valid");
-        let taylor = run_engine(&scenario, rate, ticks, Engine::TIGHTEST_TAYLOR)
+        let mass = scene.params.mass_properties().expect("valid");
+        let taylor = run_engine(&scene, rate, ticks, Engine::TIGHTEST_TAYLOR)
             .expect("the tight reference converges");
-        let dop853 = run_engine(&scenario, rate, ticks, Engine::TIGHTEST_DOP853)
+        let dop853 = run_engine(&scene, rate, ticks, Engine::TIGHTEST_DOP853)
             .expect("the tight reference converges");
         Self {
             k,
@@ -243,7 +243,7 @@ impl StiffCase {
                 state: taylor.0,
                 agreement: taylor.0.pose_error(&dop853.0, &mass),
             }),
-            scenario,
+            scene,
         }
     }
 

@@ -4,7 +4,7 @@
 //! module, so that there is one implementation of each force law, each integration step and
 //! each named scene. Its modules import in one direction, from the leaves up:
 //! `param_error`, `maths` → `body` → `forces` → `energy`, `scene` → `integrators` → `stepper`
-//! → `scenario`, `stability`.
+//! → `scene`, `stability`.
 
 pub mod body;
 pub mod energy;
@@ -12,8 +12,8 @@ pub mod forces;
 pub mod integrators;
 pub mod maths;
 pub mod param_error;
-pub mod scenario;
 pub mod scene;
+pub mod scenes;
 pub mod stability;
 pub mod stepper;
 
@@ -22,9 +22,9 @@ pub use energy::{Energies, EnergyLedger, kinetic_energy};
 pub use forces::{BandEnds, ForceModel, Forces, Wrench, angular_momentum_about, damping_wrench};
 pub use integrators::{AutoSettings, Integrator, StepInfo, UnknownIntegrator, symplectic_euler};
 pub use param_error::{ParamError, Range};
-pub use scenario::{Diverged, Pull, Run, Scenario};
 pub use scene::{
     ANGULAR_DAMPING_RANGE, LINEAR_DAMPING_RANGE, MASS_RANGE, MIN_STEP, SCENE_SIZE, SIZE_RANGE,
     STEP_RATE_RANGE, STIFFNESS_RANGE, SceneParams, TIME_SCALE_RANGE,
 };
+pub use scenes::{Diverged, Pull, Run, Scene};
 pub use stepper::Stepper;

@@ -71,7 +71,7 @@ impl PullSchedule {
 /// A named scene: parameters, initial state and pulls given in seconds, so that the same
 /// scene can be run at any step.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Scenario {
+pub struct Scene {
     pub name: &'static str,
     pub summary: &'static str,
     pub params: SceneParams,
@@ -83,7 +83,7 @@ pub struct Scenario {
 /// Where the tutorial scene pulls: up and to the right of the box, off its diagonals.
 pub const TUTORIAL_PULL_TARGET: DVec2 = DVec2::new(200.0, 120.0);
 
-impl Scenario {
+impl Scene {
     pub const NAMES: [&'static str; 10] = [
         "tutorial",
         "diagonal",
@@ -97,11 +97,11 @@ impl Scenario {
         "rest",
     ];
 
-    pub fn named(name: &str) -> Result<Self, UnknownScenario> {
+    pub fn named(name: &str) -> Result<Self, UnknownScene> {
         let name = Self::NAMES
             .into_iter()
             .find(|&known| known == name)
-            .ok_or_else(|| UnknownScenario(name.to_owned()))?;
+            .ok_or_else(|| UnknownScene(name.to_owned()))?;
         let tutorial = SceneParams::tutorial();
         let at_rest = BodyState::default();
         let spinning = {
@@ -202,20 +202,20 @@ impl Scenario {
 }
 
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct UnknownScenario(pub String);
+pub struct UnknownScene(pub String);
 
-impl fmt::Display for UnknownScenario {
+impl fmt::Display for UnknownScene {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
             "unknown scene '{}' (expected one of: {})",
             self.0,
-            Scenario::NAMES.join(", ")
+            Scene::NAMES.join(", ")
         )
     }
 }
 
-impl std::error::Error for UnknownScenario {}
+impl std::error::Error for UnknownScene {}
 
 /// How far above the physically reachable energy a run may go before it counts as diverged.
 /// With damping b, c >= 0 and a fixed anchor the energy can only fall, so the reachable
@@ -312,11 +312,11 @@ impl Run {
         Ok(run)
     }
 
-    pub fn of(scenario: &Scenario, integrator: Integrator, dt: f64) -> Result<Self, ParamError> {
+    pub fn of(scene: &Scene, integrator: Integrator, dt: f64) -> Result<Self, ParamError> {
         Self::new(
-            scenario.params,
-            scenario.initial,
-            scenario.pulls_in_steps(dt),
+            scene.params,
+            scene.initial,
+            scene.pulls_in_steps(dt),
             integrator,
             dt,
         )

@@ -1,6 +1,6 @@
 //! One box and at most one band, stepped without Bevy: what scripted runs ([`super::Run`],
-//! so the CLI and the report), the tests and the benchmarks drive directly. The ECS systems
-//! call the same functions, one set at a time.
+//! so the CLI and the report), the tests and the benchmarks drive directly. The game's step
+//! system calls the same force model and integrators over the box's components.
 
 use bevy::math::DVec2;
 

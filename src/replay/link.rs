@@ -12,7 +12,7 @@ use super::format::Replay;
 use crate::physics::param_error::exact;
 use crate::physics::{
     ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, Range, SIZE_RANGE,
-    STEP_RATE_RANGE, STIFFNESS_RANGE, Scenario, SceneParams, TIME_SCALE_RANGE,
+    STEP_RATE_RANGE, STIFFNESS_RANGE, Scene, SceneParams, TIME_SCALE_RANGE,
 };
 
 /// The link format's version, written as `v=1`. A link without `v` is read as version 1.
@@ -108,7 +108,7 @@ impl Key {
     pub fn values(self) -> String {
         match self {
             Self::Version => LINK_VERSION.to_string(),
-            Self::Scene => Scenario::NAMES.join(", "),
+            Self::Scene => Scene::NAMES.join(", "),
             Self::Integrator => {
                 let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
                 names.join(", ")
@@ -171,7 +171,7 @@ pub struct LinkOverlays {
 /// What a link sets: each field `None` when the link leaves it as the game starts.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Link {
-    /// One of [`Scenario::NAMES`].
+    /// One of [`Scene::NAMES`].
     pub scene: Option<String>,
     pub integrator: Option<Integrator>,
     pub stiffness: Option<f64>,
@@ -276,9 +276,7 @@ impl Link {
                 }
             },
             Key::Scene => {
-                let name = Scenario::named(value)
-                    .map_err(|error| error.to_string())?
-                    .name;
+                let name = Scene::named(value).map_err(|error| error.to_string())?.name;
                 self.scene = Some(name.to_owned());
             }
             Key::Integrator => {

@@ -2,8 +2,8 @@
 //! as the records a player's hand would have made, so that the game plays a scene with the
 //! playback it plays a recording with (`playback::open`), and a press takes over.
 
-use crate::physics::scenario::{BandChange, PullSchedule};
-use crate::physics::{AutoSettings, BandEnds, Integrator, ParamError, Scenario};
+use crate::physics::scenes::{BandChange, PullSchedule};
+use crate::physics::{AutoSettings, BandEnds, Integrator, ParamError, Scene};
 
 use super::run::ReplayRun;
 use super::{Replay, Settings};
@@ -13,19 +13,19 @@ use super::{Replay, Settings};
 pub const SCRIPT_TAIL_SECONDS: f64 = 1.0;
 pub const HELD_SECONDS: f64 = 5.0;
 
-/// `scenario` at step `dt` with `integrator`: the pulls in steps, each band grabbing the
+/// `scene` at step `dt` with `integrator`: the pulls in steps, each band grabbing the
 /// corner nearest its target when it starts, and the recorded hash the core's own stepping
 /// of it (the game must step to it: [`crate::game::replays::playback::PlaybackEnd`]).
 pub fn scene_replay(
-    scenario: &Scenario,
+    scene: &Scene,
     dt: f64,
     integrator: Integrator,
     auto: AutoSettings,
 ) -> Result<Replay, ParamError> {
-    let params = scenario.params;
+    let params = scene.params;
     let settings = Settings::new(&params, dt, integrator);
     settings.validate()?;
-    let script_end = scenario
+    let script_end = scene
         .pulls
         .iter()
         .map(|&(_, until, _)| until)
@@ -37,10 +37,10 @@ pub fn scene_replay(
     };
     let steps = (seconds / dt).round().max(1.0) as u64;
 
-    let mut replay = Replay::start(scenario.name, settings, auto, scenario.initial);
+    let mut replay = Replay::start(scene.name, settings, auto, scene.initial);
     let mut stepper = replay.stepper()?;
     let mass = params.mass_properties()?;
-    let mut schedule = PullSchedule::new(scenario.pulls_in_steps(dt));
+    let mut schedule = PullSchedule::new(scene.pulls_in_steps(dt));
     for step in 0..steps {
         match schedule.change_at(step) {
             Some(BandChange::Grab(target)) => {

@@ -24,7 +24,7 @@ pub use bevy::window::{
 pub use rubber_band_box::game::GameLogicPlugin;
 pub use rubber_band_box::game::hud::{EnergyHistory, Hud, HudLine};
 pub use rubber_band_box::game::input::controls::CYCLE_INTEGRATOR;
-pub use rubber_band_box::game::input::pointer::{Grip, PointerPlugin, PointerSource, SceneCamera};
+pub use rubber_band_box::game::pointer::{Grip, PointerPlugin, PointerSource, SceneCamera};
 pub use rubber_band_box::game::schedule::PhysicsSystems;
 pub use rubber_band_box::game::simulation::{
     Band, EnergyBooks, ForceAccumulator, RigidBox, SimulationPlugin, StepCount, StepStats,

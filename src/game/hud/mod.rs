@@ -26,7 +26,7 @@ use crate::game::simulation::{Band, Bodies, EnergyBooks, StepStats, mechanical_e
 use crate::game::stability::StabilityMargins;
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::stability::{Limit, Margin};
-use crate::physics::{Energies, EnergyLedger, Integrator, Scenario, SceneParams};
+use crate::physics::{Energies, EnergyLedger, Integrator, Scene, SceneParams};
 pub use history::EnergyHistory;
 
 pub struct HudPlugin;
@@ -163,8 +163,8 @@ impl HudLine {
             HudLine::Status => status_line(r),
             HudLine::Hint => r.news.clone().unwrap_or_else(|| HINT.to_owned()),
             HudLine::SceneName => {
-                let summary = Scenario::named(&r.scene)
-                    .map_or("a recorded game", |scenario| scenario.summary);
+                let summary =
+                    Scene::named(&r.scene).map_or("a recorded game", |scene| scene.summary);
                 format!("scene {}: {summary}", r.scene)
             }
             HudLine::Ghosts => ghost_lines(r),

@@ -16,7 +16,7 @@ use crate::game::schedule::GameSystems;
 use crate::game::shared::{Overlays, StatusMessage};
 use crate::game::simulation::ResetScene;
 use crate::physics::{
-    Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scenario, SceneParams, TIME_SCALE_RANGE,
+    Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scene, SceneParams, TIME_SCALE_RANGE,
 };
 
 pub struct ControlsPlugin;
@@ -53,7 +53,7 @@ pub const HOME_VIEW: KeyCode = KeyCode::KeyF;
 pub const LINK: KeyCode = KeyCode::KeyC;
 pub const GAME_LINK: KeyCode = KeyCode::KeyU;
 pub const LEARN: KeyCode = KeyCode::KeyL;
-/// The named scenes, in the core's order ([`Scenario::NAMES`]).
+/// The named scenes, in the core's order ([`Scene::NAMES`]).
 pub const SCENE_KEYS: [KeyCode; 10] = [
     KeyCode::Digit1,
     KeyCode::Digit2,
@@ -114,7 +114,7 @@ pub enum Action {
     Learn,
     NextChapter,
     PreviousChapter,
-    /// The scene at this place in [`Scenario::NAMES`].
+    /// The scene at this place in [`Scene::NAMES`].
     Scene(usize),
 }
 
@@ -431,7 +431,7 @@ fn apply_actions(
             Action::ShareLink => commands.trigger(ShareLink { game: false }),
             Action::ShareGame => commands.trigger(ShareLink { game: true }),
             Action::Scene(index) => {
-                if let Some(&name) = Scenario::NAMES.get(index) {
+                if let Some(&name) = Scene::NAMES.get(index) {
                     commands.trigger(LoadScene(name));
                 }
             }

@@ -23,7 +23,7 @@ use crate::game::shared::{Overlays, SceneName, linear_damping_readout, readable,
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{
     ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, SIZE_RANGE,
-    STIFFNESS_RANGE, Scenario, SceneParams,
+    STIFFNESS_RANGE, Scene, SceneParams,
 };
 
 pub struct PanelPlugin;
@@ -267,7 +267,7 @@ fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
         spawn_button(&mut commands, row, integrator.name(), does);
     }
     let row = spawn_row(&mut commands, body, "scene");
-    for (index, name) in Scenario::NAMES.iter().enumerate() {
+    for (index, name) in Scene::NAMES.iter().enumerate() {
         spawn_button(
             &mut commands,
             row,
@@ -502,7 +502,7 @@ fn show_state(
             }
             PanelButton::Send(Action::Integrator(method)) => (method == *integrator, None),
             PanelButton::Send(Action::Scene(index)) => {
-                (Scenario::NAMES.get(index) == Some(&scene.0.as_str()), None)
+                (Scene::NAMES.get(index) == Some(&scene.0.as_str()), None)
             }
             PanelButton::Send(Action::ToggleGhosts) => (overlays.ghosts, None),
             PanelButton::Send(Action::TogglePlot) => (overlays.plot, None),

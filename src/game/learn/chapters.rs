@@ -68,7 +68,7 @@ pub struct Chapter {
     pub title: &'static str,
     /// The tutorial's sections it follows.
     pub sections: &'static str,
-    /// A scene of the core's table (`Scenario::NAMES`).
+    /// A scene of the core's table (`Scene::NAMES`).
     pub scene: &'static str,
     /// The integrator the chapter runs with (the tutorial's own for its update loop).
     pub integrator: Option<&'static str>,

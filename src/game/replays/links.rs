@@ -13,7 +13,7 @@ use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::GameSystems;
 use crate::game::shared::{Overlays, SceneName, StatusMessage};
 use crate::game::simulation::set_fixed_step;
-use crate::physics::{Integrator, Scenario, SceneParams};
+use crate::physics::{Integrator, Scene, SceneParams};
 use crate::replay::link::{Link, LinkOverlays};
 
 pub struct LinksPlugin;
@@ -128,7 +128,7 @@ pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
     let params = *world.resource::<SceneParams>();
     let scene = &world.resource::<SceneName>().0;
     // The tutorial's is the scene a fresh game shows (without its scripted pull).
-    let named = Scenario::named(scene).ok().filter(|s| s.name != "tutorial");
+    let named = Scene::named(scene).ok().filter(|s| s.name != "tutorial");
     let base = named.as_ref().map_or(SceneParams::tutorial(), |s| s.params);
     let differs = |value: f64, base: f64| (value != base).then_some(value);
     let overlays = *world.resource::<Overlays>();

@@ -11,7 +11,7 @@
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
-use crate::game::input::pointer::PointerAction;
+use crate::game::pointer::PointerAction;
 use crate::game::replays::recording::Recorder;
 use crate::game::schedule::{AfterStepsSystems, GameSystems, PhysicsSystems};
 use crate::game::shared::SceneName;

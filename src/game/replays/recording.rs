@@ -2,8 +2,8 @@
 //! the settings in force, the resets), kept as a [`Replay`] from the first step on, so that a
 //! game can be saved at any moment and stepped again to the bit (`simulate --replay`).
 //!
-//! It reads the step's inputs after the forces are accumulated and before the integration,
-//! and the state after it, so it sees exactly what the integrator saw; it never writes
+//! It reads the step's inputs as the step will take them (the band that acts, the settings in
+//! force) and the state after it, so it sees exactly what the integrator saw; it never writes
 //! anything the physics reads. Saving writes a new file beside the target and renames it into
 //! place ([`crate::replay::save`]). `play --record FILE` saves to FILE when the game ends (the
 //! window closed, Ctrl-C, or SIGTERM); the save control saves the game so far at any time.

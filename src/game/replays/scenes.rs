@@ -1,4 +1,4 @@
-//! The named scenes in the game: the core's table ([`Scenario::NAMES`]), loaded by number
+//! The named scenes in the game: the core's table ([`Scene::NAMES`]), loaded by number
 //! keys (and the panel) as a replay of their scripted pull (`replay::script`), which the
 //! playback plays until the player presses. The player's step rate and integrator stay.
 
@@ -6,7 +6,7 @@ use bevy::prelude::*;
 
 use crate::game::replays::playback;
 use crate::game::shared::StatusMessage;
-use crate::physics::{AutoSettings, Integrator, Scenario, SceneParams};
+use crate::physics::{AutoSettings, Integrator, Scene, SceneParams};
 use crate::replay::script::scene_replay;
 
 pub struct ScenesPlugin;
@@ -17,7 +17,7 @@ impl Plugin for ScenesPlugin {
     }
 }
 
-/// Load the named scene (one of [`Scenario::NAMES`]).
+/// Load the named scene (one of [`Scene::NAMES`]).
 #[derive(Event, Debug, Clone, Copy)]
 pub struct LoadScene(pub &'static str);
 
@@ -28,14 +28,14 @@ fn load(load: On<LoadScene>, mut commands: Commands) {
 
 /// The scene's parameters at the player's step rate, its start, and its script playing.
 pub fn load_scene(world: &mut World, name: &str) {
-    let loaded = Scenario::named(name)
+    let loaded = Scene::named(name)
         .map_err(|unknown| unknown.to_string())
-        .and_then(|mut scenario| {
-            scenario.params.step_rate_hz = world.resource::<SceneParams>().step_rate_hz;
+        .and_then(|mut scene| {
+            scene.params.step_rate_hz = world.resource::<SceneParams>().step_rate_hz;
             let dt = world.resource::<Time<Fixed>>().timestep().as_secs_f64();
             let integrator = *world.resource::<Integrator>();
             let auto = *world.resource::<AutoSettings>();
-            scene_replay(&scenario, dt, integrator, auto).map_err(|error| error.to_string())
+            scene_replay(&scene, dt, integrator, auto).map_err(|error| error.to_string())
         });
     match loaded {
         Ok(replay) => playback::open(world, replay),

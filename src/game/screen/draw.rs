@@ -11,11 +11,11 @@ use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
 use crate::game::ghosts::{Ghost, GhostKind, Ghosts};
-use crate::game::input::pointer::SceneCamera;
 use crate::game::layout::SceneViewport;
 use crate::game::learn::Learning;
 use crate::game::learn::chapters::{CHAPTERS, Equation};
 use crate::game::learn::twin::CentreTwin;
+use crate::game::pointer::SceneCamera;
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::view::{CameraFrame, interpolated_state, shown_area, world_per_pixel};
 use crate::game::shared::Overlays;

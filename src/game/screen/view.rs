@@ -19,8 +19,8 @@ use bevy::ui::IsDefaultUiCamera;
 use bevy::window::PrimaryWindow;
 
 use crate::game::input::controls::HomeView;
-use crate::game::input::pointer::SceneCamera;
 use crate::game::layout::SceneViewport;
+use crate::game::pointer::SceneCamera;
 use crate::game::schedule::{AfterStepsSystems, ScreenSystems};
 use crate::game::simulation::{Band, RenderSnapshots, ResetScene};
 use crate::physics::{BodyState, MassProperties, SCENE_SIZE};

@@ -15,7 +15,7 @@ use super::rapier::Rapier;
 use super::{Contender, PeerRun, headless_app, start};
 use crate::measure::references::{StiffCase, WorkScene, work_reference, work_scenes};
 use crate::measure::timing::{Spread, median};
-use crate::physics::{BodyState, Scenario};
+use crate::physics::{BodyState, Scene};
 
 /// The contenders' names, ours first (the ratios are to ours).
 pub const NAMES: [&str; 3] = [Ours::NAME, Avian::NAME, Rapier::NAME];
@@ -55,14 +55,11 @@ struct Accuracy {
     growth: Option<f64>,
 }
 
-fn accuracy<C: Contender>(scenario: &Scenario, rate: f64, steps: u64) -> Accuracy {
-    let mut run = PeerRun::<C>::of(scenario, rate);
+fn accuracy<C: Contender>(scene: &Scene, rate: f64, steps: u64) -> Accuracy {
+    let mut run = PeerRun::<C>::of(scene, rate);
     let energy = |run: &mut PeerRun<C>| {
         let state = run.state();
-        scenario
-            .params
-            .force_model(run.mass, run.band)
-            .energy(&state)
+        scene.params.force_model(run.mass, run.band).energy(&state)
     };
     let e0 = energy(&mut run);
     let mut drift: f64 = 0.0;
@@ -88,11 +85,11 @@ const TIMED_TICKS: u64 = 100;
 /// One round's time per tick of contender `C` over `timed` ticks of fresh runs after each
 /// run's first tick, where every contender builds its own structures (how long:
 /// docs/peers.md): a game pays that once, not every tick. The `App`'s construction is untimed.
-fn round_ns<C: Contender>(scenario: &Scenario, rate: f64, timed: u64) -> f64 {
+fn round_ns<C: Contender>(scene: &Scene, rate: f64, timed: u64) -> f64 {
     let runs = TIMED_TICKS.div_ceil(timed);
     let mut total = Duration::ZERO;
     for _ in 0..runs {
-        let mut run = PeerRun::<C>::of(scenario, rate);
+        let mut run = PeerRun::<C>::of(scene, rate);
         run.advance();
         let start = Instant::now();
         run.advance_by(timed);
@@ -104,15 +101,15 @@ fn round_ns<C: Contender>(scenario: &Scenario, rate: f64, timed: u64) -> f64 {
 
 /// Each contender's time per tick in each of `rounds` interleaved rounds, ours first, after
 /// one untimed run of each that warms caches and allocators.
-fn interleaved(scenario: &Scenario, rate: f64, timed: u64, rounds: usize) -> Vec<[f64; 3]> {
+fn interleaved(scene: &Scene, rate: f64, timed: u64, rounds: usize) -> Vec<[f64; 3]> {
     let timed = timed.max(1);
-    let timers: [fn(&Scenario, f64, u64) -> f64; 3] =
+    let timers: [fn(&Scene, f64, u64) -> f64; 3] =
         [round_ns::<Ours>, round_ns::<Avian>, round_ns::<Rapier>];
     for timer in timers {
-        timer(scenario, rate, timed);
+        timer(scene, rate, timed);
     }
     (0..rounds)
-        .map(|_| timers.map(|timer| timer(scenario, rate, timed)))
+        .map(|_| timers.map(|timer| timer(scene, rate, timed)))
         .collect()
 }
 
@@ -121,10 +118,10 @@ fn median_of(rounds: &[[f64; 3]], index: usize) -> f64 {
     median(rounds.iter().map(|round| round[index]).collect())
 }
 
-/// `scenario` with every pull one fixed step later: the box rests through the first tick (the
+/// `scene` with every pull one fixed step later: the box rests through the first tick (the
 /// contenders' set-up, untimed), so that the ticks timed are exactly those of the original run.
-fn one_tick_later(scenario: &Scenario, rate: f64) -> Scenario {
-    let mut later = scenario.clone();
+fn one_tick_later(scene: &Scene, rate: f64) -> Scene {
+    let mut later = scene.clone();
     for pull in &mut later.pulls {
         pull.0 += 1.0 / rate;
         pull.1 += 1.0 / rate;
@@ -133,25 +130,25 @@ fn one_tick_later(scenario: &Scenario, rate: f64) -> Scenario {
 }
 
 fn point<C: Contender>(
-    scene: &WorkScene,
+    work: &WorkScene,
     rate: f64,
     reference: &BodyState,
     rounds: &[[f64; 3]],
     index: usize,
 ) -> PeerPoint {
-    let scenario = &scene.scenario;
-    let steps = (scene.horizon * rate).round() as u64;
-    let Accuracy { state, drift, .. } = accuracy::<C>(scenario, rate, steps);
-    let mass = scenario.params.mass_properties().expect("valid");
+    let scene = &work.scene;
+    let steps = (work.horizon * rate).round() as u64;
+    let Accuracy { state, drift, .. } = accuracy::<C>(scene, rate, steps);
+    let mass = scene.params.mass_properties().expect("valid");
     PeerPoint {
         contender: C::NAME,
-        scene: scenario.name,
+        scene: scene.name,
         rate,
         steps,
         error: state
             .is_finite()
             .then(|| state.pose_error(reference, &mass)),
-        energy_drift: drift.filter(|_| scene.energy_invariant),
+        energy_drift: drift.filter(|_| work.energy_invariant),
         ns_per_tick: median_of(rounds, index),
         tick_over_ours: Spread::of(rounds.iter().map(|r| r[index] / r[0]).collect()),
     }
@@ -161,14 +158,14 @@ fn point<C: Contender>(
 pub fn side_by_side(quick: bool) -> Vec<PeerPoint> {
     let rounds = rounds(quick);
     let mut points = Vec::new();
-    for scene in work_scenes() {
+    for work in work_scenes() {
         for rate in RATES {
-            let steps = (scene.horizon * rate).round() as u64;
-            let reference = work_reference(&scene, steps as f64 / rate);
-            let times = interleaved(&scene.scenario, rate, steps.saturating_sub(1), rounds);
-            points.push(point::<Ours>(&scene, rate, &reference, &times, 0));
-            points.push(point::<Avian>(&scene, rate, &reference, &times, 1));
-            points.push(point::<Rapier>(&scene, rate, &reference, &times, 2));
+            let steps = (work.horizon * rate).round() as u64;
+            let reference = work_reference(&work, steps as f64 / rate);
+            let times = interleaved(&work.scene, rate, steps.saturating_sub(1), rounds);
+            points.push(point::<Ours>(&work, rate, &reference, &times, 0));
+            points.push(point::<Avian>(&work, rate, &reference, &times, 1));
+            points.push(point::<Rapier>(&work, rate, &reference, &times, 2));
         }
     }
     points
@@ -199,8 +196,8 @@ fn stiff_point<C: Contender>(
     index: usize,
     ours_over_fastest_peer: Spread,
 ) -> PeerStiffPoint {
-    let Accuracy { state, growth, .. } = accuracy::<C>(&case.scenario, case.rate, case.ticks);
-    let mass = case.scenario.params.mass_properties().expect("valid");
+    let Accuracy { state, growth, .. } = accuracy::<C>(&case.scene, case.rate, case.ticks);
+    let mass = case.scene.params.mass_properties().expect("valid");
     let bounded = state.is_finite() && growth.is_none_or(f64::is_finite);
     PeerStiffPoint {
         contender: C::NAME,
@@ -225,7 +222,7 @@ pub fn stiffness(cases: &[StiffCase], quick: bool) -> Vec<PeerStiffPoint> {
         .flat_map(|case| {
             // Short horizons (one or two ticks at k = 1e7) leave no tick to time after the
             // first: time the case's own ticks one tick later instead.
-            let later = one_tick_later(&case.scenario, case.rate);
+            let later = one_tick_later(&case.scene, case.rate);
             let times = interleaved(&later, case.rate, case.ticks, rounds);
             let ratio = Spread::of(times.iter().map(|r| r[0] / r[1].min(r[2])).collect());
             [
@@ -254,14 +251,14 @@ fn empty_app_round_ns(rate: f64) -> f64 {
 /// rounds. The empty `App`'s median tick, and the ratio's spread.
 pub fn tutorial_over_empty_app(rate: f64, quick: bool) -> (f64, Spread) {
     // The work scene's tutorial: its pull and release, ticks timed as in the side-by-side.
-    let scene = work_scenes()
+    let work = work_scenes()
         .into_iter()
-        .find(|scene| scene.scenario.name == "tutorial")
+        .find(|work| work.scene.name == "tutorial")
         .expect("the tutorial is a work scene");
-    let timed = ((scene.horizon * rate).round() as u64)
+    let timed = ((work.horizon * rate).round() as u64)
         .saturating_sub(1)
         .max(1);
-    let tick = || round_ns::<Ours>(&scene.scenario, rate, timed);
+    let tick = || round_ns::<Ours>(&work.scene, rate, timed);
     tick();
     empty_app_round_ns(rate);
     let rounds: Vec<[f64; 2]> = (0..rounds(quick))

@@ -16,8 +16,8 @@ use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 
 use crate::game::simulation::run_single_threaded;
-use crate::physics::scenario::{BandChange, PullSchedule};
-use crate::physics::{BandEnds, BodyState, MassProperties, Scenario, SceneParams};
+use crate::physics::scenes::{BandChange, PullSchedule};
+use crate::physics::{BandEnds, BodyState, MassProperties, Scene, SceneParams};
 
 /// A contender (our plugin or a peer) holding the scene in a headless `App` that takes exactly
 /// one fixed step per `update()`.
@@ -58,7 +58,7 @@ pub fn start(app: &mut App) {
     run_single_threaded(app);
 }
 
-/// A scripted run of a scenario on a contender: the same pulls, at the same steps, attached
+/// A scripted run of a scene on a contender: the same pulls, at the same steps, attached
 /// to the corner nearest the target at the pull's first step, as [`crate::physics::Run`].
 pub struct PeerRun<C: Contender> {
     pub contender: C,
@@ -69,16 +69,16 @@ pub struct PeerRun<C: Contender> {
 }
 
 impl<C: Contender> PeerRun<C> {
-    pub fn of(scenario: &Scenario, rate_hz: f64) -> Self {
-        let mass = scenario
+    pub fn of(scene: &Scene, rate_hz: f64) -> Self {
+        let mass = scene
             .params
             .mass_properties()
             .expect("built-in scenes are valid");
         let mut run = Self {
-            contender: C::new(&scenario.params, scenario.initial, rate_hz),
+            contender: C::new(&scene.params, scene.initial, rate_hz),
             mass,
             step: 0,
-            schedule: PullSchedule::new(scenario.pulls_in_steps(1.0 / rate_hz)),
+            schedule: PullSchedule::new(scene.pulls_in_steps(1.0 / rate_hz)),
             band: None,
         };
         run.apply_pulls();

@@ -2,14 +2,14 @@
 //! integrator to see whether it stays bounded. `run` makes its table (`hard_cases.csv`);
 //! `tests/integrators.rs` runs the same cases ([`hard_cases`]).
 
-use crate::physics::{Integrator, Run, Scenario};
+use crate::physics::{Integrator, Run, Scene};
 
 use super::table::{Cell, Column, Table, diverged, or_empty, quoted};
 
 /// A hard case: a scene with its overrides, the rate, and how many fixed steps.
 pub struct HardCase {
     pub name: String,
-    pub scenario: Scenario,
+    pub scene: Scene,
     pub rate: f64,
     pub steps: u64,
 }
@@ -17,15 +17,15 @@ pub struct HardCase {
 /// The stiff band at 100 and 64 Hz over k, then the hard scenes (`undamped` ten times shorter
 /// when `quick`).
 pub fn hard_cases(quick: bool) -> Vec<HardCase> {
-    let named = |name: &str| Scenario::named(name).expect("built-in");
+    let named = |name: &str| Scene::named(name).expect("built-in");
     let mut cases = Vec::new();
     for rate in [100.0, 64.0] {
         for k in [20.0, 1e3, 1e5, 1e7, 1e9] {
-            let mut scenario = named("stiff");
-            scenario.params.stiffness = k;
+            let mut scene = named("stiff");
+            scene.params.stiffness = k;
             cases.push(HardCase {
                 name: format!("stiff band k = {k:e} at {rate} Hz"),
-                scenario,
+                scene,
                 rate,
                 steps: (10.0 * rate) as u64,
             });
@@ -42,7 +42,7 @@ pub fn hard_cases(quick: bool) -> Vec<HardCase> {
     ] {
         cases.push(HardCase {
             name: format!("{name}: {}", named(name).summary),
-            scenario: named(name),
+            scene: named(name),
             rate: 100.0,
             steps,
         });
@@ -58,8 +58,7 @@ fn run_hard_cases(quick: bool) -> Vec<(HardCase, Vec<Option<u64>>)> {
             let outcomes = Integrator::ALL
                 .iter()
                 .map(|&integrator| {
-                    let mut run =
-                        Run::of(&case.scenario, integrator, 1.0 / case.rate).expect("valid");
+                    let mut run = Run::of(&case.scene, integrator, 1.0 / case.rate).expect("valid");
                     run.advance_by(case.steps).err().map(|d| d.step)
                 })
                 .collect();

@@ -2,14 +2,14 @@
 //! energy ledger over a run relative to the energy that passed through it, on the tutorial
 //! scene and the damped stiff band. `run` shows its table (Markdown only).
 
-use crate::physics::{Integrator, Run, Scenario};
+use crate::physics::{Integrator, Run, Scene};
 
 use super::table::{Cell, Column, Table, diverged};
 
 /// The largest |ledger residual| over a run, relative to the energy that passed through, or
 /// the step where the run diverged.
-fn ledger_residual(scenario: &Scenario, integrator: Integrator, steps: u64) -> Result<f64, u64> {
-    let mut run = Run::of(scenario, integrator, 0.01).expect("valid");
+fn ledger_residual(scene: &Scene, integrator: Integrator, steps: u64) -> Result<f64, u64> {
+    let mut run = Run::of(scene, integrator, 0.01).expect("valid");
     let mut worst: f64 = 0.0;
     for _ in 0..steps {
         run.advance().map_err(|d| d.step)?;
@@ -30,8 +30,8 @@ pub(super) fn table(quick: bool) -> Table {
             Column::markdown("stiff"),
         ],
     );
-    let tutorial = Scenario::named("tutorial").expect("built-in");
-    let stiff = Scenario::named("stiff").expect("built-in");
+    let tutorial = Scene::named("tutorial").expect("built-in");
+    let stiff = Scene::named("stiff").expect("built-in");
     let steps = if quick { 100 } else { 1000 };
     let cell = |outcome: Result<f64, u64>| {
         Cell::markdown(match outcome {

@@ -121,8 +121,8 @@ fn work_scenes_side_by_side(quick: bool) -> (Table, Vec<(&'static str, Line)>) {
         ));
     }
     let mut lines = Vec::new();
-    for scene in work_scenes() {
-        let scene = scene.scenario.name;
+    for work in work_scenes() {
+        let scene = work.scene.name;
         for name in NAMES {
             let points = points
                 .iter()

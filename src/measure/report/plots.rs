@@ -141,7 +141,7 @@ pub(super) fn plot_work_precision(
 ) -> Result<(), Box<dyn Error>> {
     let root = SVGBackend::new(path, (1400, 1000)).into_drawing_area();
     root.fill(&WHITE)?;
-    let scenes: Vec<&str> = work_scenes().iter().map(|s| s.scenario.name).collect();
+    let scenes: Vec<&str> = work_scenes().iter().map(|work| work.scene.name).collect();
     for (area, scene) in root.split_evenly((2, 2)).iter().zip(&scenes) {
         let here: Vec<&WorkPoint> = points.iter().filter(|p| p.scene == *scene).collect();
         let mut lines: Vec<Line> = Integrator::ALL

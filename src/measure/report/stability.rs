@@ -2,18 +2,18 @@
 //! scene with the band held stays bounded, at 64 and 100 Hz. `run` makes its table
 //! (`stability.csv`).
 
-use crate::physics::scenario::TUTORIAL_PULL_TARGET;
-use crate::physics::{Integrator, Run, Scenario, SceneParams};
+use crate::physics::scenes::TUTORIAL_PULL_TARGET;
+use crate::physics::{Integrator, Run, Scene, SceneParams};
 
 use super::table::{Cell, Column, Table};
 
 /// Whether the tutorial scene with the band held at stiffness `k` stays bounded for 20 s.
 fn stable_at(integrator: Integrator, k: f64, rate: f64) -> bool {
-    let mut scenario = Scenario::named("tutorial").expect("built-in");
-    scenario.params.stiffness = k;
-    scenario.pulls = vec![(0.0, f64::INFINITY, TUTORIAL_PULL_TARGET)];
+    let mut scene = Scene::named("tutorial").expect("built-in");
+    scene.params.stiffness = k;
+    scene.pulls = vec![(0.0, f64::INFINITY, TUTORIAL_PULL_TARGET)];
     let dt = 1.0 / rate;
-    let mut run = Run::of(&scenario, integrator, dt).expect("valid");
+    let mut run = Run::of(&scene, integrator, dt).expect("valid");
     run.advance_by((20.0 * rate) as u64).is_ok()
 }
 

@@ -6,8 +6,8 @@
 
 use crate::measure::references::{Engine, StiffCase, UNRESOLVABLE_SECONDS, run_engine};
 use crate::measure::timing::median_ns;
-use crate::physics::scenario::TUTORIAL_PULL_TARGET;
-use crate::physics::{Integrator, Run, Scenario, angular_momentum_about};
+use crate::physics::scenes::TUTORIAL_PULL_TARGET;
+use crate::physics::{Integrator, Run, Scene, angular_momentum_about};
 
 use super::table::{Cell, Column, Table, diverged, or_empty};
 
@@ -18,8 +18,8 @@ pub struct StiffPoint {
     pub rate: f64,
     pub integrator: Integrator,
     pub ns_per_tick: f64,
-    /// Pose error at the horizon against the RK4 reference; None if diverged or beyond any
-    /// horizon.
+    /// Pose error at the horizon against the case's reference (Taylor series of order 24 at
+    /// 1e-15 px); None if diverged or beyond any horizon.
     pub error: Option<f64>,
     /// Beyond any horizon: the largest (E − E0) / E0 of the undamped run (positive: it grew).
     pub energy_growth: Option<f64>,
@@ -57,11 +57,11 @@ pub fn stiff_cases(quick: bool) -> Vec<StiffCase> {
 pub(super) fn sweep(cases: &[StiffCase], quick: bool) -> Vec<StiffPoint> {
     let mut points = Vec::new();
     for case in cases {
-        let scenario = &case.scenario;
-        let mass = scenario.params.mass_properties().expect("valid");
+        let scene = &case.scene;
+        let mass = scene.params.mass_properties().expect("valid");
         let dt = 1.0 / case.rate;
         for integrator in Integrator::ALL {
-            let fresh = || Run::of(scenario, integrator, dt).expect("valid");
+            let fresh = || Run::of(scene, integrator, dt).expect("valid");
             let mut run = fresh();
             let e0 = run.stepper.energy();
             let (mut substeps, mut evaluations) = (0u64, 0u64);
@@ -133,7 +133,7 @@ pub(super) fn table(cases: &[StiffCase], points: &[StiffPoint]) -> Table {
     let mut table = Table::new(
         format!(
             "Stiffness sweep: stiff pulls from rest, each k judged at the horizon its \
-             references resolve (error in px against the RK4 reference / ns per step; auto: \
+             references resolve (error in px against the order-24 Taylor reference / ns per step; auto: \
              mean substeps and force evaluations per step, fall-backs). Beyond k = 1e7 no \
              horizon resolves a state: undamped for {UNRESOLVABLE_SECONDS} s, bounded or not, \
              and the largest energy growth (E - E0) / E0"
@@ -224,11 +224,11 @@ fn engines_compared(cases: &[StiffCase], quick: bool) -> Vec<EnginePoint> {
         let Some(reference) = case.reference else {
             continue;
         };
-        let mass = case.scenario.params.mass_properties().expect("valid");
+        let mass = case.scene.params.mass_properties().expect("valid");
         for &engine in &engines {
-            let outcome = run_engine(&case.scenario, case.rate, case.ticks, engine);
+            let outcome = run_engine(&case.scene, case.rate, case.ticks, engine);
             let ns = median_ns(if quick { 1 } else { 5 }, || {
-                std::hint::black_box(run_engine(&case.scenario, case.rate, case.ticks, engine));
+                std::hint::black_box(run_engine(&case.scene, case.rate, case.ticks, engine));
             });
             points.push(EnginePoint {
                 k: case.k,
@@ -281,13 +281,13 @@ type InvariantDrift = Result<(f64, f64), u64>;
 /// The undamped stiff band (k = 1e5, 100 Hz, 10 s): the largest energy error relative to the
 /// energy the band put in, and the largest change of the angular momentum about the anchor.
 fn stiff_invariants(quick: bool) -> Vec<(Integrator, InvariantDrift)> {
-    let mut scenario = Scenario::named("undamped").expect("built-in");
-    scenario.params.stiffness = 1e5;
+    let mut scene = Scene::named("undamped").expect("built-in");
+    scene.params.stiffness = 1e5;
     let steps = if quick { 100 } else { 1000 };
     Integrator::ALL
         .iter()
         .map(|&integrator| {
-            let mut run = Run::of(&scenario, integrator, 0.01).expect("valid");
+            let mut run = Run::of(&scene, integrator, 0.01).expect("valid");
             let mass = run.stepper.mass;
             let e0 = run.stepper.energy();
             let l0 = angular_momentum_about(&run.stepper.state, &mass, TUTORIAL_PULL_TARGET);

@@ -51,15 +51,15 @@ impl WorkPoint {
 /// Every work scene, step and integrator, in that order.
 pub(super) fn sweep(quick: bool) -> Vec<WorkPoint> {
     let mut points = Vec::new();
-    for scene in work_scenes() {
-        let name = scene.scenario.name;
-        let mass = scene.scenario.params.mass_properties().expect("valid");
+    for work in work_scenes() {
+        let name = work.scene.name;
+        let mass = work.scene.params.mass_properties().expect("valid");
         for dt in steps_swept(quick) {
-            let steps = (scene.horizon / dt).round() as u64;
+            let steps = (work.horizon / dt).round() as u64;
             let t = steps as f64 * dt;
-            let reference = work_reference(&scene, t);
+            let reference = work_reference(&work, t);
             for integrator in Integrator::ALL {
-                let fresh = || Run::of(&scene.scenario, integrator, dt).expect("valid");
+                let fresh = || Run::of(&work.scene, integrator, dt).expect("valid");
                 let mut run = fresh();
                 let mut energy_drift: f64 = 0.0;
                 let e0 = run.stepper.energy();
@@ -86,7 +86,7 @@ pub(super) fn sweep(quick: bool) -> Vec<WorkPoint> {
                         .is_none()
                         .then(|| run.stepper.state.pose_error(&reference, &mass)),
                     diverged_at,
-                    energy_drift: (scene.energy_invariant && diverged_at.is_none())
+                    energy_drift: (work.energy_invariant && diverged_at.is_none())
                         .then_some(energy_drift),
                     ns_per_simulated_second: ns / t,
                 });
