@@ -1,5 +1,6 @@
 //! The way in stays walkable: every relative link in README.md and docs/ points at a file of
-//! the repository that exists, none leaves the repository, and README stays an entrance.
+//! the repository that exists and every anchor at one of its headings, none leaves the
+//! repository, and README stays an entrance.
 
 use std::fs;
 use std::path::{Component, Path, PathBuf};
@@ -81,6 +82,103 @@ fn every_relative_link_points_at_a_file_in_the_repository() {
     }
     assert!(checked > 20, "the reader found the links ({checked})");
     assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
+}
+
+/// The anchors a page's headings make, as GitHub makes them: lowercased, punctuation other
+/// than `-` and `_` dropped, spaces to `-`, a repeated one numbered from `-1`. Headings inside
+/// fenced code are not headings.
+fn anchors(text: &str) -> Vec<String> {
+    let mut made: Vec<String> = Vec::new();
+    let mut fenced = false;
+    for line in text.lines() {
+        if line.trim_start().starts_with("```") {
+            fenced = !fenced;
+            continue;
+        }
+        let Some(title) = line.strip_prefix('#').filter(|_| !fenced) else {
+            continue;
+        };
+        let title = title.trim_start_matches('#').trim();
+        let slug: String = title
+            .to_lowercase()
+            .chars()
+            .filter(|c| c.is_alphanumeric() || matches!(c, '-' | '_' | ' '))
+            .map(|c| if c == ' ' { '-' } else { c })
+            .collect();
+        let repeats = made
+            .iter()
+            .filter(|anchor| {
+                **anchor == slug
+                    || anchor
+                        .strip_prefix(&slug)
+                        .and_then(|rest| rest.strip_prefix('-'))
+                        .is_some_and(|n| n.parse::<u32>().is_ok())
+            })
+            .count();
+        made.push(if repeats == 0 {
+            slug
+        } else {
+            format!("{slug}-{repeats}")
+        });
+    }
+    made
+}
+
+/// A link's anchor names a heading of the page it points at (or of its own page).
+#[test]
+fn every_anchor_names_a_heading_of_its_page() {
+    let mut dead = Vec::new();
+    let mut checked = 0;
+    for page in pages() {
+        let text = fs::read_to_string(&page).expect("a page");
+        for target in links(&text) {
+            let Some((file, anchor)) = target.split_once('#') else {
+                continue;
+            };
+            if target.contains("://") {
+                continue;
+            }
+            let file = if file.is_empty() {
+                page.clone()
+            } else {
+                match local_file(&page, file) {
+                    Some(Ok(file)) if file.exists() => file,
+                    // The file test names a missing file.
+                    _ => continue,
+                }
+            };
+            if file.extension().is_none_or(|e| e != "md") {
+                continue;
+            }
+            let headings = anchors(&fs::read_to_string(&file).expect("a page"));
+            checked += 1;
+            if !headings.iter().any(|heading| heading == anchor) {
+                dead.push(format!(
+                    "{}: {target} names no heading of {}",
+                    page.display(),
+                    file.display()
+                ));
+            }
+        }
+    }
+    assert!(checked > 20, "the reader found the anchors ({checked})");
+    assert!(dead.is_empty(), "dead anchors:\n{}", dead.join("\n"));
+}
+
+#[test]
+fn the_anchor_reader_makes_githubs_anchors() {
+    let page = "# Rubber Band Box\n## `auto`: the game's default\n```\n# not a heading\n```\n\
+                ## Size and load\n## Size and load\n### Measured (2026-11-25)";
+    assert_eq!(
+        anchors(page),
+        [
+            "rubber-band-box",
+            "auto-the-games-default",
+            "size-and-load",
+            "size-and-load-1",
+            "measured-2026-11-25"
+        ]
+    );
 }
 
 #[test]
