@@ -14,7 +14,7 @@ use bevy::prelude::*;
 
 use crate::game::schedule::PhysicsSystems;
 use crate::game::shared::Overlays;
-use crate::game::simulation::{Band, ResetScene, RigidBox, acting_band, body_state};
+use crate::game::simulation::{Band, Bodies, ResetScene, acting_band};
 use crate::physics::{
     AutoSettings, BandEnds, BodyState, EnergyLedger, Integrator, MassProperties, SceneParams,
     StepInfo, Stepper,
@@ -189,15 +189,7 @@ fn step_ghosts(
     mut ghosts: ResMut<Ghosts>,
     time: Res<Time<Fixed>>,
     params: Res<SceneParams>,
-    boxes: Query<
-        (
-            Entity,
-            &crate::physics::LinearState,
-            &crate::physics::AngularState,
-            &MassProperties,
-        ),
-        With<RigidBox>,
-    >,
+    boxes: Bodies,
     bands: Query<&Band>,
 ) {
     if !overlays.ghosts {
@@ -206,14 +198,15 @@ fn step_ghosts(
         }
         return;
     }
-    let Ok((body, linear, angular, mass)) = boxes.single() else {
+    let Ok(body) = boxes.single() else {
         return;
     };
+    let mass = body.mass;
     // Taken at every step, so that a restart asked while the ghosts were off is not done
     // again a step after they start.
     let restart = std::mem::take(&mut ghosts.restart);
     if ghosts.ghosts.is_empty() || restart {
-        let start = body_state(linear, angular);
+        let start = body.state();
         ghosts.ghosts = Integrator::ALL
             .map(GhostKind::Method)
             .into_iter()
@@ -222,7 +215,7 @@ fn step_ghosts(
             .collect();
     }
     let dt = time.timestep().as_secs_f64();
-    let band = acting_band(body, &bands);
+    let band = acting_band(body.entity, &bands);
     for ghost in &mut ghosts.ghosts {
         ghost.stepper.params = *params;
         ghost.stepper.mass = *mass;

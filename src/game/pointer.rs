@@ -22,8 +22,8 @@ use bevy::window::{PrimaryWindow, WindowFocused};
 
 use crate::game::layout::SceneViewport;
 use crate::game::schedule::GameSystems;
-use crate::game::simulation::{Band, ResetScene, RigidBox, Tap, body_state};
-use crate::physics::{AngularState, BandEnds, LinearState, MassProperties};
+use crate::game::simulation::{Band, Bodies, ResetScene, Tap};
+use crate::physics::BandEnds;
 
 pub struct PointerPlugin;
 
@@ -177,7 +177,7 @@ fn let_go_on_reset(
 pub fn drive_band(
     mut commands: Commands,
     mut actions: MessageReader<PointerAction>,
-    boxes: Query<(Entity, &LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    boxes: Bodies,
     mut existing: Query<(Entity, &mut Band)>,
 ) {
     // Play this frame's actions on a small model first, then touch the world once, so that
@@ -191,12 +191,12 @@ pub fn drive_band(
         match *action {
             PointerAction::Press(at) => {
                 existing_band = None;
-                let Ok((body, linear, angular, mass)) = boxes.single() else {
+                let Ok(body) = boxes.single() else {
                     continue;
                 };
                 fresh = Some(Band {
-                    body,
-                    ends: BandEnds::grabbing(mass, &body_state(linear, angular), at),
+                    body: body.entity,
+                    ends: BandEnds::grabbing(body.mass, &body.state(), at),
                 });
             }
             PointerAction::Move(to) => {

@@ -11,6 +11,7 @@
 
 use std::time::Duration;
 
+use bevy::ecs::query::QueryData;
 use bevy::ecs::schedule::{Schedules, SingleThreadedExecutor};
 use bevy::ecs::system::SystemParam;
 use bevy::math::DVec2;
@@ -130,36 +131,23 @@ pub struct EnergyBooks {
     pub energies: Energies,
 }
 
-/// Kinetic and band energy of every body, with the bands as they are now.
+/// Kinetic and band energy of every body, with the bands as they are now: the one place
+/// the game sums them (the step's books before and after, the HUD).
 pub fn mechanical_energies(
     params: &SceneParams,
-    bodies: &Bodies,
+    bodies: &Query<RigidBodyQueryReadOnly, With<RigidBox>>,
     bands: &Query<&Band>,
 ) -> Energies {
-    energies_of(
-        params,
-        bodies
-            .iter()
-            .map(|(linear, angular, mass)| (body_state(linear, angular), mass)),
-        bands.iter().filter_map(|band| {
-            let (linear, angular, _) = bodies.get(band.body).ok()?;
-            Some((band.ends, body_state(linear, angular)))
-        }),
-    )
-}
-
-/// Kinetic energy of the bodies given, and band energy of the bands given with their body's
-/// state.
-fn energies_of<'m>(
-    params: &SceneParams,
-    bodies: impl Iterator<Item = (BodyState, &'m MassProperties)>,
-    bands: impl Iterator<Item = (BandEnds, BodyState)>,
-) -> Energies {
     let kinetic: Energies = bodies
-        .map(|(state, mass)| Energies::of(&state, mass, None, params.stiffness))
+        .iter()
+        .map(|body| Energies::of(&body.state(), body.mass, None, params.stiffness))
         .sum();
     let band = bands
-        .map(|(ends, state)| ends.potential_energy(&state, params.stiffness))
+        .iter()
+        .filter_map(|band| {
+            let body = bodies.get(band.body).ok()?;
+            Some(band.ends.potential_energy(&body.state(), params.stiffness))
+        })
         .sum();
     Energies { band, ..kinetic }
 }
@@ -174,17 +162,44 @@ pub fn acting_band(body: Entity, bands: &Query<&Band>) -> Option<BandEnds> {
         .map(|band| band.ends)
 }
 
-/// The bodies the energy books count: their state and mass.
-pub type Bodies<'w, 's> = Query<
-    'w,
-    's,
-    (
-        &'static LinearState,
-        &'static AngularState,
-        &'static MassProperties,
-    ),
-    With<RigidBox>,
->;
+/// A rigid body as the step moves it: its state, its mass, what acts on it and what is drawn
+/// of it (avian's `RigidBodyQuery` is the model). Read-only ([`Bodies`]), it is what the rest
+/// of the game reads of the box.
+#[derive(QueryData)]
+#[query_data(mutable)]
+pub struct RigidBodyQuery {
+    pub entity: Entity,
+    pub linear: &'static mut LinearState,
+    pub angular: &'static mut AngularState,
+    pub mass: &'static MassProperties,
+    pub accumulator: &'static mut ForceAccumulator,
+    pub snapshots: &'static mut RenderSnapshots,
+}
+
+impl RigidBodyQueryItem<'_, '_> {
+    /// The core's state, from the two components.
+    pub fn state(&self) -> BodyState {
+        body_state(&self.linear, &self.angular)
+    }
+
+    fn set_state(&mut self, state: BodyState) {
+        *self.linear = state.linear;
+        *self.angular = state.angular;
+    }
+}
+
+impl RigidBodyQueryReadOnlyItem<'_, '_> {
+    /// The core's state, from the two components.
+    pub fn state(&self) -> BodyState {
+        body_state(self.linear, self.angular)
+    }
+}
+
+/// The boxes, read.
+pub type Bodies<'w, 's> = Query<'w, 's, RigidBodyQueryReadOnly, With<RigidBox>>;
+
+/// The boxes, as the step moves them.
+type Moving<'w, 's> = Query<'w, 's, RigidBodyQuery, With<RigidBox>>;
 
 /// Puts every schedule the app has now on the single-threaded executor: for one box the
 /// multi-threaded one costs many times more per tick (docs/benchmarks.md). The benchmarks
@@ -311,29 +326,8 @@ struct StepRecords<'w> {
     count: ResMut<'w, StepCount>,
 }
 
-/// The bodies the step moves.
-type Moving<'w, 's> = Query<
-    'w,
-    's,
-    (
-        &'static mut LinearState,
-        &'static mut AngularState,
-        &'static MassProperties,
-        &'static mut ForceAccumulator,
-        &'static mut RenderSnapshots,
-    ),
-    With<RigidBox>,
->;
-
 /// The fixed step, in one system (each system a step costs Bevy about as much again as the
-/// box's physics: docs/peers.md), in three phases:
-/// - accumulate: the hand's work since the last step booked, then on each body the band's
-///   force k·(anchor − corner) at its corner with its torque r × F, and damping's force −b·v
-///   and torque −c·I·ω;
-/// - integrate with the `Integrator` resource (a step that would leave the state non-finite
-///   is refused; damping's share booked; the accumulator emptied);
-/// - publish: the render snapshots moved on, the energy books settled (the energies now, the
-///   residual), a tap's band removed after its one step, the step counted.
+/// box's physics: docs/peers.md), in three phases: [`accumulate`], [`integrate`], [`publish`].
 fn step(
     mut commands: Commands,
     settings: StepSettings,
@@ -342,89 +336,95 @@ fn step(
     mut bodies: Moving,
     mut records: StepRecords,
 ) {
+    accumulate(&settings.params, &bands, &mut bodies, &mut records.books);
+    integrate(&settings, &mut bodies, &mut records);
+    publish(&settings.params, &bands, &bodies, &mut records);
+    for band in &taps {
+        commands.entity(band).despawn();
+    }
+}
+
+/// The hand's work since the last step booked, then on each body the band's force
+/// k·(anchor − corner) at its corner with its torque r × F (one band a body).
+fn accumulate(
+    params: &SceneParams,
+    bands: &Query<&Band>,
+    bodies: &mut Moving,
+    books: &mut EnergyBooks,
+) {
+    let before = mechanical_energies(params, &bodies.as_readonly(), bands).total();
+    books.ledger.open_step(books.settled, before);
+    for band in bands {
+        let Ok(mut body) = bodies.get_mut(band.body) else {
+            continue;
+        };
+        if body.accumulator.band.is_some() {
+            // The scene has one band per body; the pointer never makes a second.
+            warn_once!("a second band on one body is ignored");
+            continue;
+        }
+        let wrench = band.ends.wrench(&body.state(), params.stiffness);
+        body.accumulator.forces.applied += wrench;
+        body.accumulator.band = Some(band.ends);
+    }
+}
+
+/// Each body advanced by the `Integrator` resource under what was accumulated and damping's
+/// −b·v and −c·I·ω; a step that would leave the state non-finite is refused (damping's share
+/// booked otherwise); the accumulator emptied, the render snapshots moved on.
+fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRecords) {
     let StepSettings {
         time,
         params,
         integrator,
         auto,
     } = settings;
-    let books = &mut *records.books;
-    let stats = &mut *records.stats;
-    let energies_now = |bodies: &Moving| {
-        energies_of(
-            &params,
-            bodies
-                .iter()
-                .map(|(linear, angular, mass, ..)| (body_state(linear, angular), mass)),
-            bands.iter().filter_map(|band| {
-                let (linear, angular, ..) = bodies.get(band.body).ok()?;
-                Some((band.ends, body_state(linear, angular)))
-            }),
-        )
-    };
-
-    // Accumulate.
-    books
-        .ledger
-        .open_step(books.settled, energies_now(&bodies).total());
-    for band in &bands {
-        let Ok((linear, angular, _, mut accumulator, _)) = bodies.get_mut(band.body) else {
-            continue;
-        };
-        if accumulator.band.is_some() {
-            // The scene has one band per body; the pointer never makes a second.
-            warn_once!("a second band on one body is ignored");
-            continue;
-        }
-        accumulator.forces.applied += band
-            .ends
-            .wrench(&body_state(&linear, &angular), params.stiffness);
-        accumulator.band = Some(band.ends);
-    }
-
-    // Integrate.
     let dt = time.timestep().as_secs_f64();
+    let stats = &mut *records.stats;
     stats.substeps = 0;
     stats.fell_back = false;
     let step = records.count.0 + 1;
-    for (mut linear, mut angular, mass, mut accumulator, mut snapshots) in &mut bodies {
-        let mut state = body_state(&linear, &angular);
-        let mut forces = accumulator.forces;
-        forces.damping +=
-            damping_wrench(&state, mass, params.linear_damping, params.angular_damping);
-        let model = params.force_model(*mass, accumulator.band);
-        *accumulator = ForceAccumulator::default();
-        let info = integrator.step_with(&mut state, &model, forces, dt, &auto);
+    for mut body in bodies.iter_mut() {
+        let mut state = body.state();
+        let mut forces = body.accumulator.forces;
+        forces.damping += damping_wrench(
+            &state,
+            body.mass,
+            params.linear_damping,
+            params.angular_damping,
+        );
+        let model = params.force_model(*body.mass, body.accumulator.band);
+        *body.accumulator = ForceAccumulator::default();
+        let info = integrator.step_with(&mut state, &model, forces, dt, auto);
         stats.substeps = stats.substeps.max(info.substeps);
         stats.fell_back |= info.fell_back;
         stats.fallbacks += u64::from(info.fell_back);
         // A divergent explicit method (a stiff band) must not put NaN, infinity or an absurd
         // value into a component: refuse the step, keep the last sane state, and say so.
         if state.is_sane() {
-            books.ledger.dissipated += info.dissipated;
-            *linear = state.linear;
-            *angular = state.angular;
+            records.books.ledger.dissipated += info.dissipated;
+            body.set_state(state);
         } else {
             if stats.divergence.is_none() {
                 warn!(
                     "integrator {} diverged at step {step}: step refused",
-                    *integrator
+                    **integrator
                 );
             }
-            stats.divergence = Some((*integrator, step));
+            stats.divergence = Some((**integrator, step));
         }
-        // Publish, for this body.
-        snapshots.previous = snapshots.current;
-        snapshots.current = body_state(&linear, &angular);
+        let now = body.state();
+        body.snapshots.previous = body.snapshots.current;
+        body.snapshots.current = now;
     }
+}
 
-    // Publish.
-    let energies = energies_now(&bodies);
+/// The energy books settled (the energies now, the ledger's residual), the step counted.
+fn publish(params: &SceneParams, bands: &Query<&Band>, bodies: &Moving, records: &mut StepRecords) {
+    let books = &mut *records.books;
+    let energies = mechanical_energies(params, &bodies.as_readonly(), bands);
     books.energies = energies;
     books.settled = Some(energies.total());
     books.residual = books.ledger.residual(energies.total());
-    for band in &taps {
-        commands.entity(band).despawn();
-    }
-    records.count.0 = step;
+    records.count.0 += 1;
 }

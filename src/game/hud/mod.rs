@@ -495,7 +495,7 @@ impl HudSources<'_, '_> {
             .boxes
             .iter()
             .next()
-            .map_or(params.mass, |(_, _, mass)| mass.mass());
+            .map_or(params.mass, |body| body.mass.mass());
         let step = self.fixed_time.timestep().as_secs_f64();
         HudReadings {
             integrator: *self.integrator,

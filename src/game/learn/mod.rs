@@ -21,13 +21,12 @@ use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
 use crate::game::shared::{Overlays, SceneName};
 use crate::game::simulation::{
-    Band, EnergyBooks, ResetScene, RigidBox, StepCount, acting_band, body_state, rigid_box,
-    set_fixed_step,
+    Band, Bodies, EnergyBooks, ResetScene, RigidBodyQueryReadOnly, RigidBox, StepCount,
+    acting_band, rigid_box, set_fixed_step,
 };
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{
-    AngularState, AutoSettings, BodyState, Integrator, LinearState, MassProperties, SceneParams,
-    kinetic_energy,
+    AutoSettings, BodyState, Integrator, MassProperties, SceneParams, kinetic_energy,
 };
 
 pub struct LearnPlugin;
@@ -125,12 +124,11 @@ fn learn(learn: On<Learn>, mut commands: Commands) {
 
 /// The box's state and mass, if there is one.
 fn the_body(world: &mut World) -> Option<(BodyState, MassProperties)> {
-    let mut boxes =
-        world.query_filtered::<(&LinearState, &AngularState, &MassProperties), With<RigidBox>>();
+    let mut boxes = world.query_filtered::<RigidBodyQueryReadOnly, With<RigidBox>>();
     boxes
         .iter(world)
         .next()
-        .map(|(linear, angular, mass)| (body_state(linear, angular), *mass))
+        .map(|body| (body.state(), *body.mass))
 }
 
 /// Shows chapter `index`: the game saved first if the mode is being entered; the chapter's
@@ -235,18 +233,19 @@ fn check_task(
     grip: Res<Grip>,
     steps: Res<StepCount>,
     time: Res<Time<Virtual>>,
-    boxes: Query<(Entity, &LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    boxes: Bodies,
     bands: Query<&Band>,
 ) {
     let Some(index) = learning.chapter else {
         return;
     };
-    let Ok((body, linear, angular, mass)) = boxes.single() else {
+    let Ok(body) = boxes.single() else {
         return;
     };
+    let mass = body.mass;
     // Only the player's own band counts, not a scene's script.
-    let band = acting_band(body, &bands).filter(|_| grip.0.is_some());
-    let state = body_state(linear, angular);
+    let band = acting_band(body.entity, &bands).filter(|_| grip.0.is_some());
+    let state = body.state();
     let progress = &mut learning.progress;
     let stepped = steps.0.saturating_sub(progress.steps_seen);
     let first_look = progress.steps_seen == 0;
@@ -438,16 +437,16 @@ fn show_chapter(
     params: Res<SceneParams>,
     books: Res<EnergyBooks>,
     twin: Res<CentreTwin>,
-    boxes: Query<(Entity, &LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    boxes: Bodies,
     bands: Query<&Band>,
     mut texts: Query<(&LearnText, &mut Text, &mut TextColor)>,
 ) {
-    let quantities = boxes.single().ok().map(|(body, linear, angular, mass)| {
+    let quantities = boxes.single().ok().map(|body| {
         Quantities::of(
-            body_state(linear, angular),
-            mass,
+            body.state(),
+            body.mass,
             &params,
-            acting_band(body, &bands),
+            acting_band(body.entity, &bands),
             books.ledger,
         )
         .with_twin(twin.body.as_ref())

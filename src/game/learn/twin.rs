@@ -7,11 +7,8 @@
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
-use crate::game::simulation::{Band, ResetScene, RigidBox, acting_band, body_state};
-use crate::physics::{
-    AngularState, AutoSettings, BandEnds, BodyState, Integrator, LinearState, MassProperties,
-    SceneParams, Stepper,
-};
+use crate::game::simulation::{Band, Bodies, ResetScene, acting_band};
+use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams, Stepper};
 
 /// Where the twin sits from the box, in world px: below it, so that the tutorial's pull up
 /// and to the right keeps both in the scene.
@@ -60,7 +57,7 @@ pub fn step_twin(
     mut twin: ResMut<CentreTwin>,
     time: Res<Time<Fixed>>,
     (params, integrator, auto): (Res<SceneParams>, Res<Integrator>, Res<AutoSettings>),
-    boxes: Query<(Entity, &LinearState, &AngularState, &MassProperties), With<RigidBox>>,
+    boxes: Bodies,
     bands: Query<&Band>,
 ) {
     if !twin.wanted {
@@ -69,12 +66,13 @@ pub fn step_twin(
         }
         return;
     }
-    let Ok((body, linear, angular, mass)) = boxes.single() else {
+    let Ok(body) = boxes.single() else {
         return;
     };
+    let mass = body.mass;
     let restart = std::mem::take(&mut twin.restart);
     if twin.body.is_none() || restart {
-        let mut start = body_state(linear, angular);
+        let mut start = body.state();
         start.linear.position += TWIN_OFFSET;
         twin.body = Some(Twin {
             stepper: Stepper {
@@ -96,7 +94,7 @@ pub fn step_twin(
     stepper.mass = *mass;
     stepper.integrator = *integrator;
     stepper.auto = *auto;
-    stepper.band = acting_band(body, &bands).map(Twin::band_for);
+    stepper.band = acting_band(body.entity, &bands).map(Twin::band_for);
     let before = stepper.state;
     stepper.step(time.timestep().as_secs_f64());
     if stepper.state.is_sane() {

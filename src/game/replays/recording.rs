@@ -15,8 +15,8 @@ use bevy::prelude::*;
 
 use crate::game::schedule::PhysicsSystems;
 use crate::game::shared::{SceneName, StatusMessage};
-use crate::game::simulation::{Band, ResetScene, RigidBox, StepSettings, acting_band, body_state};
-use crate::physics::{AngularState, BandEnds, LinearState};
+use crate::game::simulation::{Band, Bodies, ResetScene, StepSettings, acting_band};
+use crate::physics::BandEnds;
 use crate::replay::{Replay, Settings};
 
 pub struct RecordingPlugin;
@@ -97,10 +97,10 @@ fn note_step_inputs(
     mut recorder: ResMut<Recorder>,
     step: StepSettings,
     scene: Res<SceneName>,
-    boxes: Query<(Entity, &LinearState, &AngularState), With<RigidBox>>,
+    boxes: Bodies,
     bands: Query<&Band>,
 ) {
-    let Ok((body, linear, angular)) = boxes.single() else {
+    let Ok(body) = boxes.single() else {
         return;
     };
     let settings = Settings::new(
@@ -109,9 +109,9 @@ fn note_step_inputs(
         *step.integrator,
     );
     let recorder = &mut *recorder;
-    let replay = recorder.replay.get_or_insert_with(|| {
-        Replay::start(&scene.0, settings, *step.auto, body_state(linear, angular))
-    });
+    let replay = recorder
+        .replay
+        .get_or_insert_with(|| Replay::start(&scene.0, settings, *step.auto, body.state()));
     if replay.is_full() {
         warn_once!("the recording is full: later steps are not recorded");
         return;
@@ -120,22 +120,19 @@ fn note_step_inputs(
         replay.push_reset();
     }
     replay.push_settings(settings);
-    recorder.band = acting_band(body, &bands);
+    recorder.band = acting_band(body.entity, &bands);
     recorder.step_noted = true;
 }
 
 /// After the step: the state the step left (refused steps included, as the game kept it).
-fn note_step_result(
-    mut recorder: ResMut<Recorder>,
-    boxes: Query<(&LinearState, &AngularState), With<RigidBox>>,
-) {
+fn note_step_result(mut recorder: ResMut<Recorder>, boxes: Bodies) {
     let recorder = &mut *recorder;
     if !std::mem::take(&mut recorder.step_noted) {
         return;
     }
     let band = recorder.band.take();
-    if let (Some(replay), Ok((linear, angular))) = (recorder.replay.as_mut(), boxes.single()) {
-        replay.push_step(band, &body_state(linear, angular));
+    if let (Some(replay), Ok(body)) = (recorder.replay.as_mut(), boxes.single()) {
+        replay.push_step(band, &body.state());
     }
 }
 
