@@ -15,7 +15,9 @@ use std::time::Instant;
 
 use clap::Args;
 
+mod engines;
 mod hard_cases;
+mod invariants;
 mod ledger;
 #[cfg(feature = "peers")]
 mod peers;
@@ -26,10 +28,11 @@ mod stiffness;
 mod table;
 mod work_precision;
 
+pub use engines::EnginePoint;
 pub use hard_cases::{HardCase, hard_cases};
 pub use plots::{ExtraLines, Line};
 pub use stability::{STIFFEST_TRIED, StabilityRow};
-pub use stiffness::{EnginePoint, SWEEP_RATES, StiffPoint, ks_swept, stiff_cases};
+pub use stiffness::{SWEEP_RATES, StiffPoint, ks_swept, stiff_cases};
 pub use work_precision::WorkPoint;
 
 use table::Table;
@@ -100,8 +103,8 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     let sweep = stiffness::sweep(&cases, quick);
     tables.extend([
         stiffness::table(&cases, &sweep),
-        stiffness::engines_table(&cases, quick),
-        stiffness::invariants_table(quick),
+        engines::table(&cases, quick),
+        invariants::table(quick),
         ledger::table(quick),
     ]);
     #[cfg(feature = "peers")]

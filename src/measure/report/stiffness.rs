@@ -1,15 +1,13 @@
 //! The stiffness sweep: every integrator on the stiff pulls from k = 20 to 1e12, judged at the
-//! horizon its references resolve; beside it the invariants of the undamped stiff band and the
-//! comparison of the engines `auto` could step with. `run` makes their tables
-//! (`stiffness.csv`, `engines.csv`); the plots draw the sweep (`stiffness.svg`) and the
-//! side-by-side (`super::peers`) runs the same cases.
+//! horizon its references resolve (`stiffness.csv`); the plots draw it (`stiffness.svg`), and
+//! the engines for `auto` ([`super::engines`]) and the side-by-side (`super::peers`) run the
+//! same cases.
 
-use crate::measure::references::{Engine, StiffCase, UNRESOLVABLE_SECONDS, run_engine};
+use crate::measure::references::{StiffCase, UNRESOLVABLE_SECONDS};
 use crate::measure::timing::median_ns;
-use crate::physics::scenes::TUTORIAL_PULL_TARGET;
-use crate::physics::{Integrator, Run, Scene, angular_momentum_about};
+use crate::physics::{Integrator, Run};
 
-use super::table::{Cell, Column, Table, diverged, or_empty};
+use super::table::{Cell, Column, Table, diverged};
 
 /// One integrator on one [`StiffCase`].
 #[derive(Clone, Debug)]
@@ -190,143 +188,6 @@ pub(super) fn table(cases: &[StiffCase], points: &[StiffPoint]) -> Table {
             ]);
             table.row(cells);
         }
-    }
-    table
-}
-
-/// The engine comparison: each candidate at several settings on the stiff pulls at 100 Hz,
-/// error at the horizon against the reference, cost per fixed step of the core alone.
-pub struct EnginePoint {
-    pub k: f64,
-    pub engine: Engine,
-    pub error: Option<f64>,
-    pub ns_per_tick: f64,
-    pub evaluations_per_tick: f64,
-}
-
-fn engines_compared(cases: &[StiffCase], quick: bool) -> Vec<EnginePoint> {
-    let engines: Vec<Engine> = if quick {
-        vec![
-            Engine::Rk4(100),
-            Engine::Dop853(1e-9),
-            Engine::Taylor(20, 1e-9),
-        ]
-    } else {
-        let mut all: Vec<Engine> = [25, 100, 400, 1600].map(Engine::Rk4).to_vec();
-        all.extend([1e-8, 1e-9, 1e-10, 1e-11].map(Engine::Dop853));
-        for order in [12, 16, 20, 24] {
-            all.extend([1e-8, 1e-9, 3e-10, 1e-10].map(|t| Engine::Taylor(order, t)));
-        }
-        all
-    };
-    let mut points = Vec::new();
-    for case in cases.iter().filter(|c| c.rate == 100.0 && c.k >= 1e3) {
-        let Some(reference) = case.reference else {
-            continue;
-        };
-        let mass = case.scene.params.mass_properties().expect("valid");
-        for &engine in &engines {
-            let outcome = run_engine(&case.scene, case.rate, case.ticks, engine);
-            let ns = median_ns(if quick { 1 } else { 5 }, || {
-                std::hint::black_box(run_engine(&case.scene, case.rate, case.ticks, engine));
-            });
-            points.push(EnginePoint {
-                k: case.k,
-                engine,
-                error: outcome.map(|(state, _)| state.pose_error(&reference.state, &mass)),
-                ns_per_tick: ns / case.ticks as f64,
-                evaluations_per_tick: outcome.map_or(0.0, |o| o.1),
-            });
-        }
-    }
-    points
-}
-
-/// A line per case and engine.
-pub(super) fn engines_table(cases: &[StiffCase], quick: bool) -> Table {
-    let mut table = Table::new(
-        "Engines for auto: candidates on the stiff pulls at 100 Hz, restarted every fixed \
-         step (error in px at the horizon against the reference; ns per fixed step of the core \
-         alone; force evaluations per fixed step, for Taylor series coefficient orders)",
-        Some("engines.csv"),
-        vec![
-            Column::new("k", "k"),
-            Column::new("engine", "engine"),
-            Column::new("error", "error_px"),
-            Column::new("ns per step", "ns_per_tick"),
-            Column::new("evaluations", "evaluations_per_tick"),
-        ],
-    );
-    for p in engines_compared(cases, quick) {
-        table.row(vec![
-            Cell::new(format!("{:e}", p.k), p.k.to_string()),
-            Cell::same(p.engine.name()),
-            Cell::new(
-                p.error.map_or("gave up".to_owned(), |e| format!("{e:.1e}")),
-                or_empty(p.error),
-            ),
-            Cell::new(format!("{:.0}", p.ns_per_tick), p.ns_per_tick.to_string()),
-            Cell::new(
-                format!("{:.0}", p.evaluations_per_tick),
-                p.evaluations_per_tick.to_string(),
-            ),
-        ]);
-    }
-    table
-}
-
-/// Largest energy error and angular momentum change, or the step where the run diverged.
-type InvariantDrift = Result<(f64, f64), u64>;
-
-/// The undamped stiff band (k = 1e5, 100 Hz, 10 s): the largest energy error relative to the
-/// energy the band put in, and the largest change of the angular momentum about the anchor.
-fn stiff_invariants(quick: bool) -> Vec<(Integrator, InvariantDrift)> {
-    let mut scene = Scene::named("undamped").expect("built-in");
-    scene.params.stiffness = 1e5;
-    let steps = if quick { 100 } else { 1000 };
-    Integrator::ALL
-        .iter()
-        .map(|&integrator| {
-            let mut run = Run::of(&scene, integrator, 0.01).expect("valid");
-            let mass = run.stepper.mass;
-            let e0 = run.stepper.energy();
-            let l0 = angular_momentum_about(&run.stepper.state, &mass, TUTORIAL_PULL_TARGET);
-            let (mut energy, mut momentum) = (0.0_f64, 0.0_f64);
-            for _ in 0..steps {
-                if let Err(d) = run.advance() {
-                    return (integrator, Err(d.step));
-                }
-                energy = energy.max((run.stepper.energy() - e0).abs() / e0);
-                let l = angular_momentum_about(&run.stepper.state, &mass, TUTORIAL_PULL_TARGET);
-                momentum = momentum.max((l - l0).abs());
-            }
-            (integrator, Ok((energy, momentum)))
-        })
-        .collect()
-}
-
-/// A line per integrator, in the Markdown only.
-pub(super) fn invariants_table(quick: bool) -> Table {
-    let mut table = Table::new(
-        "Undamped stiff band (k = 1e5, 100 Hz, 10 s): largest energy error relative to the \
-         energy put in, and largest change of angular momentum about the anchor",
-        None,
-        vec![
-            Column::markdown("integrator"),
-            Column::markdown("energy"),
-            Column::markdown("angular momentum"),
-        ],
-    );
-    for (integrator, outcome) in stiff_invariants(quick) {
-        let [energy, momentum] = match outcome {
-            Ok((energy, momentum)) => [format!("{energy:.1e}"), format!("{momentum:.1e}")],
-            Err(step) => [diverged(step), String::new()],
-        };
-        table.row(vec![
-            Cell::same(integrator),
-            Cell::markdown(energy),
-            Cell::markdown(momentum),
-        ]);
     }
     table
 }
