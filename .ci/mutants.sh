@@ -56,10 +56,10 @@ else
     # panel's and the HUD's spawn functions) is tried too, and counted apart (docs/testing.md).
     out=mutants-game.out
     groups=(
-        "src/game/input/controls.rs src/game/input/pointer.rs : controls schedule panel"
-        "src/game/simulation.rs : schedule lab hud replay"
+        "src/game/input/controls.rs src/game/pointer.rs : controls pointer fixed_step panel"
+        "src/game/simulation.rs : fixed_step pointer lab hud replay"
         "src/game/input/panel.rs : panel"
-        "src/game/hud/mod.rs src/game/hud/history.rs src/game/hud/title.rs : hud controls schedule draw"
+        "src/game/hud/mod.rs src/game/hud/history.rs src/game/hud/title.rs : hud controls fixed_step draw"
     )
     # The previous results, so that `--iterate` tests only what they did not catch.
     previous=$(mktemp -d)

@@ -2,14 +2,13 @@
 
 mod common;
 
-use std::process::{Command, Output};
+use std::process::Output;
 
 use rubber_band_box::physics::Integrator;
 use rubber_band_box::replay::run::ReplayRun;
 
 fn simulate(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .arg("simulate")
+    common::binary("simulate")
         .args(args)
         .output()
         .expect("the binary runs")
@@ -176,8 +175,8 @@ fn a_failed_write_is_reported_not_panicked() {
     let Ok(full) = std::fs::File::create("/dev/full") else {
         return; // not on this system
     };
-    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .args(["simulate", "--steps", "100000"])
+    let output = common::binary("simulate")
+        .args(["--steps", "100000"])
         .stdout(full)
         .output()
         .unwrap();
@@ -188,8 +187,8 @@ fn a_failed_write_is_reported_not_panicked() {
 
 #[test]
 fn the_report_says_when_it_cannot_write_its_files() {
-    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .args(["report", "--quick", "--out", "/dev/null/report"])
+    let output = common::binary("report")
+        .args(["--quick", "--out", "/dev/null/report"])
         .output()
         .unwrap();
     assert_eq!(output.status.code(), Some(1));
@@ -213,8 +212,8 @@ fn the_docs_and_the_help_name_every_scene_the_core_has() {
         .expect("docs/simulate.md documents --scene");
     let listed = row.matches("`").count() / 2 - 1;
     assert_eq!(listed, Scene::NAMES.len(), "{row}");
-    let help = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .args(["simulate", "--help"])
+    let help = common::binary("simulate")
+        .arg("--help")
         .output()
         .expect("the binary runs");
     let help = String::from_utf8_lossy(&help.stdout).replace('\n', " ");
@@ -356,8 +355,8 @@ fn the_docs_document_exactly_the_options_simulate_has() {
             .collect::<Vec<_>>()
             .join(" "),
     );
-    let output = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .args(["simulate", "--help"])
+    let output = common::binary("simulate")
+        .arg("--help")
         .output()
         .expect("the binary runs");
     let mut offered = flags(&String::from_utf8_lossy(&output.stdout));
@@ -367,9 +366,7 @@ fn the_docs_document_exactly_the_options_simulate_has() {
 
 /// A replay file in a scratch folder of this test process.
 fn replay_file(name: &str, text: &str) -> std::path::PathBuf {
-    let folder = std::env::temp_dir().join(format!("rbb-cli-tests-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
-    let path = folder.join(name);
+    let path = common::scratch(name);
     std::fs::write(&path, text).unwrap();
     path
 }

@@ -5,7 +5,7 @@
 
 mod common;
 
-use std::process::{Command, Output};
+use std::process::Output;
 use std::time::Duration;
 
 use bevy::input::ButtonState;
@@ -302,7 +302,7 @@ fn crafted_replays_are_refused_with_the_bound_named() {
 /// A refused replay, dropped on the window or given to `play`, leaves the game as it was.
 #[test]
 fn a_refused_replay_leaves_the_game_whole() {
-    let path = std::env::temp_dir().join(format!("rbb-links-{}.jsonl", std::process::id()));
+    let path = common::scratch("refused.jsonl");
     std::fs::write(&path, settings_record_at(1e6)).unwrap();
     let mut app = App::new();
     let options = PlayOptions {
@@ -336,8 +336,8 @@ fn a_refused_replay_leaves_the_game_whole() {
 }
 
 fn play(args: &[&str], display: bool) -> Output {
-    let mut command = Command::new(env!("CARGO_BIN_EXE_rubber_band_box"));
-    command.arg("play").args(args);
+    let mut command = common::binary("play");
+    command.args(args);
     if !display {
         command.env_remove("DISPLAY").env_remove("WAYLAND_DISPLAY");
     }

@@ -2,7 +2,9 @@
 //! before anything is put in place, so a bad one leaves the app as it was, and a replay given
 //! starts the game with its scene, settings and integrator.
 
-use std::path::PathBuf;
+mod common;
+
+use common::scratch;
 
 use bevy::prelude::*;
 use rubber_band_box::game::play::{PlayOptions, prepare};
@@ -11,13 +13,6 @@ use rubber_band_box::game::replays::recording::Recorder;
 use rubber_band_box::game::shared::SceneName;
 use rubber_band_box::physics::{AutoSettings, Integrator, Scene, SceneParams};
 use rubber_band_box::replay::script::scene_replay;
-
-/// A scratch folder of this test process.
-fn scratch(name: &str) -> PathBuf {
-    let folder = std::env::temp_dir().join(format!("rbb-play-tests-{}", std::process::id()));
-    std::fs::create_dir_all(&folder).unwrap();
-    folder.join(name)
-}
 
 /// Nothing of the game's was put in the app.
 fn untouched(app: &App) -> bool {

@@ -230,16 +230,6 @@ fn an_interrupted_save_leaves_the_old_file_whole_and_nothing_beside_it() {
     assert_eq!(std::fs::read_dir(&folder).unwrap().count(), 1);
 }
 
-/// A fresh scratch path for this test process.
-fn scratch(name: &str) -> PathBuf {
-    let path = std::env::temp_dir()
-        .join(format!("rbb-replay-tests-{}", std::process::id()))
-        .join(name);
-    let _ = std::fs::remove_dir_all(&path);
-    std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-    path
-}
-
 fn read(path: &std::path::Path) -> Replay {
     Replay::from_bytes(&std::fs::read(path).unwrap()).unwrap()
 }

@@ -4,20 +4,16 @@ mod common;
 
 use std::ffi::OsStr;
 use std::fs;
-use std::process::{Command, Output};
+use std::process::Output;
 
 /// `report` with `args`, run as a user runs it.
 fn report(args: impl IntoIterator<Item = impl AsRef<OsStr>>) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rubber_band_box"))
-        .arg("report")
-        .args(args)
-        .output()
-        .unwrap()
+    common::binary("report").args(args).output().unwrap()
 }
 
 #[test]
 fn the_quick_report_writes_tables_and_a_plot_that_parse() {
-    let out = std::env::temp_dir().join(format!("rubber-band-box-report-{}", std::process::id()));
+    let out = common::scratch("report");
     let output = report([OsStr::new("--quick"), OsStr::new("--out"), out.as_os_str()]);
     assert!(
         output.status.success(),
@@ -74,7 +70,7 @@ fn the_quick_report_writes_tables_and_a_plot_that_parse() {
 #[cfg(not(feature = "peers"))]
 #[test]
 fn asking_for_the_peers_without_them_says_how_to_get_them() {
-    let out = std::env::temp_dir().join("rubber-band-box-no-peers");
+    let out = common::scratch("no-peers");
     let output = report([
         OsStr::new("--quick"),
         OsStr::new("--peers"),
@@ -88,10 +84,7 @@ fn asking_for_the_peers_without_them_says_how_to_get_them() {
 
 /// The quick report's files in a fresh folder: (work precision, stability, report.md).
 fn quick_report(tag: &str) -> (Vec<Vec<String>>, Vec<Vec<String>>, String) {
-    let out = std::env::temp_dir().join(format!(
-        "rubber-band-box-report-{tag}-{}",
-        std::process::id()
-    ));
+    let out = common::scratch(&format!("report-{tag}"));
     let output = report([OsStr::new("--quick"), OsStr::new("--out"), out.as_os_str()]);
     assert!(output.status.success());
     let rows = |name: &str| -> Vec<Vec<String>> {
@@ -203,7 +196,7 @@ fn the_quick_report_bears_out_the_claims_readme_makes() {
 /// rates, and a bad file refused with status 2 and the line.
 #[test]
 fn the_replay_report_sweeps_every_integrator_over_the_recorded_hand() {
-    let folder = std::env::temp_dir().join(format!("rbb-replay-report-{}", std::process::id()));
+    let folder = common::scratch("replay-report");
     fs::create_dir_all(&folder).unwrap();
     let file = folder.join("small.jsonl");
     fs::write(&file, common::small_replay().to_bytes()).unwrap();

@@ -428,3 +428,25 @@ pub fn add_the_layout(app: &mut App) {
         bevy::ui::UiPlugin,
     ));
 }
+
+/// A path in this test binary's own scratch folder (under the system's temporary folder, named
+/// by the binary and its process), with nothing at it yet.
+pub fn scratch(name: &str) -> std::path::PathBuf {
+    let binary = std::env::current_exe()
+        .ok()
+        .and_then(|path| path.file_stem().map(|s| s.to_string_lossy().into_owned()))
+        .unwrap_or_default();
+    let folder = std::env::temp_dir().join(format!("rbb-{binary}-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).expect("a scratch folder");
+    let path = folder.join(name);
+    let _ = std::fs::remove_dir_all(&path);
+    let _ = std::fs::remove_file(&path);
+    path
+}
+
+/// The game's binary with its subcommand, as a user runs it.
+pub fn binary(subcommand: &str) -> std::process::Command {
+    let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_rubber_band_box"));
+    command.arg(subcommand);
+    command
+}
