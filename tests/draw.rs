@@ -15,7 +15,6 @@ use bevy::gizmos::{GizmoAsset, GizmoHandles};
 use common::*;
 use rubber_band_box::game::ghosts::GhostKind;
 use rubber_band_box::game::screen::draw::{BOX_OUTLINE, PIN_FILL};
-use rubber_band_box::physics::SCENE_SIZE;
 
 /// The headless game with the screen's plugins. The view's own camera has no renderer to
 /// compute its projection, so it goes: the test's camera (as bevy_render would compute it)
@@ -544,92 +543,4 @@ fn a_diverged_ghost_is_a_cross_at_the_plots_right_edge() {
             .iter()
             .all(|d| !same_colour(d.colour, colour))
     );
-}
-
-/// The names on the plot: each beside its point or tied to it, none on another name, on a
-/// point's mark or on the axes' text, all inside the frame, however the points crowd.
-#[test]
-fn the_plots_names_never_meet() {
-    use rubber_band_box::game::screen::plot::{MARK, place_labels};
-    let bounds = Rect::new(34.0, 18.0, 320.0, 200.0);
-    let obstacles = [
-        Rect::new(0.0, 0.0, 200.0, 14.0),
-        Rect::new(34.0, 202.0, 60.0, 214.0),
-    ];
-    // Seven names on two points (most ghosts agree on a soft band), then spread out.
-    for spread in [0.0, 3.0, 20.0] {
-        let labels: Vec<(Vec2, Vec2)> = (0..7)
-            .map(|i| {
-                let point = Vec2::new(200.0 + spread * i as f32, 100.0 + (i % 2) as f32);
-                (point, Vec2::new(40.0 + 5.0 * i as f32, 13.0))
-            })
-            .collect();
-        let placed = place_labels(&labels, bounds, &obstacles);
-        for (i, rect) in placed.iter().enumerate() {
-            assert!(bounds.union(*rect) == bounds, "{i} in the frame: {rect:?}");
-            for other in placed.iter().skip(i + 1).chain(&obstacles) {
-                assert!(rect.intersect(*other).is_empty(), "{rect:?} on {other:?}");
-            }
-            for (point, _) in &labels {
-                let mark = Rect::from_center_half_size(*point, Vec2::splat(MARK));
-                assert!(rect.intersect(mark).is_empty(), "{rect:?} on a point");
-            }
-        }
-    }
-}
-
-/// The camera keeps the box in view: while the box and the anchor lie well inside the home
-/// frame it stays home; pulled out, it widens so that both lie inside, at every frame,
-/// however fast, and comes home when they do.
-#[test]
-fn the_view_keeps_the_box_and_comes_home() {
-    use rubber_band_box::game::screen::view::{CameraFrame, eased_view, wanted_view};
-    let size = Vec2::new(600.0, 500.0);
-    let frame = CameraFrame::default();
-    let home = frame.home(size);
-    let screen = home.area(size);
-    assert!(
-        screen.width() >= 640.0 && screen.height() >= 480.0,
-        "{screen:?}"
-    );
-    let near = Rect::from_center_size(Vec2::new(50.0, 20.0), Vec2::splat(60.0));
-    assert_eq!(wanted_view(home, size, near), home);
-    let mut shown = home;
-    // A box flung far right and up, then back.
-    for step in 0..200 {
-        let t = step as f32 / 100.0;
-        let centre = if t < 1.0 {
-            Vec2::new(900.0 * t, 500.0 * t)
-        } else {
-            Vec2::new(900.0 * (2.0 - t), 500.0 * (2.0 - t))
-        };
-        let keep = Rect::from_center_size(centre, Vec2::splat(85.0));
-        let wanted = wanted_view(home, size, keep);
-        shown = eased_view(shown, wanted, 0.1, size, keep);
-        let area = shown.area(size);
-        assert!(
-            area.union(keep) == area,
-            "step {step}: {keep:?} out of {area:?}"
-        );
-    }
-    for _ in 0..100 {
-        shown = eased_view(shown, wanted_view(home, size, near), 0.1, size, near);
-    }
-    assert!(shown.centre.distance(home.centre) < 1.0, "{shown:?}");
-    assert!((shown.world_per_pixel / home.world_per_pixel - 1.0).abs() < 0.01);
-}
-
-/// The ghosts' names go above the box, or where that would leave the view, below it, right or
-/// left of it.
-#[test]
-fn the_ghosts_names_stay_in_view() {
-    use rubber_band_box::game::screen::draw::label_column;
-    let (reach, lines, line, width) = (45.0, 7, 13.2, 90.0);
-    let shown = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2());
-    let (first, step) = label_column(Vec2::ZERO, reach, lines, (line, width), shown);
-    assert!(first.x == 0.0 && first.y > reach && step == Vec2::new(0.0, line));
-    // At the top edge: not above.
-    let top = Vec2::new(0.0, 200.0);
-    let (first, _) = label_column(top, reach, lines, (line, width), shown);
-    assert!(first.y < 0.0 || first.x != 0.0, "{first}");
 }

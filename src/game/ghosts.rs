@@ -32,7 +32,7 @@ impl Plugin for GhostsPlugin {
 
 /// The reference: Taylor series of order 24 at 1e-13 px per step, at most this many
 /// substeps a fixed step.
-pub const REFERENCE: AutoSettings = AutoSettings {
+const REFERENCE: AutoSettings = AutoSettings {
     tolerance: 1e-13,
     order: 24,
     max_substeps: 2000,
@@ -84,12 +84,7 @@ pub struct Ghost {
 }
 
 impl Ghost {
-    pub fn new(
-        kind: GhostKind,
-        params: SceneParams,
-        mass: MassProperties,
-        state: BodyState,
-    ) -> Self {
+    fn new(kind: GhostKind, params: SceneParams, mass: MassProperties, state: BodyState) -> Self {
         let (integrator, auto) = match kind {
             GhostKind::Method(integrator) => (integrator, AutoSettings::default()),
             GhostKind::Reference => (Integrator::Auto, REFERENCE),
@@ -117,7 +112,7 @@ impl Ghost {
 
     /// One step of `dt` under `band`, as the game's fixed step takes one, the books kept as
     /// the game keeps them. A step that leaves the bounds is undone and the ghost frozen.
-    pub fn step(&mut self, band: Option<BandEnds>, dt: f64) {
+    fn step(&mut self, band: Option<BandEnds>, dt: f64) {
         if self.diverged_at.is_some() {
             return;
         }

@@ -83,7 +83,7 @@ fn clipped(
 
 /// Where a text's glyphs may lie, in logical pixels: its node's content box (inside its
 /// padding), cut to its clip.
-pub fn visible_text_rect(
+fn visible_text_rect(
     node: &ComputedNode,
     transform: &UiGlobalTransform,
     clip: Option<&CalculatedClip>,
@@ -185,7 +185,7 @@ impl Card {
         Card::Stability,
     ];
 
-    pub fn title(self) -> &'static str {
+    fn title(self) -> &'static str {
         match self {
             Card::Learn => "Learn",
             Card::Controls => "Controls",
@@ -240,14 +240,14 @@ impl Cards {
     }
 
     /// The card a tall window shows: the first open one the dock offers.
-    pub fn shown_alone(&self, overlays: &Overlays) -> Option<Card> {
+    fn shown_alone(&self, overlays: &Overlays) -> Option<Card> {
         Card::ALL
             .into_iter()
             .find(|&card| self.is_open(card) && card.offered(overlays))
     }
 
     /// Whether the card's body shows.
-    pub fn body_shows(&self, card: Card, shape: Shape, overlays: &Overlays) -> bool {
+    fn body_shows(&self, card: Card, shape: Shape, overlays: &Overlays) -> bool {
         match shape {
             Shape::Wide => self.is_open(card) && card.offered(overlays),
             Shape::Tall => self.shown_alone(overlays) == Some(card),
@@ -274,12 +274,12 @@ impl Shape {
 
 /// The dock's width at the side of a wide window, in logical pixels before the UI scale: a
 /// share of the window with a floor (the plot's 300 px and the ghosts' table) and a ceiling.
-pub fn dock_width(window_width: f32) -> f32 {
+fn dock_width(window_width: f32) -> f32 {
     (window_width * 0.34).clamp(350.0, 460.0)
 }
 
 /// A tall window's sheet keeps the scene at least this share of the height.
-pub const SHEET_SHARE: f32 = 0.45;
+const SHEET_SHARE: f32 = 0.45;
 
 /// The UI's scale for a window: 1 at the game's own size and above; on a phone a little
 /// smaller, never so small that text cannot be read.
@@ -306,7 +306,7 @@ pub struct CardButton(pub Card);
 
 /// The node the scene is rendered into.
 #[derive(Component, Debug)]
-pub struct ViewportNode;
+struct ViewportNode;
 
 /// The dock (the side column or the bottom sheet).
 #[derive(Component, Debug)]

@@ -132,7 +132,7 @@ fn check_folder(target: &Path) -> Result<(), String> {
 }
 
 /// The window the game opens.
-pub fn window() -> Window {
+fn window() -> Window {
     Window {
         title: "Rubber Band Box".into(),
         resolution: WINDOW_SIZE.into(),

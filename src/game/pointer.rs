@@ -69,7 +69,7 @@ pub struct SceneCamera;
 
 /// Mouse, touch and focus input to [`PointerAction`]s. A press grabs only on the scene's
 /// viewport (the dock and its controls lie outside it); a held band follows anywhere.
-pub fn read_pointer(
+fn read_pointer(
     (buttons, touches, viewport): (
         Res<ButtonInput<MouseButton>>,
         Res<Touches>,
@@ -174,7 +174,7 @@ fn let_go_on_reset(
 }
 
 /// [`PointerAction`]s to the band entity: at most one band exists after this system.
-pub fn drive_band(
+fn drive_band(
     mut commands: Commands,
     mut actions: MessageReader<PointerAction>,
     boxes: Bodies,

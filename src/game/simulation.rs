@@ -89,7 +89,7 @@ pub struct RenderSnapshots {
 }
 
 impl RenderSnapshots {
-    pub fn at_rest(state: BodyState) -> Self {
+    fn at_rest(state: BodyState) -> Self {
         Self {
             previous: state,
             current: state,
@@ -237,7 +237,7 @@ pub fn set_fixed_step(time: &mut Time<Fixed>, seconds: f64) -> bool {
 
 /// Bevy's fixed clock counts whole nanoseconds and panics on a zero step: a rate it cannot
 /// represent is refused with a message, and the clock keeps its step.
-pub fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {
+fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {
     let step = params
         .validate()
         .map_err(|error| error.to_string())
@@ -259,7 +259,7 @@ pub fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) 
 
 /// The box's mass and size as the scene's parameters say (the mass slider, a link): its
 /// state kept. A valid scene only reaches here (the controls refuse the rest).
-pub fn apply_mass(params: Res<SceneParams>, mut boxes: Query<&mut MassProperties, With<RigidBox>>) {
+fn apply_mass(params: Res<SceneParams>, mut boxes: Query<&mut MassProperties, With<RigidBox>>) {
     if let Ok(wanted) = params.mass_properties() {
         for mut mass in &mut boxes {
             mass.set_if_neq(wanted);
@@ -282,7 +282,7 @@ pub fn rigid_box(mass: MassProperties, state: BodyState) -> impl Bundle {
 }
 
 /// Spawns the box at rest at the centre of the scene.
-pub fn spawn_box(mut commands: Commands, params: Res<SceneParams>) {
+fn spawn_box(mut commands: Commands, params: Res<SceneParams>) {
     match params.mass_properties() {
         Ok(mass) => {
             let rest = BodyState::at_rest(DVec2::ZERO);

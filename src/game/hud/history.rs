@@ -37,7 +37,7 @@ impl EnergyHistory {
     pub const SAMPLES: usize = 500;
 
     /// Forgets the samples; the clock restarts at `now`.
-    pub fn restart(&mut self, now: f64) {
+    fn restart(&mut self, now: f64) {
         self.samples.clear();
         self.since = now;
     }

@@ -101,7 +101,7 @@ impl HudLine {
 
     /// Where the line lies: the status over the scene, the hint under it, the rest in the
     /// dock's cards.
-    pub fn slot(self) -> Slot {
+    fn slot(self) -> Slot {
         match self {
             HudLine::Status => Slot::Status,
             HudLine::Hint => Slot::Hint,
@@ -287,7 +287,7 @@ fn status_line(r: &HudReadings) -> String {
 }
 
 /// The ghosts' table's columns.
-pub const GHOST_COLUMNS: [&str; 6] = [
+const GHOST_COLUMNS: [&str; 6] = [
     "method", "error px", "energy", "ns/step", "evals", "holds k",
 ];
 
@@ -295,7 +295,7 @@ pub const GHOST_COLUMNS: [&str; 6] = [
 /// left to right): the ghost's distance from the reference, its energy residual, its time
 /// and work per step, and the stiffest band its method holds at this step. Empty while the
 /// ghosts are off.
-pub fn ghost_table(r: &HudReadings) -> Vec<[String; 6]> {
+fn ghost_table(r: &HudReadings) -> Vec<[String; 6]> {
     if r.ghosts.is_empty() {
         return Vec::new();
     }
@@ -444,7 +444,7 @@ pub struct HudReadings {
 
 impl HudReadings {
     /// The live integrator's margin.
-    pub fn live_margin(&self) -> Option<&Margin> {
+    fn live_margin(&self) -> Option<&Margin> {
         self.margins
             .iter()
             .find(|m| m.integrator == self.integrator)

@@ -48,10 +48,10 @@ pub const HUD: KeyCode = KeyCode::KeyH;
 pub const SAVE: KeyCode = KeyCode::KeyS;
 pub const OPEN: KeyCode = KeyCode::KeyO;
 pub const GHOSTS: KeyCode = KeyCode::KeyG;
-pub const PLOT: KeyCode = KeyCode::KeyP;
-pub const HOME_VIEW: KeyCode = KeyCode::KeyF;
-pub const LINK: KeyCode = KeyCode::KeyC;
-pub const GAME_LINK: KeyCode = KeyCode::KeyU;
+const PLOT: KeyCode = KeyCode::KeyP;
+const HOME_VIEW: KeyCode = KeyCode::KeyF;
+const LINK: KeyCode = KeyCode::KeyC;
+const GAME_LINK: KeyCode = KeyCode::KeyU;
 pub const LEARN: KeyCode = KeyCode::KeyL;
 /// The named scenes, in the core's order ([`Scene::NAMES`]).
 pub const SCENE_KEYS: [KeyCode; 10] = [

@@ -110,7 +110,7 @@ impl Parameter {
 
     /// A slider's end as the readout shows the value (the linear damping by its coefficient,
     /// whose rate depends on the mass).
-    pub fn end_label(self, position: f32) -> String {
+    fn end_label(self, position: f32) -> String {
         let value = readable(self.value_at(position));
         match self {
             Self::Stiffness | Self::Mass => value,

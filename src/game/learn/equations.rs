@@ -59,7 +59,7 @@ impl Quantities {
     }
 
     /// The twin's band force, −k (x − q) at its centre (zero without a band).
-    pub fn twin_force(&self) -> DVec2 {
+    fn twin_force(&self) -> DVec2 {
         match self.twin {
             Some((state, Some(anchor))) => -self.stiffness * (state.linear.position - anchor),
             _ => DVec2::ZERO,
@@ -67,44 +67,44 @@ impl Quantities {
     }
 
     /// The arm r from the centre to the band's corner (zero without a band).
-    pub fn arm(&self) -> DVec2 {
+    fn arm(&self) -> DVec2 {
         self.band.map_or(DVec2::ZERO, |(corner, _)| {
             corner - self.state.linear.position
         })
     }
 
     /// The band's force F = −k (p − q) (zero without a band).
-    pub fn band_force(&self) -> DVec2 {
+    fn band_force(&self) -> DVec2 {
         self.band.map_or(DVec2::ZERO, |(corner, anchor)| {
             -self.stiffness * (corner - anchor)
         })
     }
 
     /// τ = r × F.
-    pub fn band_torque(&self) -> f64 {
+    fn band_torque(&self) -> f64 {
         self.arm().perp_dot(self.band_force())
     }
 
     /// −b v.
-    pub fn damping_force(&self) -> DVec2 {
+    fn damping_force(&self) -> DVec2 {
         -self.linear_damping * self.state.linear.velocity
     }
 
     /// −c I ω.
-    pub fn damping_torque(&self) -> f64 {
+    fn damping_torque(&self) -> f64 {
         -self.angular_damping * self.inertia * self.state.angular.angular_velocity
     }
 
-    pub fn force_sum(&self) -> DVec2 {
+    fn force_sum(&self) -> DVec2 {
         self.band_force() + self.damping_force()
     }
 
-    pub fn torque_sum(&self) -> f64 {
+    fn torque_sum(&self) -> f64 {
         self.band_torque() + self.damping_torque()
     }
 
     /// ½ m v² + ½ I ω² + ½ k |p − q|².
-    pub fn energy(&self) -> (f64, f64, f64) {
+    fn energy(&self) -> (f64, f64, f64) {
         let v = self.state.linear.velocity;
         let omega = self.state.angular.angular_velocity;
         let stretch = self
@@ -119,12 +119,12 @@ impl Quantities {
 }
 
 /// A number as the HUD writes it.
-pub fn n(value: f64) -> String {
+fn n(value: f64) -> String {
     readable(value).replace('-', "−")
 }
 
 /// A factor after an operator: a negative one in parentheses, `× (−0.6)`.
-pub fn f(value: f64) -> String {
+fn f(value: f64) -> String {
     if value.is_sign_negative() && value != 0.0 {
         format!("({})", n(value))
     } else {
@@ -133,7 +133,7 @@ pub fn f(value: f64) -> String {
 }
 
 /// A vector: (x, y).
-pub fn v(value: DVec2) -> String {
+fn v(value: DVec2) -> String {
     format!("({}, {})", n(value.x), n(value.y))
 }
 

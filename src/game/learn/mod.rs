@@ -134,7 +134,7 @@ fn the_body(world: &mut World) -> Option<(BodyState, MassProperties)> {
 /// Shows chapter `index`: the game saved first if the mode is being entered; the chapter's
 /// scene loaded (its scripted pull plays until the player presses), its integrator put in
 /// place, its task started over, the *Learn* card open.
-pub fn go_to(world: &mut World, index: usize) {
+fn go_to(world: &mut World, index: usize) {
     let Some(chapter) = CHAPTERS.get(index) else {
         return;
     };
@@ -177,7 +177,7 @@ pub fn go_to(world: &mut World, index: usize) {
 }
 
 /// Out of learn mode: the game back as it was entered.
-pub fn leave(world: &mut World) {
+fn leave(world: &mut World) {
     let saved = {
         let mut learning = world.resource_mut::<Learning>();
         learning.chapter = None;
@@ -327,7 +327,7 @@ pub enum LearnText {
 pub const LINES: usize = 6;
 
 /// An equation's colour: that of its arrow on the box, else the text's.
-pub fn equation_colour(equation: Equation) -> Color {
+fn equation_colour(equation: Equation) -> Color {
     match equation {
         Equation::ForceSum
         | Equation::Acceleration
@@ -389,7 +389,7 @@ fn spawn_card(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
 }
 
 /// The chapter's texts from the game's state this frame, each with its colour.
-pub fn chapter_texts(
+fn chapter_texts(
     learning: &Learning,
     quantities: Option<&Quantities>,
 ) -> Option<Vec<(LearnText, String, Color)>> {

@@ -33,7 +33,7 @@ pub struct Twin {
 impl Twin {
     /// The band the twin takes for the box's `band`: the same anchor moved by the offset,
     /// held at the twin's centre.
-    pub fn band_for(band: BandEnds) -> BandEnds {
+    fn band_for(band: BandEnds) -> BandEnds {
         BandEnds {
             local_point: DVec2::ZERO,
             anchor: band.anchor + TWIN_OFFSET,

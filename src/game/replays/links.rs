@@ -61,7 +61,7 @@ fn open_pending_link(mut commands: Commands) {
 /// integrator and the step rate, then the scene (loaded with them, as its number key does),
 /// then the scene's parameters the link overrides. Then the time scale and the overlays.
 /// What was not taken, and why.
-pub fn open_link(world: &mut World, link: Link) -> Vec<String> {
+fn open_link(world: &mut World, link: Link) -> Vec<String> {
     let mut problems = Vec::new();
     let settings_keys = link.settings_keys();
     if let Some(replay) = link.replay {

@@ -173,7 +173,7 @@ fn timestamped_name() -> PathBuf {
 
 /// Saves the game so far to `path`: what to tell the player either way.
 #[cfg(not(target_arch = "wasm32"))]
-pub fn save(recorder: &Recorder, path: &Path) -> Result<String, String> {
+fn save(recorder: &Recorder, path: &Path) -> Result<String, String> {
     let Some(replay) = recorder.replay.as_ref() else {
         return Err("nothing to save yet: no step has run".to_owned());
     };

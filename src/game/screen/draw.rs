@@ -23,7 +23,7 @@ use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox};
 use crate::game::theme::colour;
 use crate::physics::{Integrator, MassProperties, SCENE_SIZE, SceneParams};
 
-pub const BOX_FILL: Color = Color::srgb(0.16, 0.42, 0.72);
+const BOX_FILL: Color = Color::srgb(0.16, 0.42, 0.72);
 pub const BOX_OUTLINE: Color = Color::WHITE;
 pub const PIN_FILL: Color = Color::srgb(1.0, 0.85, 0.2);
 const SCENE_BORDER: Color = colour::FRAME;
@@ -156,7 +156,7 @@ fn draw_bands(
 }
 
 /// Red when slack, toward magenta as the band stretches.
-pub fn band_colour(length: f64) -> Color {
+fn band_colour(length: f64) -> Color {
     Color::srgb(1.0, 0.0, (length / BAND_MAGENTA_LENGTH).min(1.0) as f32)
 }
 
@@ -341,7 +341,7 @@ const GHOST_LABEL_PIXELS: f32 = 11.0;
 /// outline at `centre` that reaches `reach` from it: above, below, right or left of it, the
 /// first that lies inside `shown` (the part of the world in view); above when none does. Returned as the offset from `centre` of the column's first line and
 /// the step to the next (names that coincide, most ghosts on a soft band, keep apart).
-pub fn label_column(
+fn label_column(
     centre: Vec2,
     reach: f32,
     lines: usize,
@@ -515,5 +515,24 @@ fn draw_ghosts(
             Transform::default(),
             Visibility::Hidden,
         ));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The ghosts' names go above the box, or where that would leave the view, below it, right or
+    /// left of it.
+    #[test]
+    fn the_ghosts_names_stay_in_view() {
+        let (reach, lines, line, width) = (45.0, 7, 13.2, 90.0);
+        let shown = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2());
+        let (first, step) = label_column(Vec2::ZERO, reach, lines, (line, width), shown);
+        assert!(first.x == 0.0 && first.y > reach && step == Vec2::new(0.0, line));
+        // At the top edge: not above.
+        let top = Vec2::new(0.0, 200.0);
+        let (first, _) = label_column(top, reach, lines, (line, width), shown);
+        assert!(first.y < 0.0 || first.x != 0.0, "{first}");
     }
 }

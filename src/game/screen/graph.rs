@@ -25,7 +25,7 @@ impl Plugin for EnergyGraphPlugin {
 
 /// The graph's canvas.
 #[derive(Component, Debug)]
-pub struct EnergyCanvas;
+struct EnergyCanvas;
 
 /// The caption under it: the span and the peak.
 #[derive(Component, Debug)]
@@ -68,7 +68,7 @@ fn spawn_canvas(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
 }
 
 /// The graph's place in its canvas, in the UI's units: the whole canvas but a pixel.
-pub fn graph_frame(canvas: Vec2) -> Rect {
+fn graph_frame(canvas: Vec2) -> Rect {
     Rect::from_corners(Vec2::ONE, canvas - Vec2::ONE)
 }
 

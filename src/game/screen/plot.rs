@@ -44,7 +44,7 @@ pub struct PlotPoint {
 
 impl PlotPoint {
     /// Its name on the plot.
-    pub fn label(&self) -> String {
+    fn label(&self) -> String {
         let mut name = match (self.error, self.live) {
             (None, _) => format!("{} diverged", self.kind.name()),
             (Some(_), true) => format!("{} (live)", self.kind.name()),
@@ -78,11 +78,11 @@ pub fn plot_points(ghosts: &Ghosts, step_rate_hz: f64, live: Integrator) -> Vec<
 }
 
 /// The axes' decades: the report's work-precision figure spans these.
-pub const ERROR_DECADES: (i32, i32) = (-16, 3);
-pub const COST_DECADES: (i32, i32) = (2, 8);
+const ERROR_DECADES: (i32, i32) = (-16, 3);
+const COST_DECADES: (i32, i32) = (2, 8);
 
 /// The canvas's height in the UI's units (its width is the card's).
-pub const PLOT_HEIGHT: f32 = 230.0;
+const PLOT_HEIGHT: f32 = 230.0;
 /// The room around the plotting frame for the ticks' values and the captions.
 const LEFT: f32 = 34.0;
 const RIGHT: f32 = 8.0;
@@ -116,7 +116,7 @@ pub fn place(point: &PlotPoint, frame: Rect) -> Vec2 {
 }
 
 /// A tick's value as the axis writes it.
-pub fn decade_label(decade: i32) -> String {
+fn decade_label(decade: i32) -> String {
     match decade {
         0 => "1".to_owned(),
         1 => "10".to_owned(),
@@ -134,13 +134,13 @@ fn label_every(decades: (i32, i32), length: f32, room: f32) -> i32 {
 }
 
 /// The half-size of a point's mark, which no name may cover.
-pub const MARK: f32 = 7.0;
+const MARK: f32 = 7.0;
 
 /// Where each name goes: beside its point (right, left, above, below, then the diagonals),
 /// further out ring by ring, at the first place inside `bounds` that meets no mark of any
 /// point, no text of `obstacles` and no name placed before; where no such place is near, the
 /// first free place in `bounds`, top to bottom. `labels` are each point and its name's size.
-pub fn place_labels(labels: &[(Vec2, Vec2)], bounds: Rect, obstacles: &[Rect]) -> Vec<Rect> {
+fn place_labels(labels: &[(Vec2, Vec2)], bounds: Rect, obstacles: &[Rect]) -> Vec<Rect> {
     let marks: Vec<Rect> = labels
         .iter()
         .map(|(point, _)| Rect::from_center_half_size(*point, Vec2::splat(MARK)))
@@ -479,6 +479,42 @@ fn draw_plot(
                     (Vec2::new(-arm, arm), Vec2::new(arm, -arm)),
                 ] {
                     gizmos.line_2d(centre + a, centre + b, shade);
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The names on the plot: each beside its point or tied to it, none on another name, on a
+    /// point's mark or on the axes' text, all inside the frame, however the points crowd.
+    #[test]
+    fn the_plots_names_never_meet() {
+        let bounds = Rect::new(34.0, 18.0, 320.0, 200.0);
+        let obstacles = [
+            Rect::new(0.0, 0.0, 200.0, 14.0),
+            Rect::new(34.0, 202.0, 60.0, 214.0),
+        ];
+        // Seven names on two points (most ghosts agree on a soft band), then spread out.
+        for spread in [0.0, 3.0, 20.0] {
+            let labels: Vec<(Vec2, Vec2)> = (0..7)
+                .map(|i| {
+                    let point = Vec2::new(200.0 + spread * i as f32, 100.0 + (i % 2) as f32);
+                    (point, Vec2::new(40.0 + 5.0 * i as f32, 13.0))
+                })
+                .collect();
+            let placed = place_labels(&labels, bounds, &obstacles);
+            for (i, rect) in placed.iter().enumerate() {
+                assert!(bounds.union(*rect) == bounds, "{i} in the frame: {rect:?}");
+                for other in placed.iter().skip(i + 1).chain(&obstacles) {
+                    assert!(rect.intersect(*other).is_empty(), "{rect:?} on {other:?}");
+                }
+                for (point, _) in &labels {
+                    let mark = Rect::from_center_half_size(*point, Vec2::splat(MARK));
+                    assert!(rect.intersect(mark).is_empty(), "{rect:?} on a point");
                 }
             }
         }

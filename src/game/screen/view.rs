@@ -95,7 +95,7 @@ pub const CHART_LAYER: usize = 1;
 
 /// The camera that draws the dock's charts and the UI, over the whole window.
 #[derive(Component, Debug)]
-pub struct ChartCamera;
+struct ChartCamera;
 
 /// What the scene's camera shows: a centre and a zoom, in world units per logical pixel.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -106,12 +106,12 @@ pub struct View {
 
 impl View {
     /// The part of the world the view shows in a viewport of `size` logical pixels.
-    pub fn area(&self, size: Vec2) -> Rect {
+    fn area(&self, size: Vec2) -> Rect {
         Rect::from_center_size(self.centre, size * self.world_per_pixel)
     }
 
     /// The view that shows `area` whole in a viewport of `size`, aspect kept, centred on it.
-    pub fn fitting(area: Rect, size: Vec2) -> Self {
+    fn fitting(area: Rect, size: Vec2) -> Self {
         let ratio = area.size() / size.max(Vec2::ONE);
         Self {
             centre: area.center(),
@@ -159,7 +159,7 @@ const ZOOM_RANGE: (f32, f32) = (0.05, 20.0);
 impl CameraFrame {
     /// The home view in a viewport of `size`: the tutorial's screen fitted, then the player's
     /// zoom and pan.
-    pub fn home(&self, size: Vec2) -> View {
+    fn home(&self, size: Vec2) -> View {
         let screen = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2() * HOME_MARGIN);
         let fitted = View::fitting(screen, size);
         View {
@@ -172,7 +172,7 @@ impl CameraFrame {
 /// Where the view should be with `keep` (the box's corners, the anchor) to keep in sight: the
 /// home view while they lie in its inner 80%; else the least view, centred between, that
 /// holds the home frame's centre and them in its inner 80%.
-pub fn wanted_view(home: View, size: Vec2, keep: Rect) -> View {
+fn wanted_view(home: View, size: Vec2, keep: Rect) -> View {
     let inner = Rect::from_center_size(home.centre, size * home.world_per_pixel * INNER);
     if keep.is_empty() || inner.union(keep) == inner {
         return home;
@@ -185,7 +185,7 @@ pub fn wanted_view(home: View, size: Vec2, keep: Rect) -> View {
 
 /// `shown` moved toward `wanted` by the share `ease` (0 to 1), the zoom on a log scale; then,
 /// if `keep` is not whole in it, widened at once until it is (the box is never lost).
-pub fn eased_view(shown: View, wanted: View, ease: f32, size: Vec2, keep: Rect) -> View {
+fn eased_view(shown: View, wanted: View, ease: f32, size: Vec2, keep: Rect) -> View {
     let mut view = View {
         centre: shown.centre.lerp(wanted.centre, ease),
         world_per_pixel: (shown.world_per_pixel.ln()
@@ -254,7 +254,7 @@ fn spawn_cameras(mut commands: Commands) {
 }
 
 /// An orthographic projection whose scale the view sets.
-pub fn scene_projection() -> Projection {
+fn scene_projection() -> Projection {
     Projection::Orthographic(OrthographicProjection {
         scaling_mode: ScalingMode::WindowSize,
         ..OrthographicProjection::default_2d()
@@ -452,5 +452,50 @@ fn interpolate_body_transforms(
 fn place_band_pins(mut bands: Query<(&Band, &mut Transform), Without<RenderSnapshots>>) {
     for (band, mut transform) in &mut bands {
         transform.translation = band.ends.anchor.as_vec2().extend(transform.translation.z);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The camera keeps the box in view: while the box and the anchor lie well inside the home
+    /// frame it stays home; pulled out, it widens so that both lie inside, at every frame,
+    /// however fast, and comes home when they do.
+    #[test]
+    fn the_view_keeps_the_box_and_comes_home() {
+        let size = Vec2::new(600.0, 500.0);
+        let frame = CameraFrame::default();
+        let home = frame.home(size);
+        let screen = home.area(size);
+        assert!(
+            screen.width() >= 640.0 && screen.height() >= 480.0,
+            "{screen:?}"
+        );
+        let near = Rect::from_center_size(Vec2::new(50.0, 20.0), Vec2::splat(60.0));
+        assert_eq!(wanted_view(home, size, near), home);
+        let mut shown = home;
+        // A box flung far right and up, then back.
+        for step in 0..200 {
+            let t = step as f32 / 100.0;
+            let centre = if t < 1.0 {
+                Vec2::new(900.0 * t, 500.0 * t)
+            } else {
+                Vec2::new(900.0 * (2.0 - t), 500.0 * (2.0 - t))
+            };
+            let keep = Rect::from_center_size(centre, Vec2::splat(85.0));
+            let wanted = wanted_view(home, size, keep);
+            shown = eased_view(shown, wanted, 0.1, size, keep);
+            let area = shown.area(size);
+            assert!(
+                area.union(keep) == area,
+                "step {step}: {keep:?} out of {area:?}"
+            );
+        }
+        for _ in 0..100 {
+            shown = eased_view(shown, wanted_view(home, size, near), 0.1, size, near);
+        }
+        assert!(shown.centre.distance(home.centre) < 1.0, "{shown:?}");
+        assert!((shown.world_per_pixel / home.world_per_pixel - 1.0).abs() < 0.01);
     }
 }
