@@ -220,3 +220,44 @@ fn readme_is_an_entrance_with_play_test_and_controls_first() {
         );
     }
 }
+
+/// docs/architecture.md's frame names every system set that src/game/schedule.rs declares, in
+/// the order declared (the frame's order), so that the page cannot drift from the one place
+/// the order is written.
+#[test]
+fn the_docs_frame_names_every_set_in_the_schedules_order() {
+    let schedule = fs::read_to_string(root().join("src/game/schedule.rs")).expect("schedule.rs");
+    let mut sets = Vec::new();
+    let mut inside = false;
+    for line in schedule.lines() {
+        if line.starts_with("pub enum ") {
+            inside = true;
+        } else if line.starts_with('}') {
+            inside = false;
+        } else if inside
+            && let Some(name) = line.strip_prefix("    ").and_then(|l| l.strip_suffix(','))
+            && name.chars().next().is_some_and(|c| c.is_ascii_uppercase())
+            && name.chars().all(char::is_alphanumeric)
+        {
+            sets.push(name.to_owned());
+        }
+    }
+    assert!(sets.len() >= 15, "the reader found the sets: {sets:?}");
+    let page = fs::read_to_string(root().join("docs/architecture.md")).expect("the page");
+    let start = page.find("## The frame").expect("a frame section");
+    let section = &page[start..];
+    let section = &section[..section[3..]
+        .find("\n## ")
+        .map_or(section.len(), |end| end + 3)];
+    let mut from = 0;
+    for set in &sets {
+        let at = [format!("`{set}`"), format!("::{set}`"), format!("`{set} ")]
+            .iter()
+            .filter_map(|written| section[from..].find(written.as_str()))
+            .min();
+        match at {
+            Some(at) => from += at + 1,
+            None => panic!("docs/architecture.md's frame lacks `{set}` after what precedes it"),
+        }
+    }
+}

@@ -7,11 +7,13 @@
 //!    of it acts on the very next step: the pointer read, the input acted on, the controls
 //!    applied, the settings' consequences derived;
 //! 2. `FixedUpdate`, zero or more times, [`PhysicsSystems`]: a playback's recorded inputs,
-//!    the observers of the step's inputs (the recorder, the ghosts), the step (accumulate,
+//!    the observers of the step's inputs (the recorder, the ghosts, learn mode's twin), the
+//!    step (accumulate,
 //!    integrate, publish), then the readers of the step's results (the recorder, the HUD's
 //!    history);
 //! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
-//!    interpolated between the last two steps, the end of a playback said;
+//!    interpolated between the last two steps, the end of a playback said, learn mode's task
+//!    checked;
 //! 4. `Update`, [`ScreenSystems`]: the regions arranged for the window, the camera placed,
 //!    the HUD's text and the window title, learn mode's card, the panel, the drawing and the
 //!    energy graph, then the plot;
