@@ -57,7 +57,7 @@ else
     out=mutants-game.out
     groups=(
         "src/game/input/controls.rs src/game/pointer.rs : controls pointer fixed_step panel"
-        "src/game/simulation.rs : fixed_step pointer lab hud replay"
+        "src/game/simulation.rs : fixed_step pointer lab hud replay learn"
         "src/game/input/panel.rs : panel"
         "src/game/hud/mod.rs src/game/hud/history.rs src/game/hud/title.rs : hud controls fixed_step draw"
     )
