@@ -205,20 +205,38 @@ fn layer(module: &str) -> Option<usize> {
     LAYERS.iter().position(|layer| *layer == room)
 }
 
-/// Every import that reaches up a layer, as "module -> target".
-fn upward_imports(graph: &BTreeMap<String, BTreeSet<String>>) -> Vec<String> {
+/// Which modules a check reads.
+type Accepts = fn(&str) -> bool;
+
+/// Every import, from a module `from` accepts to a target `to` accepts, that reaches up a level of
+/// `level`, as "module -> target"; one whose ends `level` cannot place is named with `outside`.
+fn upward(
+    graph: &BTreeMap<String, BTreeSet<String>>,
+    (from, to): (Accepts, Accepts),
+    level: fn(&str) -> Option<usize>,
+    outside: &str,
+) -> Vec<String> {
     graph
         .iter()
-        .filter(|(module, _)| !module.is_empty())
+        .filter(|(module, _)| from(module))
         .flat_map(|(module, imported)| {
-            imported.iter().filter_map(move |target| {
-                let (Some(from), Some(to)) = (layer(module), layer(target)) else {
-                    return Some(format!("{module} -> {target} (a room outside {LAYERS:?})"));
-                };
-                (to > from).then(|| format!("{module} -> {target}"))
-            })
+            imported
+                .iter()
+                .filter(|target| to(target))
+                .filter_map(move |target| match (level(module), level(target)) {
+                    (Some(below), Some(above)) => {
+                        (above > below).then(|| format!("{module} -> {target}"))
+                    }
+                    _ => Some(format!("{module} -> {target} (a room outside {outside})")),
+                })
         })
         .collect()
+}
+
+/// Every import that reaches up a layer of [`LAYERS`].
+fn upward_imports(graph: &BTreeMap<String, BTreeSet<String>>) -> Vec<String> {
+    let rooms = format!("{LAYERS:?}");
+    upward(graph, (|m| !m.is_empty(), |_| true), layer, &rooms)
 }
 
 #[test]
@@ -265,25 +283,10 @@ fn game_layer(module: &str) -> Option<usize> {
     GAME_LAYERS.iter().position(|rooms| rooms.contains(&room))
 }
 
-/// Every import inside the game that reaches up a level, as "module -> target".
+/// Every import inside the game that reaches up a level of [`GAME_LAYERS`].
 fn upward_in_the_game(graph: &BTreeMap<String, BTreeSet<String>>) -> Vec<String> {
-    graph
-        .iter()
-        .filter(|(module, _)| module.starts_with("game"))
-        .flat_map(|(module, imported)| {
-            imported
-                .iter()
-                .filter(|target| target.starts_with("game"))
-                .filter_map(
-                    move |target| match (game_layer(module), game_layer(target)) {
-                        (Some(from), Some(to)) => {
-                            (to > from).then(|| format!("{module} -> {target}"))
-                        }
-                        _ => Some(format!("{module} -> {target} (a room outside GAME_LAYERS)")),
-                    },
-                )
-        })
-        .collect()
+    let in_the_game: Accepts = |module| module.starts_with("game");
+    upward(graph, (in_the_game, in_the_game), game_layer, "GAME_LAYERS")
 }
 
 #[test]

@@ -2,25 +2,12 @@
 //! the repository that exists and every anchor at one of its headings, none leaves the
 //! repository, and README stays an entrance.
 
+mod pages;
+
 use std::fs;
 use std::path::{Component, Path, PathBuf};
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// README.md and every Markdown file under docs/.
-fn pages() -> Vec<PathBuf> {
-    let mut pages = vec![root().join("README.md")];
-    let mut docs: Vec<PathBuf> = fs::read_dir(root().join("docs"))
-        .expect("docs/ exists")
-        .map(|entry| entry.expect("an entry").path())
-        .filter(|path| path.extension().is_some_and(|e| e == "md"))
-        .collect();
-    docs.sort();
-    pages.extend(docs);
-    pages
-}
+use pages::{pages, root};
 
 /// The targets of a page's Markdown links and images: `](target)` and `](target "title")`.
 fn links(text: &str) -> Vec<String> {

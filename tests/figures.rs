@@ -8,13 +8,13 @@
 //! - a figure in prose, listed in [`QUOTED`] with the cell it comes from: the page must hold the
 //!   words, and the words the cell's value as the page prints it.
 
+mod pages;
+
 use std::collections::HashMap;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
+use pages::{pages, root};
 
 fn snapshots() -> PathBuf {
     root().join("docs/snapshots")
@@ -96,7 +96,7 @@ fn matches(cell: &str, wanted: &str) -> bool {
 }
 
 /// A value as a page prints it: `e` one decimal in scientific notation (6.8e-11), `e2` two,
-/// `us` nanoseconds as microseconds with one decimal, `ns` whole nanoseconds, `f1`..`f3` fixed
+/// `us` nanoseconds as microseconds with one decimal, `ns` and `f0` whole numbers, `f1`..`f3` fixed
 /// decimals, `k` a stiffness as 1e5, `x` a ratio with two decimals; anything else as written.
 fn format(cell: &str, format: &str) -> String {
     let Ok(value) = cell.parse::<f64>() else {
@@ -106,7 +106,7 @@ fn format(cell: &str, format: &str) -> String {
         "e" => format!("{value:.1e}"),
         "e2" => format!("{value:.2e}"),
         "us" => format!("{:.1}", value / 1000.0),
-        "ns" => format!("{value:.0}"),
+        "ns" | "f0" => format!("{value:.0}"),
         "f1" => format!("{value:.1}"),
         "f2" | "x" => format!("{value:.2}"),
         "f3" => format!("{value:.3}"),
@@ -235,18 +235,6 @@ fn refreshed(page: &str) -> Result<(String, usize), String> {
     }
     out.push_str(rest);
     Ok((out, blocks))
-}
-
-fn pages() -> Vec<PathBuf> {
-    let mut pages = vec![root().join("README.md")];
-    let mut docs: Vec<PathBuf> = fs::read_dir(root().join("docs"))
-        .expect("docs/")
-        .map(|entry| entry.expect("an entry").path())
-        .filter(|path| path.extension().is_some_and(|e| e == "md"))
-        .collect();
-    docs.sort();
-    pages.extend(docs);
-    pages
 }
 
 #[test]
@@ -594,7 +582,6 @@ fn every_quoted_figure_is_its_snapshots_cell() {
         };
         let number = row[quoted.column].parse::<f64>();
         let value = match quoted.format {
-            "f0" => number.map_or_else(|_| row[quoted.column].clone(), |v| format!("{v:.0}")),
             // Their tick at least three times ours: "under a third".
             "third" => match number {
                 Ok(ratio) if ratio >= 3.0 => "under a third".to_owned(),
