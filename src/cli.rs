@@ -47,16 +47,18 @@ pub struct PlayArgs {
     /// Fixed physics steps per second, from 8 to 4096 (the game's range).
     #[arg(long, value_parser = playable_step_rate)]
     pub step_rate: Option<f64>,
-    /// Record the game and save it to FILE when the game ends (the window closed, Ctrl-C or
-    /// SIGTERM), as a replay for `simulate --replay`.
+    /// Record the game and save it to FILE when it ends, as a replay for `simulate --replay`.
+    ///
+    /// The game ends when its window is closed, on Ctrl-C or on SIGTERM.
     #[arg(long, value_name = "FILE")]
     pub record: Option<PathBuf>,
     /// Play a replay back (its scene, settings and hand); a press takes over.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["integrator", "step_rate"])]
     pub replay: Option<PathBuf>,
-    /// Open a link (docs/links.md): a whole address, or its query and fragment
-    /// ('?scene=stiff&integrator=rk4&ghosts=on', '#replay=...'). What it cannot set is named
-    /// on stderr and the rest is opened.
+    /// Open a link (docs/links.md): a whole address, or its query and fragment.
+    ///
+    /// For example '?scene=stiff&integrator=rk4&ghosts=on' or '#replay=...'. What it cannot set
+    /// is named on stderr and the rest is opened.
     #[arg(long, value_name = "LINK", conflicts_with_all = ["integrator", "step_rate", "replay"])]
     pub link: Option<String>,
 }
@@ -69,15 +71,17 @@ pub struct SimulateArgs {
     pub scene: Scene,
     #[arg(long, value_parser = parse_integrator, help = integrator_help())]
     pub integrator: Option<Integrator>,
-    /// Fixed step in seconds, at least a microsecond (wider than the game's range, for
-    /// convergence studies; no clock keeps a shorter step).
+    /// Fixed step in seconds, at least a microsecond.
+    ///
+    /// The range is wider than the game's, for convergence studies; no clock keeps a shorter step.
     #[arg(long, default_value_t = 0.01, value_parser = step, allow_hyphen_values = true)]
     pub dt: f64,
     /// Number of steps.
     #[arg(long, default_value_t = 600, allow_hyphen_values = true)]
     pub steps: u64,
-    /// START:END:X,Y: from step START the band pulls the corner nearest (X,Y) toward (X,Y),
-    /// for steps START <= s < END. Repeatable; replaces the scene's own pulls.
+    /// START:END:X,Y: the band pulls the corner nearest (X,Y) toward it for START <= step < END.
+    ///
+    /// Repeatable; replaces the scene's own pulls.
     #[arg(long = "pull", value_parser = parse_pull, allow_hyphen_values = true)]
     pub pulls: Vec<Pull>,
     /// Band stiffness k.
@@ -110,9 +114,11 @@ pub struct SimulateArgs {
     /// X,Y,THETA,VX,VY,OMEGA: the initial state.
     #[arg(long, value_parser = parse_init, allow_hyphen_values = true)]
     pub init: Option<BodyState>,
-    /// Step a replay file (a game the game recorded) instead of a scene: its band, settings
-    /// and resets at every step. With the recorded integrators the states are the game's, to
-    /// the bit (checked against the recording's hash); an integrator given runs it with that.
+    /// Step a replay file (a game the game recorded) instead of a scene.
+    ///
+    /// Its band, settings and resets are applied at every step. With the recorded integrators
+    /// the states are the game's, to the bit (checked against the recording's hash); an
+    /// integrator given runs it with that.
     #[arg(long, value_name = "FILE", conflicts_with_all = [
         "scene", "dt", "steps", "pulls", "k", "mass", "width", "height", "linear_damping",
         "angular_damping", "init",
@@ -124,7 +130,7 @@ pub struct SimulateArgs {
 }
 
 impl SimulateArgs {
-    /// The scene's parameters with the overrides applied.
+    /// Returns the scene's parameters with the overrides applied.
     pub fn params(&self) -> SceneParams {
         let mut params = self.scene.params;
         if let Some(k) = self.k {
@@ -149,7 +155,7 @@ impl SimulateArgs {
         params
     }
 
-    /// `auto`'s settings with the overrides applied.
+    /// Returns `auto`'s settings with the overrides applied.
     pub fn auto(&self, mut auto: AutoSettings) -> AutoSettings {
         if let Some(tolerance) = self.auto_tolerance {
             auto.tolerance = tolerance;
@@ -163,7 +169,7 @@ impl SimulateArgs {
         auto
     }
 
-    /// Whether an `auto` setting is overridden.
+    /// Tells whether an `auto` setting is overridden.
     fn overrides_auto(&self) -> bool {
         self.auto_tolerance.is_some()
             || self.auto_order.is_some()
@@ -189,8 +195,9 @@ impl SimulateArgs {
     }
 }
 
-/// `simulate`: the scene or the replay the arguments name, stepped, its trajectory written
-/// to `out` (`measure::simulate`).
+/// Steps the scene or the replay the arguments name and writes its trajectory to `out`.
+///
+/// The `simulate` command runs it; `measure::simulate` does the work.
 pub fn simulate(args: &SimulateArgs, out: impl Write) -> Result<(), SimulateError> {
     if let Some(path) = &args.replay {
         let replay = Replay::read_file(path).map_err(SimulateError::Arguments)?;
@@ -229,7 +236,7 @@ fn positive(text: &str) -> Result<f64, String> {
     }
 }
 
-/// A step no shorter than [`MIN_STEP`].
+/// Parses a step no shorter than [`MIN_STEP`].
 fn step(text: &str) -> Result<f64, String> {
     let value = positive(text)?;
     if value >= MIN_STEP {
@@ -241,7 +248,7 @@ fn step(text: &str) -> Result<f64, String> {
     }
 }
 
-/// A step rate the game keeps (`physics::STEP_RATE_RANGE`).
+/// Parses a step rate the game keeps (`physics::STEP_RATE_RANGE`).
 fn playable_step_rate(text: &str) -> Result<f64, String> {
     let value = parse_number(text)?;
     if STEP_RATE_RANGE.contains(value) {
@@ -260,7 +267,7 @@ fn non_negative(text: &str) -> Result<f64, String> {
     }
 }
 
-/// "euler, symplectic, ..., auto [default: auto]".
+/// Returns the integrators for the help: "euler, symplectic, ..., auto [default: auto]".
 fn integrator_help() -> String {
     let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
     format!("{} [default: {}]", names.join(", "), Integrator::default())
@@ -315,8 +322,10 @@ fn parse_init(text: &str) -> Result<BodyState, String> {
     parse_numbers::<6>(text, "X,Y,THETA,VX,VY,OMEGA").map(BodyState::from_array)
 }
 
-/// Runs a parsed command line: the exit status docs/simulate.md gives (2 for a bad argument or
-/// file, 3 for a diverged run, 4 for a replay that stepped to other states).
+/// Runs a parsed command line and returns its exit status.
+///
+/// The statuses are those docs/simulate.md gives: 2 for a bad argument or file, 3 for a
+/// diverged run, 4 for a replay that stepped to other states.
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
         None => play(&PlayOptions::default()),
@@ -364,7 +373,7 @@ pub fn run(cli: Cli) -> ExitCode {
     }
 }
 
-/// Plays; a bad option exits 2 before any window opens.
+/// Plays the game; a bad option exits 2 before any window opens.
 fn play(options: &PlayOptions) -> ExitCode {
     match game::play::play(options) {
         Ok(()) => ExitCode::SUCCESS,

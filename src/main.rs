@@ -10,7 +10,7 @@ fn main() -> ExitCode {
     rubber_band_box::cli::run(rubber_band_box::cli::Cli::parse())
 }
 
-/// The web build has no command line: it plays what its address says.
+/// Plays what the page's address says, as the web build has no command line.
 #[cfg(target_arch = "wasm32")]
 fn main() -> ExitCode {
     use rubber_band_box::game::play::{PlayOptions, play};

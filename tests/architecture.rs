@@ -370,3 +370,144 @@ fn the_layer_check_finds_an_import_up_a_layer() {
         ]
     );
 }
+
+/// Words that end in "s" but do not say what a function does.
+const NOT_VERBS: [&str; 10] = [
+    "Its", "This", "Was", "Is", "Does", "Whether", "Unless", "Plus", "Ones", "Units",
+];
+
+/// Returns every item doc of `source` that breaks the house rule, as "line: problem".
+///
+/// An item doc's first paragraph is one line, its summary; a function's summary opens with a
+/// verb in the third person ("Returns", "Steps", "Tells whether"), so that it says what the
+/// function does rather than restating the code beside it.
+fn doc_problems(source: &str) -> Vec<String> {
+    let lines: Vec<&str> = source.lines().map(str::trim).collect();
+    let mut problems = Vec::new();
+    let mut at = 0;
+    while at < lines.len() {
+        if !lines[at].starts_with("///") {
+            at += 1;
+            continue;
+        }
+        let start = at;
+        while at < lines.len() && lines[at].starts_with("///") {
+            at += 1;
+        }
+        let doc: Vec<&str> = lines[start..at]
+            .iter()
+            .map(|line| line.trim_start_matches('/').trim())
+            .collect();
+        let item = lines[at..]
+            .iter()
+            .find(|line| !line.starts_with("#[") && !line.starts_with("//"))
+            .copied()
+            .unwrap_or("");
+        let summary = doc.iter().take_while(|line| !line.is_empty()).count();
+        if summary > 1 {
+            problems.push(format!(
+                "{}: a first paragraph of {summary} lines",
+                start + 1
+            ));
+        }
+        let first = doc[0].split(' ').next().unwrap_or("");
+        let verb = first.ends_with('s')
+            && first.starts_with(|c: char| c.is_ascii_uppercase())
+            && first.chars().all(|c| c.is_ascii_alphabetic())
+            && !NOT_VERBS.contains(&first);
+        if is_function(item) && !verb {
+            problems.push(format!(
+                "{}: a function's summary opens with {first:?}, not a verb",
+                start + 1
+            ));
+        }
+    }
+    problems
+}
+
+/// Tells whether a line declares a function (or method), whatever its visibility.
+fn is_function(line: &str) -> bool {
+    let mut rest = line;
+    if let Some(after) = rest.strip_prefix("pub") {
+        rest = after.trim_start();
+        if rest.starts_with('(') {
+            rest = rest
+                .split_once(')')
+                .map_or("", |(_, after)| after.trim_start());
+        }
+    }
+    for qualifier in ["const ", "async ", "unsafe "] {
+        rest = rest.strip_prefix(qualifier).unwrap_or(rest);
+    }
+    rest.starts_with("fn ")
+}
+
+#[test]
+fn each_item_doc_opens_with_a_one_line_summary() {
+    fn walk(dir: &Path, problems: &mut Vec<String>, docs: &mut usize) {
+        for entry in fs::read_dir(dir).expect("src is readable") {
+            let path = entry.expect("an entry").path();
+            if path.is_dir() {
+                walk(&path, problems, docs);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let source = fs::read_to_string(&path).expect("a source file");
+                *docs += source
+                    .lines()
+                    .zip(source.lines().skip(1))
+                    .filter(|(a, b)| a.trim().starts_with("///") && !b.trim().starts_with("///"))
+                    .count();
+                for problem in doc_problems(&source) {
+                    problems.push(format!("{}:{problem}", path.display()));
+                }
+            }
+        }
+    }
+    let mut problems = Vec::new();
+    let mut docs = 0;
+    walk(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("src"),
+        &mut problems,
+        &mut docs,
+    );
+    // The walk reads the crate's docs, so a check that found none would not pass.
+    assert!(docs > 500, "only {docs} item docs found");
+    assert!(
+        problems.is_empty(),
+        "item docs to mend:\n{}",
+        problems.join("\n")
+    );
+}
+
+#[test]
+fn the_doc_check_finds_a_long_summary_and_a_noun_for_a_function() {
+    let source = "\
+/// The box's corners,
+/// counted anticlockwise.
+pub fn corners() {}
+
+/// Returns the box's size.
+///
+/// In pixels.
+fn size() {}
+
+/// The step's state.
+pub(crate) const fn state() {}
+
+/// The box's state, over two lines
+/// (a type may open with a noun).
+struct State;
+
+/// Whether the band holds.
+fn holds() {}
+";
+    assert_eq!(
+        doc_problems(source),
+        [
+            "1: a first paragraph of 2 lines",
+            "1: a function's summary opens with \"The\", not a verb",
+            "10: a function's summary opens with \"The\", not a verb",
+            "13: a first paragraph of 2 lines",
+            "17: a function's summary opens with \"Whether\", not a verb",
+        ]
+    );
+}

@@ -30,8 +30,9 @@ impl Plugin for GhostsPlugin {
     }
 }
 
-/// The reference: Taylor series of order 24 at 1e-13 px per step, at most this many
-/// substeps a fixed step.
+/// The reference: Taylor series of order 24 at 1e-13 px per step.
+///
+/// It takes at most `max_substeps` substeps a fixed step.
 const REFERENCE: AutoSettings = AutoSettings {
     tolerance: 1e-13,
     order: 24,
@@ -52,8 +53,10 @@ impl GhostKind {
         }
     }
 
-    /// Its colour, the same in its outline, its row of the table and its point on the plot
-    /// (the core's [`Integrator::colour`], as the report's figures): white for the reference.
+    /// Returns the ghost's colour, the same in its outline, its table row and its plot point.
+    ///
+    /// A method's ghost takes the core's [`Integrator::colour`], as the report's figures do; the
+    /// reference is white.
     pub fn colour(self) -> Color {
         match self {
             Self::Method(integrator) => crate::game::theme::method_colour(integrator),
@@ -110,8 +113,10 @@ impl Ghost {
         }
     }
 
-    /// One step of `dt` under `band`, as the game's fixed step takes one, the books kept as
-    /// the game keeps them. A step that leaves the bounds is undone and the ghost frozen.
+    /// Takes one step of `dt` under `band`, as the game's fixed step takes one.
+    ///
+    /// The books are kept as the game keeps them. A step that leaves the bounds is undone and the
+    /// ghost frozen.
     fn step(&mut self, band: Option<BandEnds>, dt: f64) {
         if self.diverged_at.is_some() {
             return;
@@ -141,7 +146,7 @@ impl Ghost {
         }
     }
 
-    /// The books' residual now: the integrator's energy error since the (re)start.
+    /// Returns the books' residual now: the integrator's energy error since the (re)start.
     pub fn residual(&self) -> f64 {
         self.ledger.residual(self.stepper.energy())
     }
@@ -159,8 +164,9 @@ impl Ghosts {
         self.ghosts.iter().find(|g| g.kind == GhostKind::Reference)
     }
 
-    /// How far `ghost` is from the reference now (px: the largest corner distance, so the
-    /// orientation counts as the corner's 30·θ).
+    /// Returns how far `ghost` is from the reference now (px).
+    ///
+    /// The distance is the largest corner distance, so the orientation counts as the corner's 30·θ.
     pub fn distance_from_reference(&self, ghost: &Ghost) -> Option<f64> {
         let reference = self.reference()?;
         Some(
@@ -176,9 +182,10 @@ fn restart_on_reset(_reset: On<ResetScene>, mut ghosts: ResMut<Ghosts>) {
     ghosts.restart = true;
 }
 
-/// Before the live box's step: every ghost takes the same step under the same band,
-/// with the settings in force. Switched off, they are dropped, to start again from the live
-/// box when switched on.
+/// Steps every ghost before the live box's step: the same step under the same band.
+///
+/// They step with the settings in force. Switched off, they are dropped, to start again from the
+/// live box when switched on.
 fn step_ghosts(
     overlays: Res<Overlays>,
     mut ghosts: ResMut<Ghosts>,

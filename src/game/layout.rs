@@ -54,9 +54,10 @@ impl Plugin for LayoutPlugin {
     }
 }
 
-/// What of a node the window shows, in logical pixels: its rectangle cut to its clip (a
-/// scrolled dock); `None` when it has no size (it, or a node above it, is not displayed) or
-/// is cut away.
+/// Returns the part of a node the window shows: its rectangle, in logical pixels, cut to its clip.
+///
+/// The clip is that of a node above, such as the scrolled dock. `None` when the node has no
+/// size (it, or a node above it, is not displayed) or is cut away.
 pub fn visible_rect(
     node: &ComputedNode,
     transform: &UiGlobalTransform,
@@ -66,7 +67,7 @@ pub fn visible_rect(
     clipped(window_rect(node, transform, ui_scale), node, clip, ui_scale)
 }
 
-/// `rect`, in logical pixels, cut to the node's clip; `None` if nothing is left.
+/// Cuts `rect`, in logical pixels, to the node's clip; `None` if nothing is left.
 fn clipped(
     mut rect: Rect,
     node: &ComputedNode,
@@ -81,8 +82,9 @@ fn clipped(
     (rect.width() > 0.0 && rect.height() > 0.0).then_some(rect)
 }
 
-/// Where a text's glyphs may lie, in logical pixels: its node's content box (inside its
-/// padding), cut to its clip.
+/// Returns where a text's glyphs may lie, in logical pixels.
+///
+/// They lie in its node's content box (inside its padding), cut to its clip.
 fn visible_text_rect(
     node: &ComputedNode,
     transform: &UiGlobalTransform,
@@ -98,8 +100,9 @@ fn visible_text_rect(
     clipped(rect, node, clip, ui_scale)
 }
 
-/// Every text the window shows and where, in logical pixels: what the layout's checks read
-/// (no two meet, none on the scene, all in the window).
+/// Lists every text the window shows and where, in logical pixels.
+///
+/// The layout's checks read it (no two meet, none on the scene, all in the window).
 pub fn shown_texts(
     texts: &Query<(
         &Text,
@@ -118,7 +121,9 @@ pub fn shown_texts(
         .collect()
 }
 
-/// In the browser: the viewport and every text shown, for the page (and the browser test).
+/// Publishes the viewport and every text shown, for the page (and the browser test).
+///
+/// In the browser only.
 #[cfg(target_arch = "wasm32")]
 fn publish_texts(
     texts: Query<(
@@ -201,8 +206,9 @@ impl Card {
         Card::ALL.iter().position(|&card| card == self).unwrap_or(0)
     }
 
-    /// Whether the card is in the dock now: the ghosts' table and the plot only while their
-    /// overlay is on.
+    /// Tells whether the card is in the dock now.
+    ///
+    /// The ghosts' table and the plot are there only while their overlay is on.
     pub fn offered(self, overlays: &Overlays) -> bool {
         match self {
             Card::Learn => overlays.learn,
@@ -213,8 +219,9 @@ impl Card {
     }
 }
 
-/// Which cards are open: kept as the player left them while the game runs. A tall window
-/// shows one at a time (the first open one).
+/// Which cards are open, kept as the player left them while the game runs.
+///
+/// A tall window shows one at a time (the first open one).
 #[derive(Resource, Debug, Clone, PartialEq, Eq, Default)]
 pub struct Cards {
     open: [bool; Card::ALL.len()],
@@ -229,8 +236,10 @@ impl Cards {
         self.open[card.index()] = open;
     }
 
-    /// A card's title pressed: on the side it folds or unfolds; on a tall window, where one
-    /// card shows at a time, an open card folds and a folded one opens alone.
+    /// Folds or unfolds `card`, as a press on its title does.
+    ///
+    /// On the side it folds or unfolds; on a tall window, where one card shows at a time, an open
+    /// card folds and a folded one opens alone.
     pub fn toggle(&mut self, card: Card, shape: Shape) {
         let open = !self.is_open(card);
         if shape == Shape::Tall && open {
@@ -239,14 +248,14 @@ impl Cards {
         self.set(card, open);
     }
 
-    /// The card a tall window shows: the first open one the dock offers.
+    /// Returns the card a tall window shows: the first open one the dock offers.
     fn shown_alone(&self, overlays: &Overlays) -> Option<Card> {
         Card::ALL
             .into_iter()
             .find(|&card| self.is_open(card) && card.offered(overlays))
     }
 
-    /// Whether the card's body shows.
+    /// Tells whether the card's body shows.
     fn body_shows(&self, card: Card, shape: Shape, overlays: &Overlays) -> bool {
         match shape {
             Shape::Wide => self.is_open(card) && card.offered(overlays),
@@ -272,8 +281,10 @@ impl Shape {
     }
 }
 
-/// The dock's width at the side of a wide window, in logical pixels before the UI scale: a
-/// share of the window with a floor (the plot's 300 px and the ghosts' table) and a ceiling.
+/// Returns the dock's width at the side of a wide window, in logical pixels before the UI scale.
+///
+/// It takes a share of the window, with a floor (the plot's 300 px and the ghosts' table) and a
+/// ceiling.
 fn dock_width(window_width: f32) -> f32 {
     (window_width * 0.34).clamp(350.0, 460.0)
 }
@@ -281,8 +292,9 @@ fn dock_width(window_width: f32) -> f32 {
 /// A tall window's sheet keeps the scene at least this share of the height.
 const SHEET_SHARE: f32 = 0.45;
 
-/// The UI's scale for a window: 1 at the game's own size and above; on a phone a little
-/// smaller, never so small that text cannot be read.
+/// Returns the UI's scale for a window: 1 at the game's own size and above.
+///
+/// On a phone it is a little smaller, never so small that text cannot be read.
 pub fn ui_scale_for(size: Vec2) -> f32 {
     (size.min_element() / WINDOW_SIZE.y as f32).clamp(0.85, 1.0)
 }
@@ -324,13 +336,14 @@ struct CardFrame(Card);
 #[derive(Component, Debug)]
 struct Tabs;
 
-/// Where the scene is rendered, in logical window pixels (origin at the top left), as Bevy's
-/// layout last placed the viewport node; `None` before the first layout (and in the headless
-/// game, which has none: the scene then has the whole window).
+/// Where the scene is rendered, in logical window pixels (origin at the top left).
+///
+/// Bevy's layout last placed the viewport node there; it is `None` before the first layout (and in
+/// the headless game, which has none: the scene then has the whole window).
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
 pub struct SceneViewport(pub Option<Rect>);
 
-/// A card's title button: the same widget in the side column and as a tab.
+/// Builds a card's title button: the same widget in the side column and as a tab.
 fn title_button(card: Card) -> impl Bundle {
     (
         Name::new(format!("Card title {}", card.title())),
@@ -508,8 +521,9 @@ fn scale_ui_to_window(windows: Query<&Window, With<PrimaryWindow>>, mut scale: R
     }
 }
 
-/// The regions arranged for the window's shape, and the cards shown, folded or open as
-/// [`Cards`] and the overlays say. Writes only what changed.
+/// Arranges the regions for the window's shape and shows the cards, folded or open.
+///
+/// Each card is folded or open as [`Cards`] and the overlays say. Writes only what changed.
 #[allow(clippy::type_complexity)]
 fn arrange(
     windows: Query<&Window, With<PrimaryWindow>>,
@@ -615,8 +629,9 @@ fn arrange(
     }
 }
 
-/// An overlay switched on opens its card (the ghosts' table with G, the plot with P), as a
-/// tall window shows it: alone.
+/// Opens the card of an overlay switched on (the ghosts' table with G, the plot with P).
+///
+/// It opens as a tall window shows it: alone.
 fn open_cards_switched_on(
     overlays: Res<Overlays>,
     windows: Query<&Window, With<PrimaryWindow>>,
@@ -641,8 +656,9 @@ fn open_cards_switched_on(
     *before = *overlays;
 }
 
-/// The wheel over the dock scrolls it (over the scene it zooms: the view's). A finger's drag
-/// that starts on the dock scrolls it too.
+/// Scrolls the dock with the wheel over it or a finger's drag that starts on it.
+///
+/// Over the scene the wheel zooms the view instead.
 fn scroll_the_dock(
     mut wheel: MessageReader<bevy::input::mouse::MouseWheel>,
     touches: Res<Touches>,
@@ -674,7 +690,7 @@ fn scroll_the_dock(
     }
 }
 
-/// Where Bevy's layout put the viewport node.
+/// Publishes where Bevy's layout put the viewport node.
 fn publish_viewport(
     nodes: Query<(&ComputedNode, &UiGlobalTransform), With<ViewportNode>>,
     ui_scale: Res<UiScale>,

@@ -41,8 +41,9 @@ pub mod web;
 
 use bevy::prelude::*;
 
-/// The game without a screen: the physics, the pointer, the keys and the HUD's text, in the
-/// frame's order ([`schedule`]). Runs under `MinimalPlugins`.
+/// The game without a screen: the physics, the pointer, the keys and the HUD's text.
+///
+/// They run in the frame's order ([`schedule`]), under `MinimalPlugins`.
 pub struct GameLogicPlugin;
 
 impl Plugin for GameLogicPlugin {

@@ -1,6 +1,6 @@
-//! Starting the game: the play command's options checked and put in place (the step rate
-//! and integrator, a replay to play back, a file to record to, a link to open), then Bevy's plugins, the
-//! window and the game's. [`prepare`] is the part a test can call: it needs no window.
+//! Starting the game: the play command's options checked and put in place (the step rate and
+//! integrator, a replay to play back, a file to record to, a link to open), then Bevy's plugins,
+//! the window and the game's. [`prepare`] is the part a test can call: it needs no window.
 
 #[cfg(not(target_arch = "wasm32"))]
 use std::path::{Path, PathBuf};
@@ -29,11 +29,12 @@ pub struct PlayOptions {
     pub link: Option<String>,
 }
 
-/// The game's starting resources from `options`, inserted into `app` before its plugins: the
-/// scene's parameters, the integrator, a replay to play back, a recorder and its file, a link
-/// to open. Every option is checked first, against the game's ranges: a bad one is refused
-/// with a message and `app` is left untouched. A link is taken in part: what it cannot set is
-/// said on the status line (and natively on stderr) and the rest is opened.
+/// Inserts the game's starting resources from `options` into `app`, before its plugins.
+///
+/// They are the scene's parameters, the integrator, a replay to play back, a recorder and its
+/// file, a link to open. Every option is checked first, against the game's ranges: a bad one is
+/// refused with a message and `app` is left untouched. A link is taken in part: what it cannot set
+/// is said on the status line (and natively on stderr) and the rest is opened.
 pub fn prepare(app: &mut App, options: &PlayOptions) -> Result<(), String> {
     let mut params = SceneParams::tutorial();
     if let Some(rate) = options.step_rate {
@@ -93,8 +94,10 @@ pub fn prepare(app: &mut App, options: &PlayOptions) -> Result<(), String> {
     Ok(())
 }
 
-/// Natively on Linux and the BSDs the window needs an X server (the game is built for X11
-/// only): without one, say so and what runs instead, rather than Bevy's panic.
+/// Checks for an X server, which the window needs natively on Linux and the BSDs.
+///
+/// The game is built for X11 only. Without a server it says so, and what runs instead, rather
+/// than leave Bevy to panic.
 #[cfg(all(unix, not(target_os = "macos"), not(target_arch = "wasm32")))]
 fn check_display() -> Result<(), String> {
     match std::env::var_os("DISPLAY") {
@@ -113,7 +116,9 @@ fn check_display() -> Result<(), String> {
     Ok(())
 }
 
-/// A file to record to must be in a folder that exists: said now, not when the game ends.
+/// Checks that a file to record to is in a folder that exists.
+///
+/// A missing folder is said now, not when the game ends.
 #[cfg(not(target_arch = "wasm32"))]
 fn check_folder(target: &Path) -> Result<(), String> {
     let folder = match target.parent() {
@@ -131,7 +136,7 @@ fn check_folder(target: &Path) -> Result<(), String> {
     }
 }
 
-/// The window the game opens.
+/// Returns the window the game opens.
 fn window() -> Window {
     Window {
         title: "Rubber Band Box".into(),

@@ -67,8 +67,10 @@ pub enum PointerSource {
 #[derive(Component, Debug, Default)]
 pub struct SceneCamera;
 
-/// Mouse, touch and focus input to [`PointerAction`]s. A press grabs only on the scene's
-/// viewport (the dock and its controls lie outside it); a held band follows anywhere.
+/// Reads mouse, touch and focus input into [`PointerAction`]s.
+///
+/// A press grabs only on the scene's viewport (the dock and its controls lie outside it); a
+/// held band follows anywhere.
 fn read_pointer(
     (buttons, touches, viewport): (
         Res<ButtonInput<MouseButton>>,
@@ -159,8 +161,9 @@ fn release(grip: &mut Grip, actions: &mut MessageWriter<PointerAction>, source: 
     }
 }
 
-/// A reset lets go: no band, and no device holds one (a button still down grabs again only
-/// with a new press).
+/// Lets go on a reset: no band, and no device holds one.
+///
+/// A button still down grabs again only with a new press.
 fn let_go_on_reset(
     _reset: On<ResetScene>,
     mut commands: Commands,
@@ -173,7 +176,9 @@ fn let_go_on_reset(
     grip.0 = None;
 }
 
-/// [`PointerAction`]s to the band entity: at most one band exists after this system.
+/// Drives the band entity from [`PointerAction`]s, spawning, moving and despawning it.
+///
+/// At most one band exists after this system.
 fn drive_band(
     mut commands: Commands,
     mut actions: MessageReader<PointerAction>,

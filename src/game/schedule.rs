@@ -32,8 +32,9 @@ use bevy::prelude::*;
 pub enum GameSystems {
     /// Mouse, touch and focus read into pointer actions (in world coordinates).
     ReadPointer,
-    /// What acts on this frame's input: the band driven, a playback taken over by a press,
-    /// the panel's taps, replay files opened.
+    /// What acts on this frame's input.
+    ///
+    /// The band driven, a playback taken over by a press, the panel's taps, replay files opened.
     Input,
     /// The controls: each action writes the resource it controls, or triggers a reset.
     Controls,
@@ -46,25 +47,31 @@ pub enum GameSystems {
 pub enum PhysicsSystems {
     /// A playback puts the step's recorded resets, settings and band in place.
     Playback,
-    /// Read the step's inputs as the step will take them (the recorder, the ghosts: the band
-    /// that acts, `simulation::acting_band`); write nothing the physics reads.
+    /// Read the step's inputs as the step will take them; write nothing the physics reads.
+    ///
+    /// The recorder and the ghosts read here; the band they read is the one that acts
+    /// (`simulation::acting_band`).
     Observe,
-    /// The step, one system: book the hand's work since the last step in the energy ledger,
-    /// sum every force and torque on each body into its `ForceAccumulator`, advance each body
-    /// with the `Integrator` resource, then hand the new state to the rest of the app (the
-    /// render snapshots, the energy books settled, taps' bands removed after their one step,
-    /// the step counted).
+    /// The step, one system.
+    ///
+    /// Book the hand's work since the last step in the energy ledger, sum every force and
+    /// torque on each body into its `ForceAccumulator`, advance each body with the `Integrator`
+    /// resource, then hand the new state to the rest of the app (the render snapshots, the
+    /// energy books settled, taps' bands removed after their one step, the step counted).
     Step,
-    /// Read the step's results (the recorder's state after the step, the HUD's energy
-    /// history); write nothing the physics reads.
+    /// Read the step's results; write nothing the physics reads.
+    ///
+    /// The readers are the recorder (its state after the step) and the HUD (its energy history).
     AfterStep,
 }
 
 /// After the fixed loop, each frame.
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum AfterStepsSystems {
-    /// What this frame's steps did, made ready for the screen: the drawn state interpolated
-    /// between the last two steps, the end of a playback said before the HUD shows it.
+    /// What this frame's steps did, made ready for the screen.
+    ///
+    /// The drawn state interpolated between the last two steps, the end of a playback said
+    /// before the HUD shows it.
     Conclude,
 }
 
@@ -81,8 +88,9 @@ pub enum ScreenSystems {
     Learn,
     /// The panel's values and thumbs, read back from the resources.
     Panel,
-    /// The box, the band and the overlays drawn, and the energy graph (the charts' gizmos
-    /// are the graph's, then the plot's).
+    /// The box, the band and the overlays drawn, and the energy graph.
+    ///
+    /// The charts' gizmos are the graph's, then the plot's.
     Draw,
     /// The ghosts' speed against error, in its card.
     Plot,
@@ -97,8 +105,9 @@ pub enum AfterBevySystems {
     AfterExit,
 }
 
-/// The fixed step's chain, and the settings applied before the loop: what the physics plugin
-/// needs to run alone.
+/// Orders the fixed step's chain, and the settings applied before the loop.
+///
+/// The physics plugin needs no more to run alone.
 pub fn order_the_physics(app: &mut App) {
     app.configure_sets(
         FixedUpdate,
@@ -116,9 +125,11 @@ pub fn order_the_physics(app: &mut App) {
     );
 }
 
-/// The rest of the frame (the fixed step's chain is the physics plugin's own call of
-/// [`order_the_physics`]): a press and a key in one frame always act in the same order (the
-/// press first, so a reset in that frame also lets go).
+/// Orders the rest of the frame, for the game.
+///
+/// The fixed step's chain is the physics plugin's own call of [`order_the_physics`]. A press
+/// and a key in one frame always act in the same order: the press first, so a reset in that
+/// frame also lets go.
 pub fn order_the_frame(app: &mut App) {
     app.configure_sets(
         RunFixedMainLoop,

@@ -4,8 +4,9 @@
 
 use bevy::prelude::*;
 
-/// Initialises the shared resources (a replay given to `play` may have put `SceneName` in
-/// place already: it is kept).
+/// Initialises the shared resources.
+///
+/// A replay given to `play` may have put `SceneName` in place already: it is kept.
 pub struct SharedPlugin;
 
 impl Plugin for SharedPlugin {
@@ -16,8 +17,9 @@ impl Plugin for SharedPlugin {
     }
 }
 
-/// The scene the game plays (a recording's header names it): the tutorial's, a named scene
-/// loaded, or the one a replay opened was recorded in.
+/// The scene the game plays, which a recording's header names.
+///
+/// The tutorial's, a named scene loaded, or the one a replay opened was recorded in.
 #[derive(Resource, Debug, Clone, PartialEq, Eq)]
 pub struct SceneName(pub String);
 
@@ -44,22 +46,27 @@ pub struct Overlays {
     pub learn: bool,
 }
 
-/// The latest thing the game has to tell the player (a save, a replay opened or refused, a
-/// value refused), shown on the HUD's replay line until the next.
+/// The latest thing the game has to tell the player.
+///
+/// It may be a save, a replay opened or refused, or a value refused; the HUD's replay line shows it
+/// until the next.
 #[derive(Resource, Debug, Default, Clone, PartialEq)]
 pub struct StatusMessage(pub Option<String>);
 
-/// Where a UI node lies in the window, in logical pixels (what the pointer and the page use):
-/// the node's physical rectangle over the window's scale factor. `ComputedNode`'s inverse
-/// scale factor also divides by the UI scale, which is put back.
+/// Returns where a UI node lies in the window, in logical pixels.
+///
+/// Logical pixels are what the pointer and the page use. It is the node's physical rectangle over
+/// the window's scale factor; `ComputedNode`'s inverse scale factor also divides by the UI scale,
+/// which is put back.
 pub fn window_rect(node: &ComputedNode, transform: &UiGlobalTransform, ui_scale: &UiScale) -> Rect {
     let scale = node.inverse_scale_factor() * ui_scale.0;
     Rect::from_center_size(transform.translation * scale, node.size() * scale)
 }
 
-/// A value as a person reads it, the one format the HUD and the panel share: whole or to
-/// three significant digits in the usual range (20, 5, 2.02, 0.05), in powers of ten beyond it
-/// (1.0e5, 3.2e-9).
+/// Writes a value as a person reads it, the one format the HUD and the panel share.
+///
+/// The value is written whole or to three significant digits in the usual range (20, 5, 2.02,
+/// 0.05), in powers of ten beyond it (1.0e5, 3.2e-9).
 pub fn readable(value: f64) -> String {
     let magnitude = value.abs();
     if value == 0.0 {
@@ -77,8 +84,10 @@ pub fn readable(value: f64) -> String {
     }
 }
 
-/// The linear damping as the HUD and the panel both show it: its coefficient b (the command
-/// line's `--linear-damping`) and the rate b/m at which the velocity decays, `b 5 = 1 /s`.
+/// Writes the linear damping as the HUD and the panel both show it, `b 5 = 1 /s`.
+///
+/// It gives the coefficient b (the command line's `--linear-damping`) and the rate b/m at which
+/// the velocity decays.
 pub fn linear_damping_readout(coefficient: f64, mass: f64) -> String {
     format!(
         "b {} = {} /s",

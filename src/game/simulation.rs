@@ -49,9 +49,10 @@ impl Plugin for SimulationPlugin {
     }
 }
 
-/// The scene back at its start: the box at rest at the centre, no band, the books, the
-/// statistics, the graph and the trail started over. Triggered by the reset control; each
-/// plugin observes it for the state it owns.
+/// The scene put back at its start, triggered by the reset control.
+///
+/// The box at rest at the centre, no band, the books, the statistics, the graph and the trail
+/// started over. Each plugin observes it for the state it owns.
 #[derive(Event, Debug, Clone, Copy, Default)]
 pub struct ResetScene;
 
@@ -60,9 +61,10 @@ pub struct ResetScene;
 #[require(LinearState, AngularState, ForceAccumulator, RenderSnapshots)]
 pub struct RigidBox;
 
-/// What acts on a body during the current step: the summed forces and torques, and the band
-/// whose force the integrator evaluates again at its intermediate states. Filled and emptied
-/// within the step: empty between steps.
+/// What acts on a body during the current step.
+///
+/// The summed forces and torques, and the band whose force the integrator evaluates again at its
+/// intermediate states. Filled and emptied within the step: empty between steps.
 #[derive(Component, Debug, Default, Clone, Copy, PartialEq)]
 pub struct ForceAccumulator {
     pub forces: Forces,
@@ -76,8 +78,9 @@ pub struct Band {
     pub ends: BandEnds,
 }
 
-/// A band that was pressed and released within one frame: it acts for exactly one fixed step,
-/// so that a quick click is never lost, and is then removed.
+/// A band that was pressed and released within one frame.
+///
+/// It acts for exactly one fixed step, so that a quick click is never lost, and is then removed.
 #[derive(Component, Debug, Default)]
 pub struct Tap;
 
@@ -96,17 +99,20 @@ impl RenderSnapshots {
         }
     }
 
-    /// The state a fraction `alpha` (0 to 1) of the way from the previous step to the current.
+    /// Returns the state a fraction `alpha` of the way from the previous step to the current.
+    ///
+    /// `alpha` runs from 0 (the previous step) to 1 (the current).
     pub fn interpolate(&self, alpha: f64) -> BodyState {
         let (a, b) = (self.previous.to_array(), self.current.to_array());
         BodyState::from_array(std::array::from_fn(|i| a[i] + (b[i] - a[i]) * alpha))
     }
 }
 
-/// What the integrator did: the latest step's substeps (most over the bodies) and whether it
-/// fell back (`auto`, over its budget, took one `implicit` step), the fall-backs since
-/// start-up, and the latest step refused because it would have left the state non-finite
-/// (which integrator, which step).
+/// What the integrator did: its substeps, its fall-backs and the latest step it refused.
+///
+/// The latest step's substeps (most over the bodies) and whether it fell back (`auto`, over its
+/// budget, took one `implicit` step), the fall-backs since start-up, and the latest step refused
+/// because it would have left the state non-finite (which integrator, which step).
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
 pub struct StepStats {
     pub substeps: u32,
@@ -115,11 +121,12 @@ pub struct StepStats {
     pub divergence: Option<(Integrator, u64)>,
 }
 
-/// The energy ledger of the game. Between two steps only the player changes the energy
-/// (attaching, moving or releasing the band, changing k, resetting), so whatever the energy
-/// did between the end of one step and the start of the next is booked as the hand's work;
-/// damping's share comes from the integrator. The residual after each step is the
-/// integrator's error.
+/// The energy ledger of the game.
+///
+/// Between two steps only the player changes the energy (attaching, moving or releasing the band,
+/// changing k, resetting), so whatever the energy did between the end of one step and the start of
+/// the next is booked as the hand's work; damping's share comes from the integrator. The residual
+/// after each step is the integrator's error.
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
 pub struct EnergyBooks {
     pub ledger: EnergyLedger,
@@ -131,8 +138,9 @@ pub struct EnergyBooks {
     pub energies: Energies,
 }
 
-/// Kinetic and band energy of every body, with the bands as they are now: the one place
-/// the game sums them (the step's books before and after, the HUD).
+/// Sums the kinetic and band energy of every body, with the bands as they are now.
+///
+/// No other place in the game sums them (the step's books before and after, the HUD).
 pub fn mechanical_energies(
     params: &SceneParams,
     bodies: &Query<RigidBodyQueryReadOnly, With<RigidBox>>,
@@ -152,9 +160,11 @@ pub fn mechanical_energies(
     Energies { band, ..kinetic }
 }
 
-/// The band that acts on `body` in the next step: the first on it (the scene has one band a
-/// body; the pointer never makes a second, and the step ignores one). What the step's
-/// observers (`PhysicsSystems::Observe`: the recorder, the ghosts) read as its input.
+/// Returns the band that acts on `body` in the next step: the first on it.
+///
+/// The scene has one band a body; the pointer never makes a second, and the step ignores one. The
+/// step's observers (`PhysicsSystems::Observe`: the recorder, the ghosts) read it as the step's
+/// input.
 pub fn acting_band(body: Entity, bands: &Query<&Band>) -> Option<BandEnds> {
     bands
         .iter()
@@ -162,9 +172,10 @@ pub fn acting_band(body: Entity, bands: &Query<&Band>) -> Option<BandEnds> {
         .map(|band| band.ends)
 }
 
-/// A rigid body as the step moves it: its state, its mass, what acts on it and what is drawn
-/// of it (avian's `RigidBodyQuery` is the model). Read-only ([`Bodies`]), it is what the rest
-/// of the game reads of the box.
+/// A rigid body as the step moves it (avian's `RigidBodyQuery` is the model).
+///
+/// Its state, its mass, what acts on it and what is drawn of it. Read-only ([`Bodies`]), it is what
+/// the rest of the game reads of the box.
 #[derive(QueryData)]
 #[query_data(mutable)]
 pub struct RigidBodyQuery {
@@ -177,7 +188,7 @@ pub struct RigidBodyQuery {
 }
 
 impl RigidBodyQueryItem<'_, '_> {
-    /// The core's state, from the two components.
+    /// Returns the core's state, joined from the two components.
     pub fn state(&self) -> BodyState {
         body_state(&self.linear, &self.angular)
     }
@@ -189,7 +200,7 @@ impl RigidBodyQueryItem<'_, '_> {
 }
 
 impl RigidBodyQueryReadOnlyItem<'_, '_> {
-    /// The core's state, from the two components.
+    /// Returns the core's state, joined from the two components.
     pub fn state(&self) -> BodyState {
         body_state(self.linear, self.angular)
     }
@@ -201,9 +212,10 @@ pub type Bodies<'w, 's> = Query<'w, 's, RigidBodyQueryReadOnly, With<RigidBox>>;
 /// The boxes, as the step moves them.
 type Moving<'w, 's> = Query<'w, 's, RigidBodyQuery, With<RigidBox>>;
 
-/// Puts every schedule the app has now on the single-threaded executor: for one box the
-/// multi-threaded one costs many times more per tick (docs/benchmarks.md). The benchmarks
-/// and the side-by-side with the peers measure with it.
+/// Puts every schedule the app has now on the single-threaded executor.
+///
+/// For one box the multi-threaded one costs many times more per tick (docs/benchmarks.md). The
+/// benchmarks and the side-by-side with the peers measure with it.
 pub fn run_single_threaded(app: &mut App) {
     let mut schedules = app.world_mut().resource_mut::<Schedules>();
     for (_, schedule) in schedules.iter_mut() {
@@ -223,8 +235,9 @@ pub fn body_state(linear: &LinearState, angular: &AngularState) -> BodyState {
     }
 }
 
-/// The fixed clock's step set to `seconds`, if the clock can keep it (it counts whole
-/// nanoseconds and panics on a zero step); whether it was set.
+/// Sets the fixed clock's step to `seconds` if the clock can keep it; tells whether it did.
+///
+/// The clock counts whole nanoseconds and panics on a zero step.
 pub fn set_fixed_step(time: &mut Time<Fixed>, seconds: f64) -> bool {
     match Duration::try_from_secs_f64(seconds) {
         Ok(step) if !step.is_zero() => {
@@ -235,6 +248,8 @@ pub fn set_fixed_step(time: &mut Time<Fixed>, seconds: f64) -> bool {
     }
 }
 
+/// Applies the scene's step rate to the fixed clock, or refuses it with a message.
+///
 /// Bevy's fixed clock counts whole nanoseconds and panics on a zero step: a rate it cannot
 /// represent is refused with a message, and the clock keeps its step.
 fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {
@@ -257,8 +272,10 @@ fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {
     }
 }
 
-/// The box's mass and size as the scene's parameters say (the mass slider, a link): its
-/// state kept. A valid scene only reaches here (the controls refuse the rest).
+/// Gives the box the mass and size the scene's parameters say, its state kept.
+///
+/// The parameters change with the mass slider or a link. Only a valid scene reaches here (the
+/// controls refuse the rest).
 fn apply_mass(params: Res<SceneParams>, mut boxes: Query<&mut MassProperties, With<RigidBox>>) {
     if let Ok(wanted) = params.mass_properties() {
         for mut mass in &mut boxes {
@@ -267,9 +284,10 @@ fn apply_mass(params: Res<SceneParams>, mut boxes: Query<&mut MassProperties, Wi
     }
 }
 
-/// The box as components, in `state`, with nothing acting on it yet: the one way every box
-/// is made or put back (the game, reset, the benchmarks, the side-by-side). Its render
-/// snapshots both hold `state`, so the first frame drawn never jumps.
+/// Returns the box as components, in `state`, with nothing acting on it yet.
+///
+/// Every box is made or put back this way (the game, reset, the benchmarks, the side-by-side).
+/// Its render snapshots both hold `state`, so the first frame drawn never jumps.
 pub fn rigid_box(mass: MassProperties, state: BodyState) -> impl Bundle {
     (
         RigidBox,
@@ -292,8 +310,9 @@ fn spawn_box(mut commands: Commands, params: Res<SceneParams>) {
     }
 }
 
-/// Every box back at rest at the centre (its mass kept), and the books and statistics of the
-/// run started over.
+/// Puts every box back at rest at the centre and starts the run's books and statistics over.
+///
+/// Each box keeps its mass.
 fn reset_bodies_and_books(
     _reset: On<ResetScene>,
     mut commands: Commands,
@@ -326,8 +345,10 @@ struct StepRecords<'w> {
     count: ResMut<'w, StepCount>,
 }
 
-/// The fixed step, in one system (each system a step costs Bevy about as much again as the
-/// box's physics: docs/peers.md), in three phases: [`accumulate`], [`integrate`], [`publish`].
+/// Takes the fixed step in three phases: [`accumulate`], [`integrate`], [`publish`].
+///
+/// It is one system because each system a step costs Bevy about as much again as the box's physics
+/// (docs/peers.md).
 fn step(
     mut commands: Commands,
     settings: StepSettings,
@@ -344,8 +365,10 @@ fn step(
     }
 }
 
-/// The hand's work since the last step booked, then on each body the band's force
-/// k·(anchor − corner) at its corner with its torque r × F (one band a body).
+/// Books the hand's work since the last step, then puts the band's force on each body.
+///
+/// On each body the band's force k·(anchor − corner) acts at its corner, with its torque r × F (one
+/// band a body).
 fn accumulate(
     params: &SceneParams,
     bands: &Query<&Band>,
@@ -369,9 +392,11 @@ fn accumulate(
     }
 }
 
-/// Each body advanced by the `Integrator` resource under what was accumulated and damping's
-/// −b·v and −c·I·ω; a step that would leave the state non-finite is refused (damping's share
-/// booked otherwise); the accumulator emptied, the render snapshots moved on.
+/// Advances each body by the `Integrator` resource under what was accumulated and damping.
+///
+/// Damping adds −b·v and −c·I·ω. A step that would leave the state non-finite is refused (damping's
+/// share is booked otherwise). Either way the accumulator is emptied and the render snapshots move
+/// on.
 fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRecords) {
     let StepSettings {
         time,
@@ -419,7 +444,7 @@ fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRec
     }
 }
 
-/// The energy books settled (the energies now, the ledger's residual), the step counted.
+/// Settles the energy books (the energies now, the ledger's residual) and counts the step.
 fn publish(params: &SceneParams, bands: &Query<&Band>, bodies: &Moving, records: &mut StepRecords) {
     let books = &mut *records.books;
     let energies = mechanical_energies(params, &bodies.as_readonly(), bands);

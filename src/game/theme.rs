@@ -30,8 +30,10 @@ const FIGURES_FACE: &[u8] = include_bytes!("../../assets/fonts/DejaVuSansMono-su
 pub const FIGURES_FONT: Handle<Font> =
     bevy::asset::uuid_handle!("5b1c7e2a-9d04-4f6b-8a31-c2e971d03f55");
 
-/// The two faces put in place: the text face as the default font, the figures' face under
-/// [`FIGURES_FONT`]. Without Bevy's text plugin (the headless game) there is nothing to do.
+/// Puts the two faces in place, the text face as the default font.
+///
+/// The figures' face goes under [`FIGURES_FONT`]. Without Bevy's text plugin (the headless game)
+/// there is nothing to do.
 fn load_fonts(fonts: Option<ResMut<Assets<Font>>>) {
     let Some(mut fonts) = fonts else {
         return;
@@ -98,19 +100,20 @@ pub mod colour {
     pub const TWIN: Color = Color::srgb(0.75, 0.78, 0.85);
 }
 
-/// An integrator's colour, from the core's one table ([`Integrator::colour`]): the same in
-/// the game and the report's figures.
+/// Returns an integrator's colour, from the core's one table ([`Integrator::colour`]).
+///
+/// It is the same in the game and the report's figures.
 pub fn method_colour(integrator: Integrator) -> Color {
     let [r, g, b] = integrator.colour();
     Color::srgb_u8(r, g, b)
 }
 
-/// Body text in the text face.
+/// Returns the font of body text, in the text face.
 pub fn text_font(size: f32) -> TextFont {
     TextFont::from_font_size(size)
 }
 
-/// Figures of one width.
+/// Returns the font of figures of one width, in the figures' face.
 pub fn figures_font(size: f32) -> TextFont {
     TextFont {
         font: FontSource::Handle(FIGURES_FONT),

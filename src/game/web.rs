@@ -1,7 +1,7 @@
-//! The page around the web build: the few things only JavaScript can do (download a file,
-//! ask for one, receive a dropped one) and what the page can read back (a replay's hash, how a
-//! playback ended, where the panel's buttons, the viewport, the texts and the box are). A leaf: no Bevy, no game state; the
-//! recorder, the playback and the panel call it.
+//! The page around the web build: the few things only JavaScript can do (download a file, ask for
+//! one, receive a dropped one) and what the page can read back (a replay's hash, how a playback
+//! ended, where the panel's buttons, the viewport, the texts and the box are). A leaf: no Bevy, no
+//! game state; the recorder, the playback and the panel call it.
 
 use wasm_bindgen::prelude::*;
 
@@ -98,51 +98,63 @@ export function publish_box(json) {
 }
 "#)]
 extern "C" {
-    /// Offers `text` as a download; the file's name.
+    /// Offers `text` as a download and returns the file's name.
     pub fn download_replay(text: &str) -> String;
 
     /// Opens the browser's file chooser (needs a recent key press or click).
     pub fn choose_replay_file();
 
-    /// Files dropped anywhere on the page are opened.
+    /// Arranges for files dropped anywhere on the page to be opened.
     pub fn accept_dropped_files();
 
-    /// The name of the file opened, if one waits (call before [`take_opened_text`]).
+    /// Returns the name of the file opened, if one waits (call before [`take_opened_text`]).
     pub fn take_opened_name() -> Option<String>;
 
-    /// The text of the file opened since the last call, if any.
+    /// Takes the text of the file opened since the last call, if any.
     pub fn take_opened_text() -> Option<String>;
 
-    /// `window.rubberBandBox.replayHash(text)`: what `simulate --replay FILE --hash` prints.
+    /// Exposes `window.rubberBandBox.replayHash(text)`.
+    ///
+    /// It returns what `simulate --replay FILE --hash` prints.
     pub fn expose_replay_hash(hash: &Closure<dyn Fn(String) -> String>);
 
-    /// `window.rubberBandBox.playback`: how the latest playback ended.
+    /// Publishes `window.rubberBandBox.playback`: how the latest playback ended.
     pub fn publish_playback(steps: f64, hash: &str, recorded: &str, matched: bool);
 
-    /// `window.rubberBandBox.panel`: each panel button's label and where it lies on the page
-    /// (CSS pixels: x, y, width, height), so that a test can click what a player clicks.
+    /// Publishes `window.rubberBandBox.panel`: each panel button's label and where it lies.
+    ///
+    /// Places are on the page, in CSS pixels (x, y, width, height), so that a test can click what a
+    /// player clicks.
     pub fn publish_panel(json: &str);
 
-    /// `window.rubberBandBox.scene`: where the tutorial's 640 x 480 screen is drawn on the
-    /// page (CSS pixels: x, y, width, height), so that a test can find the world on it.
+    /// Publishes `window.rubberBandBox.scene`: where the tutorial's 640 x 480 screen is drawn.
+    ///
+    /// The place is on the page, in CSS pixels (x, y, width, height), so that a test can find the
+    /// world on it.
     pub fn publish_scene(x: f32, y: f32, width: f32, height: f32);
 
-    /// `window.rubberBandBox.viewport`: the scene's viewport on the page (CSS pixels: x, y,
-    /// width, height).
+    /// Publishes `window.rubberBandBox.viewport`: the scene's viewport on the page.
+    ///
+    /// It is in CSS pixels: x, y, width, height.
     pub fn publish_viewport(x: f32, y: f32, width: f32, height: f32);
 
-    /// `window.rubberBandBox.texts`: every text shown, `{ text, rect: [x, y, width, height] }`
-    /// (CSS pixels; the part a scrolled dock shows).
+    /// Publishes `window.rubberBandBox.texts`: every text shown, and where.
+    ///
+    /// Each is `{ text, rect: [x, y, width, height] }` (CSS pixels; the part a scrolled dock
+    /// shows).
     pub fn publish_texts(json: &str);
 
-    /// The page's address: the game opens the link it is (`replay::link`).
+    /// Returns the page's address: the game opens the link it is (`replay::link`).
     pub fn page_address() -> String;
 
-    /// `query` (`?v=1&...#replay=...`) on the page's address: made the address shown, copied
-    /// to the clipboard where the browser allows, kept as `window.rubberBandBox.link`. The
-    /// whole address.
+    /// Puts `query` (`?v=1&...#replay=...`) on the page's address and returns the whole address.
+    ///
+    /// The address is made the one shown, copied to the clipboard where the browser allows, and
+    /// kept as `window.rubberBandBox.link`.
     pub fn share_link(query: &str) -> String;
 
-    /// `window.rubberBandBox.box`: the box's corners on the page, `[[x, y], ...]` (CSS pixels).
+    /// Publishes `window.rubberBandBox.box`: the box's corners on the page.
+    ///
+    /// They are `[[x, y], ...]`, in CSS pixels.
     pub fn publish_box(json: &str);
 }

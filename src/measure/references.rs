@@ -27,7 +27,7 @@ pub struct WorkScene {
     pub energy_invariant: bool,
 }
 
-/// The converged answer of a work scene at time `t`.
+/// Returns the converged answer of a work scene at time `t`.
 pub fn work_reference(work: &WorkScene, t: f64) -> BodyState {
     match work.exact {
         Some(exact) => exact(t),
@@ -69,8 +69,10 @@ pub fn work_scenes() -> Vec<WorkScene> {
     ]
 }
 
-/// The diagonal pull in closed form: the corner (30, 30) pulled toward (150, 150) moves the
-/// box along the diagonal as m u'' + b u' + k u = 0 with u = x − 120, u(0) = −120, u'(0) = 0.
+/// Returns the diagonal pull's state at time `t`, in closed form.
+///
+/// The corner (30, 30) pulled toward (150, 150) moves the box along the diagonal as
+/// m u'' + b u' + k u = 0 with u = x − 120, u(0) = −120, u'(0) = 0.
 pub fn diagonal_exact(t: f64) -> BodyState {
     let p = SceneParams::tutorial();
     let equilibrium = 150.0 - 30.0;
@@ -86,8 +88,9 @@ pub fn diagonal_exact(t: f64) -> BodyState {
     state
 }
 
-/// A fine RK4 run of `scene` to time `t`, with an even number of steps so that pulls at
-/// whole seconds fall on step boundaries.
+/// Runs `scene` to time `t` with fine RK4 steps and returns the final state.
+///
+/// The number of steps is even, so that pulls at whole seconds fall on step boundaries.
 pub fn reference_state(scene: &Scene, t: f64, step: f64) -> BodyState {
     let n = ((t / step).ceil() as u64).max(2).next_multiple_of(2);
     let mut run = Run::of(scene, Integrator::Rk4, t / n as f64).expect("valid scene");
@@ -96,10 +99,12 @@ pub fn reference_state(scene: &Scene, t: f64, step: f64) -> BodyState {
     run.stepper.state
 }
 
-/// How long after a stiff pull from rest two tight references still agree well enough to
-/// judge an integrator by its state: the stiffer the band, the sooner its chaotic motion
-/// parts them (docs/report.md, "Horizons"; the report prints how far its two references agree).
-/// None beyond k = 1e7, where no state can be compared and only boundedness and energy can.
+/// Returns how long after a stiff pull from rest two tight references still agree.
+///
+/// Until then they agree well enough to judge an integrator by its state: the stiffer the band,
+/// the sooner its chaotic motion parts them (docs/report.md, "Horizons"; the report prints how far
+/// its two references agree). None beyond k = 1e7, where no state can be compared and only
+/// boundedness and energy can.
 pub fn resolvable_horizon(k: f64) -> Option<f64> {
     if k <= 1e5 {
         Some(0.1)
@@ -115,8 +120,9 @@ pub fn resolvable_horizon(k: f64) -> Option<f64> {
 /// Simulated seconds of the undamped runs that judge a band too stiff for any horizon.
 pub const UNRESOLVABLE_SECONDS: f64 = 10.0;
 
-/// Two references for a resolvable case: where both agree, the report can judge errors down
-/// to their agreement.
+/// Two references for a resolvable case.
+///
+/// Where both agree, the report can judge errors down to their agreement.
 #[derive(Clone, Copy, Debug)]
 pub struct StiffReference {
     /// The tightest the core has: Taylor series of order 24 at a tolerance of 1e-15 px.
@@ -125,8 +131,9 @@ pub struct StiffReference {
     pub agreement: f64,
 }
 
-/// A candidate engine for `auto` with its setting, as the engine comparison runs it: inside
-/// each fixed step of a stiff pull, restarted at every fixed step.
+/// A candidate engine for `auto` with its setting, as the engine comparison runs it.
+///
+/// The comparison runs it inside each fixed step of a stiff pull, restarted at every fixed step.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Engine {
     /// Classical RK4 with this many equal substeps per fixed step.
@@ -150,8 +157,10 @@ impl Engine {
     }
 }
 
-/// A stiff pull (one pull, held from the start) run by `engine`: the final state and the
-/// force evaluations (Taylor: coefficient orders) per fixed step; None if the engine gave up.
+/// Runs a stiff pull (one pull, held from the start) with `engine`.
+///
+/// Returns the final state and the force evaluations (Taylor: coefficient orders) per fixed
+/// step; None if the engine gave up.
 pub fn run_engine(
     scene: &Scene,
     rate: f64,
@@ -202,9 +211,10 @@ pub fn run_engine(
         .then_some((state, evaluations / ticks as f64))
 }
 
-/// One point of the stiffness sweep: the stiff pull at band stiffness `k` and rate `rate`,
-/// run to its resolvable horizon and compared there, or, beyond k = 1e7, run undamped for
-/// [`UNRESOLVABLE_SECONDS`] and judged by boundedness and energy.
+/// One point of the stiffness sweep: the stiff pull at band stiffness `k` and rate `rate`.
+///
+/// It is run to its resolvable horizon and compared there, or, beyond k = 1e7, run undamped
+/// for [`UNRESOLVABLE_SECONDS`] and judged by boundedness and energy.
 #[derive(Clone, Debug)]
 pub struct StiffCase {
     pub k: f64,
@@ -247,15 +257,17 @@ impl StiffCase {
         }
     }
 
-    /// Simulated seconds run.
+    /// Returns the simulated seconds run.
     pub fn seconds(&self) -> f64 {
         self.ticks as f64 / self.rate
     }
 }
 
-/// Every state after each recorded step of `replay` run with `integrator` (and `auto`'s
-/// settings if given), each recorded step split into `substeps` equal steps with the same
-/// band, and the seconds simulated; or the step where the run left every bound.
+/// Runs `replay` with `integrator` and returns the state after each recorded step.
+///
+/// `auto`'s settings are used if given, and each recorded step is split into `substeps` equal
+/// steps with the same band. Returns every state and the seconds simulated, or the step where
+/// the run left every bound.
 pub fn replay_trajectory(
     replay: &Replay,
     integrator: Integrator,
@@ -278,9 +290,11 @@ pub fn replay_trajectory(
     Ok((states, run.time))
 }
 
-/// A recorded game's converged answer: the state after each recorded step of the tightest
-/// Taylor series (order 24 at 1e-15 px, no budget, so it never falls back) at the recorded
-/// rate, the seconds simulated, and the box the corner distance is measured on.
+/// A recorded game's converged answer.
+///
+/// It holds the state after each recorded step of the tightest Taylor series (order 24 at
+/// 1e-15 px, no budget, so it never falls back) at the recorded rate, the seconds simulated,
+/// and the box the corner distance is measured on.
 pub struct ReplayReference {
     pub states: Vec<BodyState>,
     pub seconds: f64,
@@ -309,8 +323,9 @@ impl ReplayReference {
         }
     }
 
-    /// The largest corner distance over the game of `states` (a state after each recorded
-    /// step) from the reference's.
+    /// Returns the largest corner distance of `states` from the reference's over the game.
+    ///
+    /// `states` holds a state after each recorded step.
     pub fn largest_error(&self, states: &[BodyState]) -> f64 {
         states
             .iter()

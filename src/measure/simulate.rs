@@ -80,8 +80,10 @@ pub enum SimulateError {
     Mismatch(String),
 }
 
-/// Where `simulate` writes: the CSV (the header, row 0 for the initial state, a row per step),
-/// or with `--hash` only the hash of the states after each step.
+/// Where `simulate` writes: the CSV, or with `--hash` only a hash.
+///
+/// The CSV holds the header, row 0 for the initial state and a row per step; the hash is that of
+/// the states after each step.
 struct Output<W: Write> {
     out: BufWriter<W>,
     hash: Option<TrajectoryHash>,
@@ -99,7 +101,7 @@ impl<W: Write> Output<W> {
         Ok(output)
     }
 
-    /// The state after a step; its row is made only for the CSV.
+    /// Records the state after a step; its row is made only for the CSV.
     fn step(&mut self, state: &BodyState, row: impl FnOnce() -> Row) -> io::Result<()> {
         match self.hash.as_mut() {
             Some(hash) => {
@@ -118,7 +120,7 @@ impl<W: Write> Output<W> {
     }
 }
 
-/// A scene's run: `steps` steps written to `out` (see [`Output`]); a diverged step stops it.
+/// Runs a scene for `steps` steps, written to `out` (see [`Output`]); a diverged step stops it.
 pub fn write_run(
     mut run: Run,
     steps: u64,
@@ -151,7 +153,7 @@ pub struct ReplayJob<'a> {
     pub check_hash: bool,
 }
 
-/// `simulate --replay FILE`: the recorded game stepped again, written to `out`.
+/// Steps the recorded game again and writes it to `out` (`simulate --replay FILE`).
 pub fn write_replay(job: &ReplayJob, hash: bool, out: impl Write) -> Result<(), SimulateError> {
     let path = job.path;
     let mut run = ReplayRun::new(job.replay, job.integrator)

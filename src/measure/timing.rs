@@ -3,13 +3,13 @@
 
 use std::time::Instant;
 
-/// The median of some measurements (the upper one of an even count).
+/// Returns the median of some measurements (the upper one of an even count).
 pub fn median(mut values: Vec<f64>) -> f64 {
     values.sort_by(f64::total_cmp);
     values[values.len() / 2]
 }
 
-/// Median wall time of `reps` runs of `work`, in nanoseconds.
+/// Times `reps` runs of `work` and returns their median wall time, in nanoseconds.
 pub fn median_ns(reps: usize, mut work: impl FnMut()) -> f64 {
     median(
         (0..reps)
@@ -22,8 +22,9 @@ pub fn median_ns(reps: usize, mut work: impl FnMut()) -> f64 {
     )
 }
 
-/// The median of values and the quartiles around it: how far apart runs of one measurement
-/// lie.
+/// The median of values and the quartiles around it.
+///
+/// They tell how far apart runs of one measurement lie.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spread {
     pub median: f64,
@@ -33,7 +34,7 @@ pub struct Spread {
 }
 
 impl Spread {
-    /// The median and quartiles of `values` (nearest rank); NaN for none.
+    /// Computes the median and quartiles of `values` (nearest rank); NaN for none.
     pub fn of(mut values: Vec<f64>) -> Self {
         if values.is_empty() {
             return Self {
@@ -51,7 +52,7 @@ impl Spread {
         }
     }
 
-    /// "1.02 (0.98-1.05)": the median and, in brackets, the interquartile range.
+    /// Formats the spread as "1.02 (0.98-1.05)": the median, the interquartile range in brackets.
     pub fn describe(&self) -> String {
         format!("{:.2} ({:.2}-{:.2})", self.median, self.q1, self.q3)
     }

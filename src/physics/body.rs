@@ -34,7 +34,7 @@ pub struct BodyState {
 }
 
 impl BodyState {
-    /// A body at rest at `position` with orientation zero.
+    /// Returns a body at rest at `position` with orientation zero.
     pub fn at_rest(position: DVec2) -> Self {
         Self {
             linear: LinearState {
@@ -45,15 +45,17 @@ impl BodyState {
         }
     }
 
-    /// The state as six numbers: x, y, θ, vx, vy, ω (the order of the CLI's CSV columns and
-    /// `--init`). The one place the state is flattened and rebuilt.
+    /// Flattens the state into six numbers: x, y, θ, vx, vy, ω.
+    ///
+    /// The order is that of the CLI's CSV columns and `--init`. The one place the state is
+    /// flattened and rebuilt.
     pub fn to_array(&self) -> [f64; 6] {
         let (p, v) = (self.linear.position, self.linear.velocity);
         let a = &self.angular;
         [p.x, p.y, a.orientation, v.x, v.y, a.angular_velocity]
     }
 
-    /// The state from x, y, θ, vx, vy, ω (see [`Self::to_array`]).
+    /// Rebuilds the state from x, y, θ, vx, vy, ω (see [`Self::to_array`]).
     pub fn from_array([x, y, orientation, vx, vy, angular_velocity]: [f64; 6]) -> Self {
         Self {
             linear: LinearState {
@@ -67,21 +69,24 @@ impl BodyState {
         }
     }
 
-    /// A body-local point expressed in world coordinates.
+    /// Expresses a body-local point in world coordinates.
     pub fn local_to_world(&self, local: DVec2) -> DVec2 {
         self.linear.position + rotate(local, self.angular.orientation)
     }
 
-    /// Finite, and every component within [`STATE_LIMIT`]: what the game accepts from a step.
+    /// Tells whether the state is finite, with every component within [`STATE_LIMIT`].
+    ///
+    /// Such a state is what the game accepts from a step.
     pub fn is_sane(&self) -> bool {
         self.to_array()
             .iter()
             .all(|v| v.is_finite() && v.abs() <= STATE_LIMIT)
     }
 
-    /// How far this pose is from `other`: the largest distance between corresponding corners
-    /// of the box `mass` describes (px). It weighs the orientation by the box's size, as the
-    /// corner's 30·θ.
+    /// Measures how far this pose is from `other`, in px.
+    ///
+    /// The measure is the largest distance between corresponding corners of the box `mass`
+    /// describes. It weighs the orientation by the box's size, as the corner's 30·θ.
     pub fn pose_error(&self, other: &BodyState, mass: &MassProperties) -> f64 {
         mass.corners()
             .iter()
@@ -94,13 +99,15 @@ impl BodyState {
     }
 }
 
-/// No component of a sane state exceeds this: a billion times the scene, far beyond any hard
-/// case (the far anchor is 1e6 away; a band of k = 1e9 moves the box at about 6e6 px/s), and
-/// still inside f32's range for drawing. A step past it has diverged.
+/// The bound no component of a sane state exceeds: a step past it has diverged.
+///
+/// It is a billion times the scene, far beyond any hard case (the far anchor is 1e6 away; a
+/// band of k = 1e9 moves the box at about 6e6 px/s), and still inside f32's range for drawing.
 pub const STATE_LIMIT: f64 = 1e12;
 
-/// Rotates `v` counter-clockwise by `angle` radians, written out as the tutorial's
-/// `rotateCopy` does so that the two round the same way.
+/// Rotates `v` counter-clockwise by `angle` radians.
+///
+/// It is written out as the tutorial's `rotateCopy` does, so that the two round the same way.
 pub fn rotate(v: DVec2, angle: f64) -> DVec2 {
     let (sin, cos) = maths::sin_cos(angle);
     DVec2::new(cos * v.x - sin * v.y, sin * v.x + cos * v.y)
@@ -120,7 +127,7 @@ pub struct MassProperties {
 }
 
 impl MassProperties {
-    /// A uniform solid rectangle: I = m (w² + h²) / 12 (the tutorial's section 4.3.4).
+    /// Builds a uniform solid rectangle: I = m (w² + h²) / 12 (the tutorial's section 4.3.4).
     pub fn rectangle(mass: f64, size: DVec2) -> Result<Self, ParamError> {
         ParamError::check_positive("mass", mass)?;
         ParamError::check_positive("width", size.x)?;
@@ -152,8 +159,10 @@ impl MassProperties {
         self.size
     }
 
-    /// The four corners in body coordinates, in the tutorial's order: upper-left, upper-right,
-    /// lower-right, lower-left (y up here; the tutorial's screen is y down).
+    /// Returns the four corners in body coordinates, in the tutorial's order.
+    ///
+    /// The order is upper-left, upper-right, lower-right, lower-left (y up here; the tutorial's
+    /// screen is y down).
     pub fn corners(&self) -> [DVec2; 4] {
         let h = self.size * 0.5;
         [
@@ -164,8 +173,9 @@ impl MassProperties {
         ]
     }
 
-    /// The corner (body coordinates) nearest to the world point `target`; on a tie the first in
-    /// [`Self::corners`] order wins, as in the tutorial.
+    /// Returns the corner (body coordinates) nearest to the world point `target`.
+    ///
+    /// On a tie the first in [`Self::corners`] order wins, as in the tutorial.
     pub fn nearest_corner(&self, state: &BodyState, target: DVec2) -> DVec2 {
         let mut best = self.corners()[0];
         let mut best_distance = f64::INFINITY;

@@ -60,13 +60,13 @@ impl std::iter::Sum for Energies {
     }
 }
 
-/// Kinetic energy, linear plus rotational: ½ m |v|² + ½ I ω².
+/// Returns the kinetic energy, linear plus rotational: ½ m |v|² + ½ I ω².
 pub fn kinetic_energy(state: &BodyState, mass: &MassProperties) -> f64 {
     Energies::of(state, mass, None, 0.0).kinetic()
 }
 
 impl ForceModel {
-    /// Band potential plus kinetic energy.
+    /// Returns the band potential plus kinetic energy.
     pub fn energy(&self, state: &BodyState) -> f64 {
         Energies::of(state, &self.mass, self.band.as_ref(), self.stiffness).total()
     }
@@ -77,8 +77,10 @@ impl ForceModel {
 pub struct EnergyLedger {
     /// Mechanical energy when the ledger started.
     pub initial: f64,
-    /// Net work of the hand: the band's energy at each attachment and anchor move, less the
-    /// band's energy taken away at each release.
+    /// Net work of the hand: the energy it put into the band less what it took away.
+    ///
+    /// It counts the band's energy at each attachment and anchor move, less the band's energy
+    /// taken away at each release.
     pub work_in: f64,
     /// The same without the signs: all the energy the hand moved in or out.
     pub work_moved: f64,
@@ -94,9 +96,11 @@ impl EnergyLedger {
         }
     }
 
-    /// Before a step: the hand's work since the previous one, the change from `settled` (the
-    /// energy right after it) to `now` (the band has moved, attached or let go since); with
-    /// no previous step (`None`: the start, a reset), the ledger starts at `now`.
+    /// Opens a step: books the hand's work since the previous one.
+    ///
+    /// That work is the change from `settled` (the energy right after the previous step) to
+    /// `now` (the band has moved, attached or let go since); with no previous step (`None`: the
+    /// start, a reset), the ledger starts at `now`.
     pub fn open_step(&mut self, settled: Option<f64>, now: f64) {
         match settled {
             Some(settled) => self.hand(now - settled),
@@ -104,23 +108,23 @@ impl EnergyLedger {
         }
     }
 
-    /// The hand changed the band's energy by `delta` (attach, move or release).
+    /// Records that the hand changed the band's energy by `delta` (attach, move or release).
     pub fn hand(&mut self, delta: f64) {
         self.work_in += delta;
         self.work_moved += delta.abs();
     }
 
-    /// What the energy should be now.
+    /// Returns what the energy should be now.
     pub fn expected(&self) -> f64 {
         self.initial + self.work_in - self.dissipated
     }
 
-    /// The integrator's error: energy now minus what the ledger says it should be.
+    /// Returns the integrator's error: energy now minus what the ledger says it should be.
     pub fn residual(&self, energy_now: f64) -> f64 {
         energy_now - self.expected()
     }
 
-    /// All the energy that passed through: the scale to judge the residual by.
+    /// Returns all the energy that passed through: the scale to judge the residual by.
     pub fn throughput(&self) -> f64 {
         self.initial + self.work_moved + self.dissipated
     }

@@ -20,8 +20,10 @@ impl Wrench {
         torque: 0.0,
     };
 
-    /// A force applied at world offset `arm` from the centre of mass: the same force through the
-    /// centre, plus the torque τ = r × F (the tutorial's equation 22).
+    /// Builds the wrench of a force applied at world offset `arm` from the centre of mass.
+    ///
+    /// It is the same force through the centre, plus the torque τ = r × F (the tutorial's
+    /// equation 22).
     pub fn at_arm(force: DVec2, arm: DVec2) -> Self {
         Self {
             force,
@@ -46,8 +48,9 @@ impl AddAssign for Wrench {
     }
 }
 
-/// The band: a zero-rest-length Hooke spring from `local_point` on the body (body coordinates)
-/// to `anchor` (world coordinates).
+/// The band: a zero-rest-length Hooke spring from a point on the body to a world point.
+///
+/// It runs from `local_point` on the body (body coordinates) to `anchor` (world coordinates).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BandEnds {
     pub local_point: DVec2,
@@ -55,8 +58,9 @@ pub struct BandEnds {
 }
 
 impl BandEnds {
-    /// What a press at `anchor` grabs: the corner of the body nearest to it (the tutorial's
-    /// rule), pulled toward it.
+    /// Returns the band a press at `anchor` makes: a corner of the body pulled toward `anchor`.
+    ///
+    /// It grabs the corner nearest to `anchor` (the tutorial's rule).
     pub fn grabbing(mass: &MassProperties, state: &BodyState, anchor: DVec2) -> Self {
         Self {
             local_point: mass.nearest_corner(state, anchor),
@@ -64,17 +68,17 @@ impl BandEnds {
         }
     }
 
-    /// The band's end on the body, in world coordinates.
+    /// Returns the band's end on the body, in world coordinates.
     pub fn attachment(&self, state: &BodyState) -> DVec2 {
         state.local_to_world(self.local_point)
     }
 
-    /// The band's length (it has zero rest length, so this is also its stretch).
+    /// Returns the band's length (it has zero rest length, so this is also its stretch).
     pub fn length(&self, state: &BodyState) -> f64 {
         self.attachment(state).distance(self.anchor)
     }
 
-    /// Force k·(anchor − point) applied at the attachment point.
+    /// Returns the force k·(anchor − point), applied at the attachment point.
     pub fn wrench(&self, state: &BodyState, stiffness: f64) -> Wrench {
         let point = self.attachment(state);
         Wrench::at_arm(
@@ -83,14 +87,16 @@ impl BandEnds {
         )
     }
 
-    /// Elastic energy ½ k |point − anchor|².
+    /// Returns the elastic energy ½ k |point − anchor|².
     pub fn potential_energy(&self, state: &BodyState, stiffness: f64) -> f64 {
         0.5 * stiffness * self.attachment(state).distance_squared(self.anchor)
     }
 }
 
-/// Damping as a force and a torque: F = −b v, τ = −c I ω, so that the velocity decays at the
-/// rate b/m and the angular velocity at the rate c (both per second).
+/// Returns damping as a force and a torque: F = −b v, τ = −c I ω.
+///
+/// The velocity then decays at the rate b/m and the angular velocity at the rate c (both per
+/// second).
 pub fn damping_wrench(
     state: &BodyState,
     mass: &MassProperties,
@@ -103,8 +109,9 @@ pub fn damping_wrench(
     }
 }
 
-/// What acts on a body during one step, kept in two parts because the integrators treat them
-/// differently: the forces the scene applies (the band), and damping.
+/// What acts on a body during one step: the forces the scene applies (the band), and damping.
+///
+/// The two parts are kept apart because the integrators treat them differently.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Forces {
     pub applied: Wrench,
@@ -122,8 +129,9 @@ impl Forces {
     }
 }
 
-/// Every force law acting on one body during a step, so that an integrator can evaluate the
-/// forces at any intermediate state.
+/// Every force law acting on one body during a step.
+///
+/// They are kept together so that an integrator can evaluate the forces at any intermediate state.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ForceModel {
     pub mass: MassProperties,
@@ -134,7 +142,7 @@ pub struct ForceModel {
 }
 
 impl ForceModel {
-    /// The band's force and torque (zero without a band).
+    /// Returns the band's force and torque (zero without a band).
     pub fn applied(&self, state: &BodyState) -> Wrench {
         self.band
             .map_or(Wrench::ZERO, |band| band.wrench(state, self.stiffness))
@@ -144,7 +152,7 @@ impl ForceModel {
         damping_wrench(state, &self.mass, self.linear_damping, self.angular_damping)
     }
 
-    /// Steps 1 and 3 of the total reaction at `state`: every force and torque.
+    /// Returns every force and torque at `state`: steps 1 and 3 of the total reaction.
     pub fn forces(&self, state: &BodyState) -> Forces {
         Forces {
             applied: self.applied(state),
@@ -152,7 +160,7 @@ impl ForceModel {
         }
     }
 
-    /// Velocity decay rates: b/m for the linear velocity, c for the angular one.
+    /// Returns the velocity decay rates: b/m for the linear velocity, c for the angular one.
     pub fn damping_rates(&self) -> (f64, f64) {
         (
             self.linear_damping * self.mass.inverse_mass(),
@@ -160,8 +168,9 @@ impl ForceModel {
         )
     }
 
-    /// The band's stiffest mode: sqrt(k (1/m + |r|²/I)), 2·sqrt(k/m) for a square pulled at
-    /// a corner (zero without a band).
+    /// Returns the rate of the band's stiffest mode (zero without a band).
+    ///
+    /// It is sqrt(k (1/m + |r|²/I)), 2·sqrt(k/m) for a square pulled at a corner.
     pub fn band_rate(&self) -> f64 {
         let mass = &self.mass;
         self.band.map_or(0.0, |band| {
@@ -170,8 +179,9 @@ impl ForceModel {
         })
     }
 
-    /// The fastest rate in the motion at `state`: the band's stiffest mode, the spin, the
-    /// damping rates.
+    /// Returns the fastest rate in the motion at `state`.
+    ///
+    /// The rates compared are the band's stiffest mode, the spin and the damping rates.
     pub fn fastest_rate(&self, state: &BodyState) -> f64 {
         let (linear_rate, angular_rate) = self.damping_rates();
         self.band_rate()
@@ -180,14 +190,16 @@ impl ForceModel {
             .max(state.angular.angular_velocity.abs())
     }
 
-    /// The rate at which damping takes energy out: b |v|² + c I ω² (never negative).
+    /// Returns the rate at which damping takes energy out: b |v|² + c I ω² (never negative).
     pub fn damping_power(&self, velocity: DVec2, angular_velocity: f64) -> f64 {
         self.linear_damping * velocity.length_squared()
             + self.angular_damping * self.mass.inertia() * angular_velocity * angular_velocity
     }
 
-    /// The energy damping took out over a step from `before` to `after`, by the trapezoidal
-    /// rule: second order, as accurate as any first- or second-order integrator.
+    /// Returns the energy damping took out over a step from `before` to `after`.
+    ///
+    /// It uses the trapezoidal rule: second order, as accurate as any first- or second-order
+    /// integrator.
     pub fn dissipated_by_trapezoid(&self, before: &BodyState, after: &BodyState, dt: f64) -> f64 {
         let power =
             |s: &BodyState| self.damping_power(s.linear.velocity, s.angular.angular_velocity);
@@ -195,8 +207,10 @@ impl ForceModel {
     }
 }
 
-/// Angular momentum about a fixed world point: m (x − a) × v + I ω. The band's force passes
-/// through its anchor, so with no damping this is an invariant about the anchor.
+/// Returns the angular momentum about a fixed world point: m (x − a) × v + I ω.
+///
+/// The band's force passes through its anchor, so with no damping this is an invariant about
+/// the anchor.
 pub fn angular_momentum_about(state: &BodyState, mass: &MassProperties, point: DVec2) -> f64 {
     mass.mass() * (state.linear.position - point).perp_dot(state.linear.velocity)
         + mass.inertia() * state.angular.angular_velocity

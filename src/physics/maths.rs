@@ -5,7 +5,7 @@
 //! trajectory. The avian and rapier crates do the same with their `enhanced-determinism`.
 //! `sqrt` needs no such care: IEEE 754 rounds it exactly everywhere.
 
-/// (sin x, cos x).
+/// Returns (sin x, cos x).
 pub fn sin_cos(x: f64) -> (f64, f64) {
     libm::sincos(x)
 }
@@ -14,12 +14,12 @@ pub fn exp(x: f64) -> f64 {
     libm::exp(x)
 }
 
-/// The natural logarithm.
+/// Returns the natural logarithm of x.
 pub fn ln(x: f64) -> f64 {
     libm::log(x)
 }
 
-/// x to the power y.
+/// Raises x to the power y.
 pub fn powf(x: f64, y: f64) -> f64 {
     libm::pow(x, y)
 }

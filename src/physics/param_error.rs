@@ -35,7 +35,9 @@ impl ParamError {
             })
         }
     }
-    /// `value` within `range` (a finite number, ends included); the requirement names the ends.
+    /// Checks that `value` lies within `range` (a finite number, ends included).
+    ///
+    /// The error's requirement names the ends.
     pub fn check_within(field: &'static str, value: f64, range: &Range) -> Result<(), Self> {
         if range.contains(value) {
             Ok(())
@@ -62,12 +64,12 @@ impl Range {
         Self { low, high, unit }
     }
 
-    /// Whether `value` lies in it (never for NaN).
+    /// Tells whether `value` lies in the range (never for NaN).
     pub fn contains(&self, value: f64) -> bool {
         self.low <= value && value <= self.high
     }
 
-    /// `value` brought inside (NaN to the low end).
+    /// Brings `value` inside the range (NaN to the low end).
     pub fn clamp(&self, value: f64) -> f64 {
         if value.is_nan() {
             self.low
@@ -77,9 +79,10 @@ impl Range {
     }
 }
 
-/// A number written whole: plain in the usual range (20, 0.05, 4096), in powers of ten beyond
-/// it (1e5, 1e-3); either way every bit of it, so that it reads back the same (a range's ends,
-/// a link's values).
+/// Writes a number whole: every bit of it, so that it reads back the same.
+///
+/// It is plain in the usual range (20, 0.05, 4096), in powers of ten beyond it (1e5, 1e-3).
+/// A range's ends and a link's values are written so.
 pub fn exact(value: f64) -> String {
     if value == 0.0 || (1e-2..1e5).contains(&value.abs()) {
         format!("{value}")

@@ -9,8 +9,9 @@ use super::forces::{BandEnds, ForceModel};
 use super::maths;
 use super::param_error::{ParamError, Range};
 
-/// The tutorial runs one update per frame at this rate; its per-frame constants convert to
-/// per-second ones through it.
+/// The tutorial's frame rate: it runs one update per frame at this rate.
+///
+/// Its per-frame constants convert to per-second ones through it.
 pub const TUTORIAL_FRAME_RATE: f64 = 100.0;
 
 /// The tutorial's screen, in world units. The camera keeps it in view at any window size.
@@ -19,9 +20,11 @@ pub const SCENE_SIZE: DVec2 = DVec2::new(640.0, 480.0);
 /// The tutorial's angular damping: ω is multiplied by this every frame.
 pub const TUTORIAL_ANGULAR_FACTOR: f64 = 0.98;
 
-/// The ranges the game keeps. Its controls stay inside them, and every other way into the game
-/// (`play`'s flags, a replay opened, a link) is held to them ([`SceneParams::check_playable`]).
-/// The panel's sliders span them; docs/links.md lists them.
+/// The ranges the game keeps: this one, the step rate's, and those that follow.
+///
+/// The game's controls stay inside them, and every other way into the game (`play`'s flags, a
+/// replay opened, a link) is held to them ([`SceneParams::check_playable`]). The panel's sliders
+/// span them; docs/links.md lists them.
 pub const STEP_RATE_RANGE: Range = Range::new(8.0, 4096.0, "Hz");
 pub const STIFFNESS_RANGE: Range = Range::new(1e-2, 1e12, "");
 pub const MASS_RANGE: Range = Range::new(1e-3, 1e3, "");
@@ -34,9 +37,11 @@ pub const ANGULAR_DAMPING_RANGE: Range = Range::new(0.0, 20.0, "/s");
 /// How fast the game's clock runs against the wall's: slow motion to fast forward.
 pub const TIME_SCALE_RANGE: Range = Range::new(1.0 / 16.0, 16.0, "");
 
-/// The shortest step anything takes, the game or not (`simulate` and `report` keep wider
-/// ranges than the game for convergence studies): no clock keeps a shorter one, and a replay
-/// or a command line asking for it is refused. Bevy's fixed clock counts whole nanoseconds.
+/// The shortest step anything takes, the game or not.
+///
+/// `simulate` and `report` keep wider ranges than the game for convergence studies, but no
+/// clock keeps a shorter step, and a replay or a command line asking for one is refused.
+/// Bevy's fixed clock counts whole nanoseconds.
 pub const MIN_STEP: f64 = 1e-6;
 
 /// Physical parameters of the scene, in world units (logical pixels, seconds, mass units).
@@ -57,7 +62,8 @@ pub struct SceneParams {
 }
 
 impl SceneParams {
-    /// The tutorial's scene converted from its per-frame units at 100 frames per second:
+    /// Returns the tutorial's scene, converted from its per-frame units at 100 frames per second.
+    ///
     /// k = 0.002 /frame² → 20, b = 0.05 /frame → 5, ω·0.98 per frame → c = −ln(0.98)·100.
     pub fn tutorial() -> Self {
         let f = TUTORIAL_FRAME_RATE;
@@ -71,14 +77,15 @@ impl SceneParams {
         }
     }
 
-    /// The fixed step in seconds.
+    /// Returns the fixed step in seconds.
     pub fn dt(&self) -> f64 {
         1.0 / self.step_rate_hz
     }
 
-    /// Checks every field: mass, size and step rate finite and positive, the step no shorter
-    /// than [`MIN_STEP`]; k, b and c finite and not negative. The error names the first bad
-    /// field and its value.
+    /// Checks every field; the error names the first bad field and its value.
+    ///
+    /// Mass, size and step rate must be finite and positive, the step no shorter than
+    /// [`MIN_STEP`]; k, b and c finite and not negative.
     pub fn validate(&self) -> Result<(), ParamError> {
         self.mass_properties()?;
         ParamError::check_positive("step rate", self.step_rate_hz)?;
@@ -93,9 +100,10 @@ impl SceneParams {
         Ok(())
     }
 
-    /// Checks every field as [`validate`](Self::validate) does, then against the game's ranges
-    /// (the controls' own): the error names the first field outside and the range it must lie
-    /// in.
+    /// Checks every field as [`validate`](Self::validate) does, then against the game's ranges.
+    ///
+    /// The game's ranges are the controls' own. The error names the first field outside and the
+    /// range it must lie in.
     pub fn check_playable(&self) -> Result<(), ParamError> {
         self.validate()?;
         ParamError::check_within("step rate", self.step_rate_hz, &STEP_RATE_RANGE)?;
@@ -115,7 +123,7 @@ impl SceneParams {
         )
     }
 
-    /// The force laws of this scene acting on a body, with or without a band.
+    /// Returns the force laws of this scene acting on a body, with or without a band.
     pub fn force_model(&self, mass: MassProperties, band: Option<BandEnds>) -> ForceModel {
         ForceModel {
             mass,
@@ -126,7 +134,7 @@ impl SceneParams {
         }
     }
 
-    /// The box's mass properties; fails on a bad mass or size.
+    /// Returns the box's mass properties; fails on a bad mass or size.
     pub fn mass_properties(&self) -> Result<MassProperties, ParamError> {
         MassProperties::rectangle(self.mass, self.size)
     }

@@ -12,8 +12,9 @@ use super::param_error::ParamError;
 use super::scene::SceneParams;
 use super::stepper::Stepper;
 
-/// During steps `start <= s < end` the band pulls toward `target`, attached at the step
-/// `start` to the corner nearest `target`.
+/// A pull of the band toward `target` during steps `start <= s < end`.
+///
+/// The band is attached at the step `start` to the corner nearest `target`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Pull {
     pub start: u64,
@@ -22,7 +23,7 @@ pub struct Pull {
 }
 
 impl Pull {
-    /// The pull acting during step `step` (the latest one started, if pulls overlap).
+    /// Finds the pull acting during step `step` (the latest one started, if pulls overlap).
     pub fn active(pulls: &[Pull], step: u64) -> Option<usize> {
         pulls
             .iter()
@@ -30,8 +31,10 @@ impl Pull {
     }
 }
 
-/// The pulls of a scripted run, in steps, and which one acts: [`Run`] and the peers' runs
-/// follow the same schedule, so they attach and release at the same steps.
+/// The pulls of a scripted run, in steps, and which one acts.
+///
+/// [`Run`] and the peers' runs follow the same schedule, so they attach and release at the same
+/// steps.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PullSchedule {
     pulls: Vec<Pull>,
@@ -55,7 +58,7 @@ impl PullSchedule {
         }
     }
 
-    /// What must change before step `step`; `None` while the same pull (or none) goes on.
+    /// Returns what must change before step `step`; `None` while the same pull (or none) goes on.
     pub fn change_at(&mut self, step: u64) -> Option<BandChange> {
         let current = Pull::active(&self.pulls, step);
         if current == self.active {
@@ -68,8 +71,9 @@ impl PullSchedule {
     }
 }
 
-/// A named scene: parameters, initial state and pulls given in seconds, so that the same
-/// scene can be run at any step.
+/// A named scene: parameters, initial state and pulls given in seconds.
+///
+/// The pulls are in seconds, not steps, so that the same scene can be run at any step.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     pub name: &'static str,
@@ -181,7 +185,7 @@ impl Scene {
         })
     }
 
-    /// The pulls in steps of `dt`.
+    /// Converts the pulls into steps of `dt`.
     pub fn pulls_in_steps(&self, dt: f64) -> Vec<Pull> {
         let to_step = |t: f64| {
             if t.is_finite() {
@@ -218,12 +222,15 @@ impl fmt::Display for UnknownScene {
 impl std::error::Error for UnknownScene {}
 
 /// How far above the physically reachable energy a run may go before it counts as diverged.
+///
 /// With damping b, c >= 0 and a fixed anchor the energy can only fall, so the reachable
 /// energy is the initial energy plus the band's energy at each attachment.
 pub const DIVERGENCE_FACTOR: f64 = 1e3;
 
-/// A run blew up: its state left [`super::body::STATE_LIMIT`] (or became non-finite), or its
-/// energy left every physical bound.
+/// A run that blew up: its state or its energy went out of bounds.
+///
+/// Its state left [`super::body::STATE_LIMIT`] (or became non-finite), or its energy left every
+/// physical bound.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Diverged {
     pub integrator: Integrator,
@@ -349,9 +356,11 @@ impl Run {
         }
     }
 
-    /// One step. A step that leaves the state not sane or its energy beyond every physical
-    /// bound is refused, as the game refuses it: `Err` names it (the first such step), and the
-    /// run stays as it was before it (the last sane state, its books and counters).
+    /// Advances the run by one step, refusing a step that diverges.
+    ///
+    /// A step that leaves the state not sane or its energy beyond every physical bound is
+    /// refused, as the game refuses it: `Err` names it (the first such step), and the run stays
+    /// as it was before it (the last sane state, its books and counters).
     pub fn advance(&mut self) -> Result<(), Diverged> {
         let before = self.stepper.state;
         let info = self.stepper.step(self.dt);
@@ -375,7 +384,7 @@ impl Run {
         Ok(())
     }
 
-    /// `steps` more steps, or the divergence that stopped them.
+    /// Advances the run by `steps` more steps, or returns the divergence that stopped them.
     pub fn advance_by(&mut self, steps: u64) -> Result<(), Diverged> {
         for _ in 0..steps {
             self.advance()?;

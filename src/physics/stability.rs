@@ -36,7 +36,7 @@ pub struct Mode {
     pub damping: f64,
 }
 
-/// ω of the band's stiffest mode for a band of stiffness `k` on a box of mass `m`.
+/// Returns ω of the band's stiffest mode for a band of stiffness `k` on a box of mass `m`.
 pub fn omega_at(k: f64, m: f64) -> f64 {
     2.0 * (k / m).sqrt()
 }
@@ -51,12 +51,14 @@ impl Mode {
     }
 }
 
-/// A spectral radius up to this far above 1 is rounding, not growth: a symplectic method's
-/// is 1 on the nose in exact arithmetic.
+/// A spectral radius up to this far above 1 is rounding, not growth.
+///
+/// A symplectic method's is 1 on the nose in exact arithmetic.
 const GROWTH: f64 = 1e-9;
 
-/// The spectral radius of one step of `integrator` on the band's stiffest mode at `params`
-/// and step `dt` (NaN if a step leaves the numbers).
+/// Computes the spectral radius of one step of `integrator` on the band's stiffest mode.
+///
+/// The mode is the one at `params`, the step is `dt` (NaN if a step leaves the numbers).
 pub fn spectral_radius(
     integrator: Integrator,
     params: &SceneParams,
@@ -105,7 +107,7 @@ pub fn spectral_radius(
     }
 }
 
-/// Whether `integrator` holds the band's stiffest mode at `params` and `dt`.
+/// Tells whether `integrator` holds the band's stiffest mode at `params` and `dt`.
 pub fn holds(integrator: Integrator, params: &SceneParams, dt: f64, auto: &AutoSettings) -> bool {
     spectral_radius(integrator, params, dt, auto) <= 1.0 + GROWTH
 }
@@ -125,9 +127,10 @@ pub enum Limit {
 pub const SOFTEST: f64 = 1e-2;
 pub const STIFFEST: f64 = 1e12;
 
-/// The stiffest k that `integrator` holds at `params`' mass and damping and step `dt`: a scan
-/// up by quarter decades to the first k that fails, then a bisection between it and the last
-/// that held (on this linear mode the stable ks form one interval from zero).
+/// Finds the stiffest k that `integrator` holds at `params`' mass and damping and step `dt`.
+///
+/// It scans up by quarter decades to the first k that fails, then bisects between it and the
+/// last that held (on this linear mode the stable ks form one interval from zero).
 pub fn stiffest_held(
     integrator: Integrator,
     params: &SceneParams,
@@ -183,7 +186,7 @@ pub struct Margin {
     pub limit_omega_dt: Option<f64>,
 }
 
-/// Every integrator's margin at `params` (its step rate gives the step).
+/// Returns every integrator's margin at `params` (its step rate gives the step).
 pub fn margins(params: &SceneParams, auto: &AutoSettings) -> Vec<Margin> {
     let dt = 1.0 / params.step_rate_hz;
     let omega_dt = Mode::of(params).omega * dt;

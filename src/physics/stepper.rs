@@ -22,7 +22,7 @@ pub struct Stepper {
 }
 
 impl Stepper {
-    /// The box at rest at the origin, no band.
+    /// Builds a stepper with the box at rest at the origin and no band.
     pub fn new(params: SceneParams) -> Result<Self, ParamError> {
         params.validate()?;
         Ok(Self {
@@ -44,12 +44,12 @@ impl Stepper {
         self.band = None;
     }
 
-    /// Every force law acting on the box now.
+    /// Returns every force law acting on the box now.
     pub fn model(&self) -> ForceModel {
         self.params.force_model(self.mass, self.band)
     }
 
-    /// One step of `dt` seconds with the chosen integrator.
+    /// Advances the box one step of `dt` seconds with the chosen integrator.
     pub fn step(&mut self, dt: f64) -> StepInfo {
         let model = self.model();
         let start = model.forces(&self.state);
@@ -57,7 +57,7 @@ impl Stepper {
             .step_with(&mut self.state, &model, start, dt, &self.auto)
     }
 
-    /// Kinetic plus band energy.
+    /// Returns the kinetic plus band energy.
     pub fn energy(&self) -> f64 {
         self.model().energy(&self.state)
     }

@@ -16,8 +16,10 @@ use crate::physics::{
 pub const FORMAT: &str = "rubber-band-box replay";
 /// The format version this build writes and reads.
 pub const VERSION: u32 = 1;
-/// The most steps a replay holds: 3 million is 8 hours at 100 Hz, 12 minutes at 4096 Hz,
-/// under 150 MB in memory (a record is 48 bytes). A recording stops there.
+/// The most steps a replay holds; a recording stops there.
+///
+/// 3 million is 8 hours at 100 Hz, 12 minutes at 4096 Hz, under 150 MB in memory (a record is
+/// 48 bytes).
 pub const MAX_STEPS: u64 = 3_000_000;
 /// The longest line a reader accepts (a header is about 400 bytes, a step at most about 120).
 pub const MAX_LINE_BYTES: usize = 4096;
@@ -52,8 +54,9 @@ pub struct Settings {
     pub angular_damping: f64,
     /// The step rate the player chose.
     pub step_rate_hz: f64,
-    /// The step the fixed clock took for it, in seconds (the clock counts whole nanoseconds,
-    /// so 60 Hz steps 0.016666667 s).
+    /// The step the fixed clock took for it, in seconds.
+    ///
+    /// The clock counts whole nanoseconds, so 60 Hz steps 0.016666667 s.
     pub dt: f64,
     #[serde(with = "integrator_name")]
     pub integrator: Integrator,
@@ -85,8 +88,9 @@ impl Settings {
         }
     }
 
-    /// Every field in its domain (as `SceneParams::validate`), and a step no shorter than
-    /// [`MIN_STEP`]: what `simulate --replay` accepts.
+    /// Checks that every field is in its domain, and the step no shorter than [`MIN_STEP`].
+    ///
+    /// The domains are `SceneParams::validate`'s; `simulate --replay` accepts what passes.
     pub fn validate(&self) -> Result<(), ParamError> {
         self.params().validate()?;
         ParamError::check_positive("dt", self.dt)?;
@@ -97,8 +101,10 @@ impl Settings {
         )
     }
 
-    /// Every field in the game's ranges (`SceneParams::check_playable`), and the step one the
-    /// game's clock takes at a rate in its range: what the game plays.
+    /// Checks that the settings are ones the game plays.
+    ///
+    /// Every field must be in the game's ranges (`SceneParams::check_playable`), and the step one
+    /// the game's clock takes at a rate in its range.
     pub fn check_playable(&self) -> Result<(), ParamError> {
         self.validate()?;
         self.params().check_playable()?;
@@ -147,8 +153,9 @@ impl From<AutoRecord> for AutoSettings {
 pub enum Record {
     /// Before step `step`: the scene back at its start, no band (the reset control).
     Reset { step: u64 },
-    /// From step `step` on, these settings (a control changed one of them). Boxed: rare, and
-    /// larger than a step, which would otherwise pay for it in memory.
+    /// From step `step` on, these settings (a control changed one of them).
+    ///
+    /// Boxed: rare, and larger than a step, which would otherwise pay for it in memory.
     Settings { step: u64, settings: Box<Settings> },
     /// Step `step` (counted from 1) ran with this band, or none.
     Step {
@@ -156,8 +163,10 @@ pub enum Record {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         band: Option<BandRecord>,
     },
-    /// The last line: how many steps the file holds and the hash of the states the game had
-    /// after each ([`TrajectoryHash`], 16 hex digits).
+    /// The last line: how many steps the file holds, and the hash of the states.
+    ///
+    /// The hash is of the states the game had after each step ([`TrajectoryHash`], 16 hex
+    /// digits).
     End { steps: u64, hash: String },
 }
 
@@ -187,8 +196,9 @@ impl From<BandRecord> for BandEnds {
     }
 }
 
-/// FNV-1a over the bits of every step's state, in order: equal hashes mean, but for a
-/// collision, equal trajectories to the last bit.
+/// FNV-1a over the bits of every step's state, in order.
+///
+/// Equal hashes mean, but for a collision, equal trajectories to the last bit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct TrajectoryHash(pub u64);
 
@@ -222,13 +232,14 @@ pub struct Replay {
     pub steps: u64,
     /// The hash of the states after each step, as the recorder saw them.
     pub hash: TrajectoryHash,
-    /// The settings after every record so far: kept, not searched for, because the recorder
-    /// asks at every step.
+    /// The settings after every record so far.
+    ///
+    /// They are kept, not searched for, because the recorder asks at every step.
     pub(super) in_force: Settings,
 }
 
 impl Replay {
-    /// An empty recording of a game starting with these settings.
+    /// Returns an empty recording of a game starting with these settings.
     pub fn start(scene: &str, settings: Settings, auto: AutoSettings, initial: BodyState) -> Self {
         Self::with_header(Header {
             format: FORMAT.to_owned(),
@@ -241,7 +252,7 @@ impl Replay {
         })
     }
 
-    /// No records yet.
+    /// Returns a replay with this header and no records yet.
     pub(super) fn with_header(header: Header) -> Self {
         Self {
             in_force: header.settings,
@@ -252,24 +263,24 @@ impl Replay {
         }
     }
 
-    /// Whether another step fits ([`MAX_STEPS`]).
+    /// Tells whether the replay is full, so that no other step fits ([`MAX_STEPS`]).
     pub fn is_full(&self) -> bool {
         self.steps >= MAX_STEPS
     }
 
-    /// The settings in force after every record so far.
+    /// Returns the settings in force after every record so far.
     pub fn current_settings(&self) -> Settings {
         self.in_force
     }
 
-    /// Before the next step: the scene was reset.
+    /// Records that the scene was reset before the next step.
     pub fn push_reset(&mut self) {
         self.records.push(Record::Reset {
             step: self.steps + 1,
         });
     }
 
-    /// Before the next step: these settings, if they differ from those in force.
+    /// Records these settings before the next step, if they differ from those in force.
     pub fn push_settings(&mut self, settings: Settings) {
         if settings != self.in_force {
             self.in_force = settings;
@@ -280,7 +291,7 @@ impl Replay {
         }
     }
 
-    /// The next step ran with `band` and left the body in `after`.
+    /// Records that the next step ran with `band` and left the body in `after`.
     pub fn push_step(&mut self, band: Option<BandEnds>, after: &BodyState) {
         self.steps += 1;
         self.records.push(Record::Step {
@@ -305,7 +316,7 @@ impl Replay {
         out.flush()
     }
 
-    /// The file as bytes.
+    /// Returns the file as bytes.
     pub fn to_bytes(&self) -> Vec<u8> {
         let mut bytes = Vec::new();
         // Writing to memory cannot fail.
@@ -313,7 +324,7 @@ impl Replay {
         bytes
     }
 
-    /// A stepper at the start of the replay: its settings, its initial state, no band.
+    /// Returns a stepper at the start of the replay: its settings, its initial state, no band.
     pub fn stepper(&self) -> Result<Stepper, ParamError> {
         let settings = self.header.settings;
         let mut stepper = Stepper::new(settings.params())?;
@@ -324,7 +335,7 @@ impl Replay {
     }
 }
 
-/// One record as a line of JSON: serialising these plain structs cannot fail.
+/// Returns one record as a line of JSON: serialising these plain structs cannot fail.
 pub(super) fn json_line(value: &impl Serialize) -> String {
     serde_json::to_string(value).unwrap_or_default()
 }

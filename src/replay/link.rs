@@ -17,8 +17,9 @@ use crate::physics::{
 
 /// The link format's version, written as `v=1`. A link without `v` is read as version 1.
 pub const LINK_VERSION: u32 = 1;
-/// The longest fragment read or written: about what a browser keeps in its address bar
-/// (Chromium's limit is 2 MB).
+/// The longest fragment read or written: about what a browser keeps in its address bar.
+///
+/// Chromium's limit is 2 MB.
 pub const MAX_FRAGMENT_BYTES: usize = 2 << 20;
 /// The most bytes a fragment may inflate to: a compressed fragment cannot ask for more memory.
 pub const MAX_INFLATED_BYTES: usize = 64 << 20;
@@ -83,7 +84,7 @@ impl Key {
         }
     }
 
-    /// What it sets (docs/links.md's table).
+    /// Returns what the key sets (docs/links.md's table).
     pub fn meaning(self) -> &'static str {
         match self {
             Self::Version => "the link format's version",
@@ -104,7 +105,9 @@ impl Key {
         }
     }
 
-    /// The values it takes (docs/links.md's table), from the core's own lists and ranges.
+    /// Returns the values the key takes (docs/links.md's table).
+    ///
+    /// They come from the core's own lists and ranges.
     pub fn values(self) -> String {
         match self {
             Self::Version => LINK_VERSION.to_string(),
@@ -120,7 +123,7 @@ impl Key {
         }
     }
 
-    /// Its default: what the game starts with when the key is absent.
+    /// Returns the key's default: what the game starts with when the key is absent.
     pub fn default_value(self) -> String {
         let tutorial = SceneParams::tutorial();
         match self {
@@ -139,7 +142,7 @@ impl Key {
         }
     }
 
-    /// The range a number must lie in: the game's own (`physics::scene`).
+    /// Returns the range a number must lie in: the game's own (`physics::scene`).
     pub fn range(self) -> Option<Range> {
         match self {
             Self::Stiffness => Some(STIFFNESS_RANGE),
@@ -202,9 +205,10 @@ impl fmt::Display for LinkProblem {
 }
 
 impl Link {
-    /// Reads a link: a whole address (`https://.../?k=1e5#replay=...`), its query and fragment
-    /// (`?k=1e5#replay=...`), or a bare query (`k=1e5&rate=64`). Every key it cannot take is a
-    /// problem, named, and the rest is kept.
+    /// Reads a link, naming every key it cannot take as a problem and keeping the rest.
+    ///
+    /// A link is a whole address (`https://.../?k=1e5#replay=...`), its query and fragment
+    /// (`?k=1e5#replay=...`), or a bare query (`k=1e5&rate=64`).
     pub fn parse(address: &str) -> (Self, Vec<LinkProblem>) {
         let mut link = Self::default();
         let mut problems = Vec::new();
@@ -243,7 +247,7 @@ impl Link {
         (link, problems)
     }
 
-    /// One key and its value put in place, or why not.
+    /// Puts one key and its value in place, or says why not.
     fn take(&mut self, name: &str, value: &str) -> Result<(), String> {
         let Some(key) = Key::named(name) else {
             return Err("not a key this build knows: ignored".to_owned());
@@ -298,7 +302,7 @@ impl Link {
         Ok(())
     }
 
-    /// The keys a link with a replay ignores: the replay sets the scene and its settings.
+    /// Returns the keys a link with a replay ignores: the replay sets the scene and its settings.
     pub fn settings_keys(&self) -> Vec<&'static str> {
         [
             (self.scene.is_some(), Key::Scene),
@@ -316,9 +320,10 @@ impl Link {
         .collect()
     }
 
-    /// The query and fragment (`?v=1&...#replay=...`), each key the link sets in
-    /// [`Key::ALL`]'s order; [`Link::parse`] reads it back to the same link. A replay too long
-    /// for a link ([`MAX_FRAGMENT_BYTES`]) is refused.
+    /// Writes the link's query and fragment (`?v=1&...#replay=...`).
+    ///
+    /// Each key the link sets comes in [`Key::ALL`]'s order; [`Link::parse`] reads it back to the
+    /// same link. A replay too long for a link ([`MAX_FRAGMENT_BYTES`]) is refused.
     pub fn to_query(&self) -> Result<String, String> {
         let mut pairs = vec![format!("v={LINK_VERSION}")];
         let mut put = |key: Key, value: Option<String>| {
@@ -361,14 +366,15 @@ impl Link {
     }
 }
 
-/// A replay as a fragment's data: its file deflated (level 9), in base64url without padding.
+/// Encodes a replay as a fragment's data: its file deflated (level 9), in unpadded base64url.
 pub fn encode_replay(replay: &Replay) -> String {
     let deflated = miniz_oxide::deflate::compress_to_vec(&replay.to_bytes(), 9);
     BASE64URL_NOPAD.encode(&deflated)
 }
 
-/// A fragment's data back to a replay, read and checked as a file is, then held to the game's
-/// ranges (`Replay::check_playable`).
+/// Decodes a fragment's data back to a replay, read and checked as a file is.
+///
+/// The replay is then held to the game's ranges (`Replay::check_playable`).
 pub fn decode_replay(data: &str) -> Result<Replay, String> {
     if data.len() > MAX_FRAGMENT_BYTES {
         return Err(format!(
@@ -386,7 +392,7 @@ pub fn decode_replay(data: &str) -> Result<Replay, String> {
     Ok(replay)
 }
 
-/// `%41` and `+` as a browser writes them, back to text (a bad escape is kept as written).
+/// Decodes `%41` and `+` as a browser writes them (a bad escape is kept as written).
 fn decode(text: &str) -> String {
     let bytes = text.as_bytes();
     let mut out = Vec::with_capacity(bytes.len());

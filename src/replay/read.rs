@@ -48,9 +48,10 @@ impl Replay {
         Self::read(bytes)
     }
 
-    /// Reads and checks a replay file: the message names the file, and the line if it is bad.
-    /// Whether the game can play it: the header's settings and every settings record in the
-    /// game's ranges (`Settings::check_playable`). The message names the line and the field.
+    /// Checks whether the game can play the replay.
+    ///
+    /// The header's settings and every settings record must be in the game's ranges
+    /// (`Settings::check_playable`). The message names the line and the field.
     pub fn check_playable(&self) -> Result<(), ReplayError> {
         let at = |line: usize, error: crate::physics::ParamError| {
             ReplayError::at(line, format!("settings: {error} (the game's range)"))
@@ -68,6 +69,7 @@ impl Replay {
         Ok(())
     }
 
+    /// Reads and checks a replay file: the message names the file, and the line if it is bad.
     #[cfg(not(target_arch = "wasm32"))]
     pub fn read_file(path: &std::path::Path) -> Result<Self, String> {
         let in_file = |message: String| format!("{}: {message}", path.display());
@@ -109,8 +111,10 @@ impl std::error::Error for ReplayError {}
 struct Reader {
     replay: Option<Replay>,
     end: Option<(u64, String)>,
-    /// Whether the next step already has its reset, its settings (the recorder writes at most
-    /// one of each before a step, so a file cannot grow without steps).
+    /// Whether the next step already has its reset (and, in `settings_noted`, its settings).
+    ///
+    /// The recorder writes at most one of each before a step, so a file cannot grow without
+    /// steps.
     reset_noted: bool,
     settings_noted: bool,
 }

@@ -57,8 +57,10 @@ impl<'a> ReplayRun<'a> {
         })
     }
 
-    /// Each recorded step taken as `substeps` equal steps with the same band: the same hand
-    /// at a step rate that many times the recorded one (the report's sweep).
+    /// Splits each recorded step into `substeps` equal steps with the same band.
+    ///
+    /// The hand is the same, at a step rate that many times the recorded one (the report's
+    /// sweep).
     pub fn subdivided(mut self, substeps: u32) -> Self {
         self.substeps = substeps.max(1);
         self
@@ -94,7 +96,7 @@ impl<'a> ReplayRun<'a> {
         }
     }
 
-    /// One step as the game's fixed step takes it.
+    /// Takes one step as the game's fixed step takes it.
     fn step_with(&mut self, band: Option<BandEnds>) -> StepInfo {
         self.stepper.band = band;
         self.ledger.open_step(self.settled, self.stepper.energy());
@@ -123,12 +125,12 @@ impl<'a> ReplayRun<'a> {
         info
     }
 
-    /// The ledger's residual after the latest step: the integrator's energy error.
+    /// Returns the ledger's residual after the latest step: the integrator's energy error.
     pub fn residual(&self) -> f64 {
         self.ledger.residual(self.stepper.energy())
     }
 
-    /// Plays every remaining step; the hash of all the states.
+    /// Plays every remaining step and returns the hash of all the states.
     pub fn finish(&mut self) -> TrajectoryHash {
         while self.advance().is_some() {}
         self.hash

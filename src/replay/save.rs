@@ -20,8 +20,9 @@ impl std::fmt::Display for SaveError {
 
 impl std::error::Error for SaveError {}
 
-/// Writes `path` through `write`, atomically: the old file (if any) stays whole until the new
-/// one is complete.
+/// Writes `path` through `write`, atomically.
+///
+/// The old file (if any) stays whole until the new one is complete.
 pub fn write_atomically(
     path: &Path,
     write: impl FnOnce(&mut File) -> io::Result<()>,

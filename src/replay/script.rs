@@ -8,14 +8,17 @@ use crate::physics::{AutoSettings, BandEnds, Integrator, ParamError, Scene};
 use super::run::ReplayRun;
 use super::{Replay, Settings};
 
-/// How long a scene's script runs after its last release, or in all when a pull is held: the
-/// band then stays where the script left it, as a held pull would.
+/// How long a scene's script runs after its last release, or in all when a pull is held.
+///
+/// The band then stays where the script left it, as a held pull would.
 pub const SCRIPT_TAIL_SECONDS: f64 = 1.0;
 pub const HELD_SECONDS: f64 = 5.0;
 
-/// `scene` at step `dt` with `integrator`: the pulls in steps, each band grabbing the
-/// corner nearest its target when it starts, and the recorded hash the core's own stepping
-/// of it (the game must step to it: [`crate::game::replays::playback::PlaybackEnd`]).
+/// Builds the replay of `scene` at step `dt` with `integrator`.
+///
+/// The pulls are in steps, each band grabbing the corner nearest its target when it starts,
+/// and the recorded hash is the core's own stepping of it (the game must step to it:
+/// [`crate::game::replays::playback::PlaybackEnd`]).
 pub fn scene_replay(
     scene: &Scene,
     dt: f64,

@@ -22,9 +22,10 @@ impl Plugin for EnergyHistoryPlugin {
     }
 }
 
-/// The energies over the last [`EnergyHistory::SPAN`] seconds of simulated time, for the
-/// graph: at most [`EnergyHistory::SAMPLES`] samples whatever the step rate. A reset starts
-/// it over, and the HUD's clock from it.
+/// The energies over the last [`EnergyHistory::SPAN`] seconds of simulated time, for the graph.
+///
+/// It holds at most [`EnergyHistory::SAMPLES`] samples whatever the step rate. A reset starts it
+/// over, and the HUD's clock from it.
 #[derive(Resource, Debug, Default, Clone)]
 pub struct EnergyHistory {
     pub samples: VecDeque<(f64, Energies)>,

@@ -52,9 +52,11 @@ const TEXT_COLOUR: Color = colour::TEXT;
 const DIM_COLOUR: Color = colour::DIM;
 const WARNING_COLOUR: Color = colour::WARNING;
 
-/// One line of the HUD. Each is a `Text` entity whose content [`HudLine::text`] writes, in
-/// the region [`HudLine::slot`] names; the ghosts' table is a grid of cells of its own
-/// ([`ghost_table`]), its text the same cells a row a line.
+/// One line of the HUD.
+///
+/// Each is a `Text` entity whose content [`HudLine::text`] writes, in the region [`HudLine::slot`]
+/// names; the ghosts' table is a grid of cells of its own ([`ghost_table`]), its text the same
+/// cells a row a line.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 pub enum HudLine {
     /// Over the scene: what a player must always see.
@@ -99,8 +101,9 @@ impl HudLine {
         HudLine::Help,
     ];
 
-    /// Where the line lies: the status over the scene, the hint under it, the rest in the
-    /// dock's cards.
+    /// Returns where the line lies.
+    ///
+    /// The status lies over the scene, the hint under it, the rest in the dock's cards.
     fn slot(self) -> Slot {
         match self {
             HudLine::Status => Slot::Status,
@@ -123,7 +126,7 @@ impl HudLine {
         }
     }
 
-    /// The line's size and face: figures of one width where numbers stand in columns.
+    /// Returns the line's size and face: figures of one width where numbers stand in columns.
     fn font(self) -> TextFont {
         match self {
             HudLine::Status => theme::text_font(size::TITLE),
@@ -136,7 +139,7 @@ impl HudLine {
         }
     }
 
-    /// The line's colour: the energy lines in their graph colours (the graph's legend).
+    /// Returns the line's colour: the energy lines in their graph colours (the graph's legend).
     pub fn colour(self, readings: &HudReadings) -> Color {
         match self {
             HudLine::KineticLinear | HudLine::KineticRotational => KINETIC_COLOUR,
@@ -252,8 +255,9 @@ impl HudLine {
     }
 }
 
-/// How long the hint line says the latest status (a save, a value refused, a link left in
-/// part), in seconds of the wall's clock.
+/// How long the hint line says the latest status, in seconds of the wall's clock.
+///
+/// The status may be a save, a value refused or a link left in part.
 pub const NEWS_SECONDS: f64 = 10.0;
 
 /// The latest status and when it came, by the wall's clock.
@@ -266,8 +270,9 @@ struct News {
 /// The hint under the scene: how to play, in a line a phone can hold.
 pub const HINT: &str = "drag: pull the box · wheel or pinch: zoom · F: frame · H: instruments";
 
-/// The status over the scene: the integrator, k, the step rate, the time scale, the clock;
-/// paused or diverged said.
+/// Writes the status over the scene: the integrator, k, the step rate, the time scale, the clock.
+///
+/// It says so when paused or diverged.
 fn status_line(r: &HudReadings) -> String {
     let mut line = format!(
         "{} · k {} · {} Hz · time ×{} · t {:.1} s",
@@ -291,9 +296,10 @@ const GHOST_COLUMNS: [&str; 6] = [
     "method", "error px", "energy", "ns/step", "evals", "holds k",
 ];
 
-/// The ghosts' table: a header and a row per ghost, each cell its text (a row's cells read
-/// left to right): the ghost's distance from the reference, its energy residual, its time
-/// and work per step, and the stiffest band its method holds at this step. Empty while the
+/// Returns the ghosts' table: a header and a row per ghost, each cell its text.
+///
+/// A row's cells read left to right: the ghost's distance from the reference, its energy residual,
+/// its time and work per step, and the stiffest band its method holds at this step. Empty while the
 /// ghosts are off.
 fn ghost_table(r: &HudReadings) -> Vec<[String; 6]> {
     if r.ghosts.is_empty() {
@@ -340,8 +346,9 @@ fn ghost_table(r: &HudReadings) -> Vec<[String; 6]> {
     rows
 }
 
-/// The table as text, a row a line, its cells two spaces apart (what a test or a terminal
-/// reads).
+/// Writes the table as text, a row a line, its cells two spaces apart.
+///
+/// A test or a terminal reads it.
 fn ghost_lines(r: &HudReadings) -> String {
     ghost_table(r)
         .iter()
@@ -356,8 +363,9 @@ fn ghost_lines(r: &HudReadings) -> String {
         .join("\n")
 }
 
-/// The live integrator's margin, said in full: ω·dt now against the method's limit at this
-/// damping, and the stiffest band it holds.
+/// Writes out the live integrator's margin in full.
+///
+/// It gives ω·dt now against the method's limit at this damping, and the stiffest band it holds.
 fn stability_text(margin: &Margin) -> String {
     let now = format!("{} at ω·dt {:.2}", margin.integrator, margin.omega_dt);
     match margin.stiffest {
@@ -374,7 +382,7 @@ fn stability_text(margin: &Margin) -> String {
     }
 }
 
-/// A ghost's margin, short: whether it holds the band and up to which k.
+/// Writes a ghost's margin, short: whether it holds the band and up to which k.
 fn stability_short(margin: &Margin) -> String {
     match (margin.stiffest, margin.holds) {
         (Limit::Any, _) => "any k".to_owned(),
@@ -384,7 +392,7 @@ fn stability_short(margin: &Margin) -> String {
     }
 }
 
-/// A number as a person reads it: whole below 10⁴, two digits in powers of ten above.
+/// Writes a number as a person reads it: whole below 10⁴, two digits in powers of ten above.
 fn number(value: f64) -> String {
     if value < 1e4 {
         format!("{value:.0}")
@@ -393,7 +401,7 @@ fn number(value: f64) -> String {
     }
 }
 
-/// Energies are shown fixed-point in the usual range, in scientific notation outside it.
+/// Writes an energy fixed-point in the usual range, in scientific notation outside it.
 fn energy(value: f64) -> String {
     // An empty sum is −0.0 in Rust: show it as 0.
     let value = value + 0.0;
@@ -429,8 +437,9 @@ pub struct HudReadings {
     /// Steps in the recording so far, and what the latest save said.
     pub recorded_steps: u64,
     pub status: Option<String>,
-    /// The latest status while it is news ([`NEWS_SECONDS`]): the hint line says it, so that a
-    /// player sees it with the dock's cards folded.
+    /// The latest status while it is news ([`NEWS_SECONDS`]).
+    ///
+    /// The hint line says it, so that a player sees it with the dock's cards folded.
     pub news: Option<String>,
     /// While a replay plays back: (steps played, steps in it).
     pub playback: Option<(u64, u64)>,
@@ -443,7 +452,7 @@ pub struct HudReadings {
 }
 
 impl HudReadings {
-    /// The live integrator's margin.
+    /// Returns the live integrator's margin.
     fn live_margin(&self) -> Option<&Margin> {
         self.margins
             .iter()

@@ -7,6 +7,8 @@ use crate::game::input::controls::key_hint;
 use crate::game::simulation::{EnergyBooks, StepStats};
 use crate::physics::{Integrator, SceneParams};
 
+/// Writes the state and the keys into the window title.
+///
 /// "Rubber Band Box: auto (2 substeps, 0 fall-backs), k 20, 100 Hz, time ×1, paused; keys".
 pub fn show_state_in_title(
     integrator: Res<Integrator>,

@@ -169,8 +169,9 @@ impl Parameter {
     }
 }
 
-/// One control: its keys and the action each sends, how the help line names them, and what
-/// it does.
+/// One control: its keys and the action each sends.
+///
+/// It also holds how the help line names the keys, and what the control does.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Control {
     pub keys: &'static [KeyCode],
@@ -321,7 +322,8 @@ pub const CONTROLS: [Control; 19] = [
     },
 ];
 
-/// The HUD's help line: "drag: pull  Space: pause  N: step ...".
+/// Returns the HUD's help line: "drag: pull  Space: pause  N: step ...".
+///
 /// Each item's spaces are non-breaking, so that a narrow window wraps the line between items,
 /// never inside one.
 pub fn help_line() -> String {
@@ -332,7 +334,7 @@ pub fn help_line() -> String {
     format!("drag:\u{a0}pull  {}", keys.join("  "))
 }
 
-/// The window title's reminder of the keys: "Space N R I [ ] ...".
+/// Returns the window title's reminder of the keys: "Space N R I [ ] ...".
 pub fn key_hint() -> String {
     let labels: Vec<&str> = CONTROLS.iter().map(|control| control.label).collect();
     labels.join(" ")
@@ -342,7 +344,7 @@ pub fn key_hint() -> String {
 #[derive(Event, Debug, Clone, Copy)]
 pub struct HomeView;
 
-/// Each key pressed this frame sends its action.
+/// Sends the action of each key pressed this frame.
 fn keys_to_actions(keys: Res<ButtonInput<KeyCode>>, mut actions: MessageWriter<Action>) {
     for control in &CONTROLS {
         for (key, action) in control.keys.iter().zip(control.actions) {
@@ -364,9 +366,11 @@ struct Controlled<'w> {
     status: ResMut<'w, StatusMessage>,
 }
 
-/// Every action of this frame, in the order sent. k, the time scale and the step rate move by
-/// factors, so that a player reaches the hard cases in a few presses; each stays inside its
-/// range, and a scene parameter changes only if the whole scene stays valid.
+/// Applies every action of this frame, in the order sent.
+///
+/// k, the time scale and the step rate move by factors, so that a player reaches the hard cases
+/// in a few presses; each stays inside its range, and a scene parameter changes only if the
+/// whole scene stays valid.
 fn apply_actions(
     mut actions: MessageReader<Action>,
     mut commands: Commands,
@@ -447,8 +451,10 @@ fn apply_actions(
     }
 }
 
-/// In the browser, the file chooser (the playback opens what is chosen); on the desktop,
-/// where dropping a file on the window opens it, the HUD says so.
+/// Opens the file chooser in the browser, or on the desktop says how to open a replay.
+///
+/// In the browser the playback opens what is chosen; on the desktop, where dropping a file on
+/// the window opens it, the HUD says so.
 fn open_replay(status: &mut StatusMessage) {
     #[cfg(target_arch = "wasm32")]
     {

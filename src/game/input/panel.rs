@@ -93,9 +93,10 @@ const SLIDER_WIDTH: f32 = 150.0;
 const THUMB_SIZE: f32 = 18.0;
 
 impl Parameter {
-    /// The slider's range and step: k, the mass and the size on a logarithmic scale (log10 of the
-    /// value), the damping rates on a linear one.
-    /// Each spans the game's range for its parameter (`physics::scene`).
+    /// Returns the slider's range and step.
+    ///
+    /// k, the mass and the size are on a logarithmic scale (log10 of the value), the damping
+    /// rates on a linear one. Each spans the game's range for its parameter (`physics::scene`).
     fn slider(self) -> (f32, f32, f32) {
         let (range, step) = match self {
             Self::Stiffness => (STIFFNESS_RANGE, 0.1),
@@ -108,8 +109,9 @@ impl Parameter {
         (end(range.low), end(range.high), step)
     }
 
-    /// A slider's end as the readout shows the value (the linear damping by its coefficient,
-    /// whose rate depends on the mass).
+    /// Labels a slider's end as the readout shows the value.
+    ///
+    /// The linear damping is shown by its coefficient, whose rate depends on the mass.
     fn end_label(self, position: f32) -> String {
         let value = readable(self.value_at(position));
         match self {
@@ -180,7 +182,7 @@ fn spawn_button(commands: &mut Commands, parent: Entity, label: &str, does: Pane
     ));
 }
 
-/// A titled row of widgets that wraps on a narrow screen.
+/// Spawns a titled row of widgets that wraps on a narrow screen.
 fn spawn_row(commands: &mut Commands, parent: Entity, title: &str) -> Entity {
     let row = commands
         .spawn((
@@ -206,7 +208,9 @@ fn spawn_row(commands: &mut Commands, parent: Entity, title: &str) -> Entity {
     row
 }
 
-/// Learn mode's buttons, where its card keeps them (spawned in `Startup`, so found after it).
+/// Spawns learn mode's buttons where its card keeps them.
+///
+/// The card is spawned in `Startup`, so this runs in `PostStartup` to find it.
 fn spawn_chapter_buttons(mut commands: Commands, rows: Query<Entity, With<ChapterButtons>>) {
     for row in &rows {
         for (label, action) in [
@@ -399,7 +403,7 @@ fn press(does: PanelButton, cards: &mut Cards, shape: Shape, actions: &mut Messa
     }
 }
 
-/// The window's shape, for a card's title to fold as the dock is laid out.
+/// Returns the window's shape, for a card's title to fold as the dock is laid out.
 fn shape(windows: &Query<&Window, With<bevy::window::PrimaryWindow>>) -> Shape {
     windows
         .iter()
@@ -407,15 +411,16 @@ fn shape(windows: &Query<&Window, With<bevy::window::PrimaryWindow>>) -> Shape {
         .map_or(Shape::Wide, |window| Shape::of(window.size()))
 }
 
-/// What a button does: a panel button's own, or a card title's fold.
+/// Returns what a button does: a panel button's own, or a card title's fold.
 fn does(panel: Option<&PanelButton>, card: Option<&CardButton>) -> Option<PanelButton> {
     panel
         .copied()
         .or(card.map(|&CardButton(card)| PanelButton::Fold(card)))
 }
 
-/// A button pressed (a click, or Enter while focused) sends its action. While a finger is on
-/// the screen, touches are [`tap_buttons`]'s.
+/// Sends a pressed button's action (a click, or Enter while focused).
+///
+/// While a finger is on the screen, touches are [`tap_buttons`]'s.
 fn press_button(
     activate: On<Activate>,
     buttons: Query<(Option<&PanelButton>, Option<&CardButton>)>,
@@ -433,9 +438,10 @@ fn press_button(
     }
 }
 
-/// A finger's tap on a button, read from the touches: in the browser, picking misses a new
-/// finger's first press (its pointer has no hover yet when the press is dispatched), so taps
-/// go through here.
+/// Presses the button a finger taps, read from the touches.
+///
+/// In the browser, picking misses a new finger's first press (its pointer has no hover yet when
+/// the press is dispatched), so taps go through here.
 fn tap_buttons(
     touches: Res<Touches>,
     ui_scale: Res<UiScale>,
@@ -465,8 +471,9 @@ fn tap_buttons(
     }
 }
 
-/// A slider moved sends its parameter's new value; the slider shows the value in force after
-/// the controls have applied (or refused) it.
+/// Sends the new value of a moved slider's parameter.
+///
+/// The slider shows the value in force after the controls have applied (or refused) it.
 fn move_slider(
     change: On<ValueChange<f32>>,
     sliders: Query<&PanelSlider>,
@@ -477,7 +484,7 @@ fn move_slider(
     }
 }
 
-/// What the resources say, shown: the panel open or folded, which buttons are lit, the values.
+/// Shows what the resources say: the panel open or folded, which buttons are lit, the values.
 #[allow(clippy::too_many_arguments)]
 fn show_state(
     mut commands: Commands,
@@ -544,7 +551,7 @@ fn show_state(
     }
 }
 
-/// Each slider's thumb where its value lies along the track.
+/// Places each slider's thumb where its value lies along the track.
 fn place_thumbs(
     sliders: Query<(&SliderValue, &SliderRange, &Children), Changed<SliderValue>>,
     mut thumbs: Query<&mut Node, With<SliderThumb>>,
@@ -559,7 +566,9 @@ fn place_thumbs(
     }
 }
 
-/// In the browser: where each button lies, for the page (and the browser test) to read.
+/// Publishes where each button lies, for the page (and the browser test) to read.
+///
+/// In the browser only.
 #[cfg(target_arch = "wasm32")]
 fn publish_buttons(
     buttons: Query<
@@ -594,7 +603,7 @@ fn publish_buttons(
     }
 }
 
-/// A parameter in the units and format the HUD and the command line use.
+/// Writes a parameter in the units and format the HUD and the command line use.
 fn parameter_readout(parameter: Parameter, params: &SceneParams) -> String {
     let value = parameter.get(params);
     match parameter {

@@ -2,8 +2,9 @@
 //! table, with its equations and something to do. Data only: a chapter is added or moved here
 //! without touching a system.
 
-/// An equation a chapter shows, written as symbols and again with this frame's numbers
-/// ([`super::equations`]).
+/// An equation a chapter shows, written as symbols and again with this frame's numbers.
+///
+/// [`super::equations`] writes it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Equation {
     /// ΣF = F_band + F_damp.
@@ -55,8 +56,9 @@ pub enum Task {
     DoubleTheInertia,
     /// The band grabbed at three different corners.
     ThreeCorners,
-    /// After a pull, the box back to rest: its kinetic energy under 1% of the most it had,
-    /// no band.
+    /// After a pull, the box back to rest, with no band.
+    ///
+    /// At rest means its kinetic energy is under 1% of the most it had.
     ComeToRest,
     /// Five single steps taken while paused.
     StepFiveTimes,

@@ -50,7 +50,7 @@ impl Quantities {
         }
     }
 
-    /// With the centre twin's numbers, when a chapter shows one.
+    /// Adds the centre twin's numbers, when a chapter shows one.
     pub fn with_twin(self, twin: Option<&Twin>) -> Self {
         Self {
             twin: twin.map(|twin| (twin.stepper.state, twin.anchor())),
@@ -58,7 +58,7 @@ impl Quantities {
         }
     }
 
-    /// The twin's band force, −k (x − q) at its centre (zero without a band).
+    /// Returns the twin's band force, −k (x − q) at its centre (zero without a band).
     fn twin_force(&self) -> DVec2 {
         match self.twin {
             Some((state, Some(anchor))) => -self.stiffness * (state.linear.position - anchor),
@@ -66,31 +66,31 @@ impl Quantities {
         }
     }
 
-    /// The arm r from the centre to the band's corner (zero without a band).
+    /// Returns the arm r from the centre to the band's corner (zero without a band).
     fn arm(&self) -> DVec2 {
         self.band.map_or(DVec2::ZERO, |(corner, _)| {
             corner - self.state.linear.position
         })
     }
 
-    /// The band's force F = −k (p − q) (zero without a band).
+    /// Returns the band's force F = −k (p − q) (zero without a band).
     fn band_force(&self) -> DVec2 {
         self.band.map_or(DVec2::ZERO, |(corner, anchor)| {
             -self.stiffness * (corner - anchor)
         })
     }
 
-    /// τ = r × F.
+    /// Returns the band's torque τ = r × F.
     fn band_torque(&self) -> f64 {
         self.arm().perp_dot(self.band_force())
     }
 
-    /// −b v.
+    /// Returns the damping force −b v.
     fn damping_force(&self) -> DVec2 {
         -self.linear_damping * self.state.linear.velocity
     }
 
-    /// −c I ω.
+    /// Returns the damping torque −c I ω.
     fn damping_torque(&self) -> f64 {
         -self.angular_damping * self.inertia * self.state.angular.angular_velocity
     }
@@ -103,7 +103,7 @@ impl Quantities {
         self.band_torque() + self.damping_torque()
     }
 
-    /// ½ m v² + ½ I ω² + ½ k |p − q|².
+    /// Returns the three terms of the energy ½ m v² + ½ I ω² + ½ k |p − q|².
     fn energy(&self) -> (f64, f64, f64) {
         let v = self.state.linear.velocity;
         let omega = self.state.angular.angular_velocity;
@@ -118,12 +118,12 @@ impl Quantities {
     }
 }
 
-/// A number as the HUD writes it.
+/// Formats a number as the HUD writes it.
 fn n(value: f64) -> String {
     readable(value).replace('-', "−")
 }
 
-/// A factor after an operator: a negative one in parentheses, `× (−0.6)`.
+/// Formats a factor after an operator: a negative one in parentheses, `× (−0.6)`.
 fn f(value: f64) -> String {
     if value.is_sign_negative() && value != 0.0 {
         format!("({})", n(value))
@@ -132,12 +132,12 @@ fn f(value: f64) -> String {
     }
 }
 
-/// A vector: (x, y).
+/// Formats a vector: (x, y).
 fn v(value: DVec2) -> String {
     format!("({}, {})", n(value.x), n(value.y))
 }
 
-/// The equation's lines: its symbols, then the same with this frame's numbers.
+/// Returns the equation's lines: its symbols, then the same with this frame's numbers.
 pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
     let m = n(q.mass);
     let x = q.state.linear.position;

@@ -75,8 +75,9 @@ pub struct Learning {
 #[derive(Debug, Default, Clone)]
 struct Progress {
     inertia_at_start: f64,
-    /// The player's band: where its pull started (position, orientation), whether the box
-    /// turned too much since.
+    /// The player's band: where its pull started (position, orientation).
+    ///
+    /// `turned` says whether the box turned too much since.
     pull_start: Option<(Vec2, f64)>,
     turned: bool,
     corners: Vec<[i64; 2]>,
@@ -122,7 +123,7 @@ fn learn(learn: On<Learn>, mut commands: Commands) {
     });
 }
 
-/// The box's state and mass, if there is one.
+/// Returns the box's state and mass, if there is one.
 fn the_body(world: &mut World) -> Option<(BodyState, MassProperties)> {
     let mut boxes = world.query_filtered::<RigidBodyQueryReadOnly, With<RigidBox>>();
     boxes
@@ -131,9 +132,10 @@ fn the_body(world: &mut World) -> Option<(BodyState, MassProperties)> {
         .map(|body| (body.state(), *body.mass))
 }
 
-/// Shows chapter `index`: the game saved first if the mode is being entered; the chapter's
-/// scene loaded (its scripted pull plays until the player presses), its integrator put in
-/// place, its task started over, the *Learn* card open.
+/// Shows chapter `index`, saving the game first if the mode is being entered.
+///
+/// The chapter's scene is loaded (its scripted pull plays until the player presses), its
+/// integrator put in place, its task started over, the *Learn* card open.
 fn go_to(world: &mut World, index: usize) {
     let Some(chapter) = CHAPTERS.get(index) else {
         return;
@@ -176,7 +178,7 @@ fn go_to(world: &mut World, index: usize) {
     };
 }
 
-/// Out of learn mode: the game back as it was entered.
+/// Leaves learn mode, putting the game back as it was entered.
 fn leave(world: &mut World) {
     let saved = {
         let mut learning = world.resource_mut::<Learning>();
@@ -225,7 +227,7 @@ fn leave(world: &mut World) {
     world.resource_mut::<Recorder>().restart();
 }
 
-/// After the frame's steps: the chapter's task checked against what the steps did.
+/// Checks the chapter's task, after the frame's steps, against what the steps did.
 #[allow(clippy::too_many_arguments)]
 fn check_task(
     mut learning: ResMut<Learning>,
@@ -326,7 +328,7 @@ pub enum LearnText {
 /// The most equation lines a chapter writes (the update loop's five, and one to spare).
 pub const LINES: usize = 6;
 
-/// An equation's colour: that of its arrow on the box, else the text's.
+/// Returns an equation's colour: that of its arrow on the box, else the text's.
 fn equation_colour(equation: Equation) -> Color {
     match equation {
         Equation::ForceSum
@@ -344,8 +346,9 @@ fn equation_colour(equation: Equation) -> Color {
     }
 }
 
-/// Where the panel puts the chapter's buttons: under the title, where the equations' changing
-/// lengths never move them.
+/// Where the panel puts the chapter's buttons: under the title.
+///
+/// There the equations' changing lengths never move them.
 #[derive(Component, Debug)]
 pub struct ChapterButtons;
 
@@ -388,7 +391,7 @@ fn spawn_card(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     text(&mut commands, LearnText::Task, size::BODY, 3.0);
 }
 
-/// The chapter's texts from the game's state this frame, each with its colour.
+/// Writes the chapter's texts from the game's state this frame, each with its colour.
 fn chapter_texts(
     learning: &Learning,
     quantities: Option<&Quantities>,
@@ -431,7 +434,7 @@ fn chapter_texts(
     Some(texts)
 }
 
-/// The card written from this frame's components.
+/// Writes the card from this frame's components.
 fn show_chapter(
     learning: Res<Learning>,
     params: Res<SceneParams>,

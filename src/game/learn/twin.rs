@@ -10,8 +10,9 @@ use bevy::prelude::*;
 use crate::game::simulation::{Band, Bodies, ResetScene, acting_band};
 use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams, Stepper};
 
-/// Where the twin sits from the box, in world px: below it, so that the tutorial's pull up
-/// and to the right keeps both in the scene.
+/// Where the twin sits from the box, in world px: below it.
+///
+/// The tutorial's pull up and to the right then keeps both in the scene.
 pub const TWIN_OFFSET: DVec2 = DVec2::new(0.0, -160.0);
 
 /// The twin, while a chapter shows it.
@@ -31,8 +32,9 @@ pub struct Twin {
 }
 
 impl Twin {
-    /// The band the twin takes for the box's `band`: the same anchor moved by the offset,
-    /// held at the twin's centre.
+    /// Returns the band the twin takes for the box's `band`.
+    ///
+    /// It has the same anchor moved by the offset, and is held at the twin's centre.
     fn band_for(band: BandEnds) -> BandEnds {
         BandEnds {
             local_point: DVec2::ZERO,
@@ -40,7 +42,7 @@ impl Twin {
         }
     }
 
-    /// The twin's band's anchor, while a band pulls it.
+    /// Returns the twin's band's anchor, while a band pulls it.
     pub fn anchor(&self) -> Option<DVec2> {
         self.stepper.band.map(|band| band.anchor)
     }
@@ -50,9 +52,11 @@ pub fn restart_on_reset(_reset: On<ResetScene>, mut twin: ResMut<CentreTwin>) {
     twin.restart = true;
 }
 
-/// Before the live box's step: the twin takes the same step under the same band, held at its
-/// centre, with the settings in force. Out of its chapter it is dropped, to start again from
-/// the box, moved by the offset, when the chapter is shown.
+/// Steps the twin before the live box's step: the same step under the same band.
+///
+/// The band is held at the twin's centre, and the step uses the settings in force. Out of its
+/// chapter the twin is dropped, to start again from the box, moved by the offset, when the
+/// chapter is shown.
 pub fn step_twin(
     mut twin: ResMut<CentreTwin>,
     time: Res<Time<Fixed>>,

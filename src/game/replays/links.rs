@@ -29,8 +29,10 @@ impl Plugin for LinksPlugin {
     }
 }
 
-/// A link to open before the first step (`play --link`, the page's own address), and what
-/// was wrong with it, to be said once the game runs.
+/// A link to open before the first step, and what was wrong with it.
+///
+/// The link is `play --link`'s or the page's own address; what was wrong with it is said once
+/// the game runs.
 #[derive(Resource, Debug, Clone, Default)]
 pub struct PendingLink {
     pub link: Link,
@@ -56,11 +58,12 @@ fn open_pending_link(mut commands: Commands) {
     });
 }
 
-/// Puts `link` in place: with a replay, the replay played from its start (its scene and
-/// settings are the replay's, so the link's own settings keys are left, and named); else the
-/// integrator and the step rate, then the scene (loaded with them, as its number key does),
-/// then the scene's parameters the link overrides. Then the time scale and the overlays.
-/// What was not taken, and why.
+/// Puts `link` in place and returns what was not taken, and why.
+///
+/// With a replay, the replay is played from its start (its scene and settings are the
+/// replay's, so the link's own settings keys are left, and named); else the integrator and the
+/// step rate, then the scene (loaded with them, as its number key does), then the scene's
+/// parameters the link overrides. Then the time scale and the overlays.
 fn open_link(world: &mut World, link: Link) -> Vec<String> {
     let mut problems = Vec::new();
     let settings_keys = link.settings_keys();
@@ -122,8 +125,10 @@ fn open_link(world: &mut World, link: Link) -> Vec<String> {
     problems
 }
 
-/// The link of what is on screen: the keys that differ from what a fresh game starts with
-/// (so a link holds only what the player changed), and with `game` the recording so far.
+/// Returns the link of what is on screen, and with `game` the recording so far.
+///
+/// The link has the keys that differ from what a fresh game starts with, so it holds only what
+/// the player changed.
 pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
     let params = *world.resource::<SceneParams>();
     let scene = &world.resource::<SceneName>().0;
@@ -163,7 +168,7 @@ pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
     Ok(link)
 }
 
-/// The share controls: the link written where the player can take it.
+/// Answers the share controls, writing the link where the player can take it.
 fn share(share: On<ShareLink>, mut commands: Commands) {
     let game = share.game;
     commands.queue(move |world: &mut World| {
@@ -175,8 +180,10 @@ fn share(share: On<ShareLink>, mut commands: Commands) {
     });
 }
 
+/// Publishes the link and returns what the status line says.
+///
 /// Natively the link is printed (the terminal is where a long one can be copied from); in the
-/// browser it becomes the page's address and is copied. What the status line says.
+/// browser it becomes the page's address and is copied.
 fn publish(query: &str, game: bool) -> String {
     #[cfg(not(target_arch = "wasm32"))]
     let (address, place) = {

@@ -65,7 +65,7 @@ pub enum PlaybackEnd {
 }
 
 impl PlaybackEnd {
-    /// What the HUD says.
+    /// Returns what the HUD says.
     pub fn describe(&self) -> String {
         match *self {
             Self::TakenOver { step } => format!("replay taken over at step {step}"),
@@ -112,14 +112,14 @@ impl Playback {
         self.replay.is_some()
     }
 
-    /// (steps played, steps in the replay) while playing.
+    /// Returns (steps played, steps in the replay) while playing.
     pub fn progress(&self) -> Option<(u64, u64)> {
         self.replay
             .as_ref()
             .map(|replay| (self.played, replay.steps))
     }
 
-    /// The replay's settings and auto settings, for the game to start with.
+    /// Returns the replay's settings and auto settings, for the game to start with.
     pub fn start(&self) -> Option<(SceneParams, Integrator, AutoSettings)> {
         let header = &self.replay.as_ref()?.header;
         Some((
@@ -130,7 +130,7 @@ impl Playback {
     }
 }
 
-/// A press ends the playback: the pointer's band replaces the recorded one.
+/// Ends the playback on a press: the pointer's band replaces the recorded one.
 fn take_over_on_press(mut actions: MessageReader<PointerAction>, mut playback: ResMut<Playback>) {
     let pressed = actions
         .read()
@@ -152,8 +152,10 @@ struct RecordedSettings<'w> {
     time: ResMut<'w, Time<Fixed>>,
 }
 
-/// Before the step's forces: the recorded resets and settings up to the next step, and its
-/// band. At the replay's end the playback stops, leaving the box as it is.
+/// Puts the recorded resets and settings up to the next step, and its band, in place.
+///
+/// This runs before the step's forces. At the replay's end the playback stops, leaving the box
+/// as it is.
 fn play_step(
     mut commands: Commands,
     mut playback: ResMut<Playback>,
@@ -233,7 +235,9 @@ fn play_step(
     }
 }
 
-/// The step's band, and no other. After a reset the old bands are the reset's to remove.
+/// Places the step's band, and no other.
+///
+/// After a reset the old bands are the reset's to remove.
 fn place_band(
     commands: &mut Commands,
     body: Entity,
@@ -258,9 +262,11 @@ fn place_band(
     }
 }
 
-/// Opens `replay` in the running game: the scene reset, the replay's settings in place, the
-/// recorder started over, and the playback from its first step. The caller has held it to
-/// the game's ranges (`Replay::check_playable`; a scene's script is made in them).
+/// Opens `replay` in the running game and plays it from its first step.
+///
+/// The scene is reset, the replay's settings put in place and the recorder started over. The
+/// caller has held the replay to the game's ranges (`Replay::check_playable`; a scene's script
+/// is made in them).
 pub fn open(world: &mut World, replay: Replay) {
     let header = &replay.header;
     let params = header.settings.params();
@@ -277,7 +283,7 @@ pub fn open(world: &mut World, replay: Replay) {
     world.insert_resource(Playback::of(replay));
 }
 
-/// A replay file's text opened by the player, or why it cannot be played.
+/// Plays a replay file's text the player opened, or says why it cannot be played.
 fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, String>) {
     let read = read.and_then(|replay| {
         replay.check_playable().map_err(|error| error.to_string())?;
@@ -300,8 +306,9 @@ fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, Stri
     }
 }
 
-/// The end of a playback, said once: in the HUD's status and the log, and in the browser to
-/// the page too.
+/// Says the end of a playback once: in the HUD's status and the log.
+///
+/// In the browser it is said to the page too.
 fn report_the_end(
     playback: Res<Playback>,
     mut status: ResMut<StatusMessage>,
@@ -333,7 +340,7 @@ fn report_the_end(
     }
 }
 
-/// A file dropped on the window is played as a replay.
+/// Plays a file dropped on the window as a replay.
 #[cfg(not(target_arch = "wasm32"))]
 fn open_dropped_files(
     mut commands: Commands,
@@ -365,8 +372,10 @@ mod page {
         }
     }
 
-    /// `window.rubberBandBox.replayHash(text)`: the replay stepped with its recorded
-    /// integrators, as `simulate --replay FILE --hash` does natively.
+    /// Exposes `window.rubberBandBox.replayHash(text)`, which steps a replay and hashes its states.
+    ///
+    /// The replay is stepped with its recorded integrators, as `simulate --replay FILE --hash`
+    /// does natively.
     pub fn expose_replay_hash() {
         let hash = Closure::<dyn Fn(String) -> String>::new(|text: String| {
             Replay::from_bytes(text.as_bytes())

@@ -69,8 +69,9 @@ impl Recorder {
         }
     }
 
-    /// A new recording from the next step on (a replay opened in the game), to the same
-    /// target.
+    /// Starts a new recording from the next step on, to the same target.
+    ///
+    /// A replay opened in the game starts one, and so does leaving learn mode.
     pub fn restart(&mut self) {
         *self = Self {
             #[cfg(not(target_arch = "wasm32"))]
@@ -92,7 +93,7 @@ fn note_reset(_reset: On<ResetScene>, mut recorder: ResMut<Recorder>) {
     recorder.reset_pending = true;
 }
 
-/// Before the step: the settings in force and the band the step will use.
+/// Notes the settings in force and the band the step will use, before the step.
 fn note_step_inputs(
     mut recorder: ResMut<Recorder>,
     step: StepSettings,
@@ -124,7 +125,7 @@ fn note_step_inputs(
     recorder.step_noted = true;
 }
 
-/// After the step: the state the step left (refused steps included, as the game kept it).
+/// Notes the state the step left once it has run (refused steps included, as the game kept it).
 fn note_step_result(mut recorder: ResMut<Recorder>, boxes: Bodies) {
     let recorder = &mut *recorder;
     if !std::mem::take(&mut recorder.step_noted) {
@@ -136,8 +137,9 @@ fn note_step_result(mut recorder: ResMut<Recorder>, boxes: Bodies) {
     }
 }
 
-/// The save control: to `--record`'s file if there is one, else to a new file named by the
-/// time, in the working folder.
+/// Saves the game for the save control, to `--record`'s file if there is one.
+///
+/// Otherwise it saves to a new file named by the time, in the working folder.
 fn save_on_request(
     _save: On<SaveReplay>,
     recorder: Res<Recorder>,
@@ -162,7 +164,7 @@ fn save_on_request(
     }
 }
 
-/// `replay-<seconds since 1970>.jsonl`.
+/// Returns the name `replay-<seconds since 1970>.jsonl`.
 #[cfg(not(target_arch = "wasm32"))]
 fn timestamped_name() -> PathBuf {
     let seconds = std::time::SystemTime::now()
@@ -171,7 +173,7 @@ fn timestamped_name() -> PathBuf {
     PathBuf::from(format!("replay-{seconds}.jsonl"))
 }
 
-/// Saves the game so far to `path`: what to tell the player either way.
+/// Saves the game so far to `path` and returns what to tell the player either way.
 #[cfg(not(target_arch = "wasm32"))]
 fn save(recorder: &Recorder, path: &Path) -> Result<String, String> {
     let Some(replay) = recorder.replay.as_ref() else {
@@ -182,7 +184,7 @@ fn save(recorder: &Recorder, path: &Path) -> Result<String, String> {
         .map_err(|error| error.to_string())
 }
 
-/// When the game ends (the window closed, Ctrl-C, SIGTERM), `--record`'s file is saved.
+/// Saves `--record`'s file when the game ends (the window closed, Ctrl-C, SIGTERM).
 #[cfg(not(target_arch = "wasm32"))]
 fn save_on_exit(mut exits: MessageReader<AppExit>, mut recorder: ResMut<Recorder>) {
     if exits.read().last().is_none() || recorder.saved_at_exit {
@@ -198,8 +200,9 @@ fn save_on_exit(mut exits: MessageReader<AppExit>, mut recorder: ResMut<Recorder
     }
 }
 
-/// SIGTERM ends the game as Ctrl-C does (Bevy handles SIGINT): with an [`AppExit`], so that
-/// the recording is saved.
+/// SIGTERM ends the game as Ctrl-C does (Bevy handles SIGINT).
+///
+/// It sends an [`AppExit`], so that the recording is saved.
 #[cfg(all(unix, not(target_arch = "wasm32")))]
 pub mod sigterm {
     use std::sync::atomic::{AtomicBool, Ordering};

@@ -26,7 +26,7 @@ fn load(load: On<LoadScene>, mut commands: Commands) {
     commands.queue(move |world: &mut World| load_scene(world, name));
 }
 
-/// The scene's parameters at the player's step rate, its start, and its script playing.
+/// Loads a scene: its parameters at the player's step rate, its start, and its script playing.
 pub fn load_scene(world: &mut World, name: &str) {
     let loaded = Scene::named(name)
         .map_err(|unknown| unknown.to_string())

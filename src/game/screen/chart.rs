@@ -32,8 +32,9 @@ impl Plugin for ChartPlugin {
 #[derive(Default, Reflect, GizmoConfigGroup)]
 pub struct ChartGizmos;
 
-/// A chart's canvas on the window, in logical pixels, and the UI's scale (a canvas's
-/// children are placed in the UI's units, which the scale multiplies).
+/// A chart's canvas on the window, in logical pixels, and the UI's scale.
+///
+/// A canvas's children are placed in the UI's units, which the scale multiplies.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Canvas {
     pub rect: Rect,
@@ -48,21 +49,24 @@ impl Canvas {
         }
     }
 
-    /// The canvas's size in the UI's units.
+    /// Returns the canvas's size in the UI's units.
     pub fn size(&self) -> Vec2 {
         self.rect.size() / self.ui_scale
     }
 
-    /// A point given in the UI's units from the canvas's top left, where the chart camera
-    /// draws it (its origin at the window's centre, y up).
+    /// Returns where the chart camera draws a point given from the canvas's top left.
+    ///
+    /// `point` is in the UI's units; the chart camera's origin is at the window's centre, y up.
     pub fn to_chart(&self, point: Vec2, window: Vec2) -> Vec2 {
         let on_window = self.rect.min + point * self.ui_scale;
         Vec2::new(on_window.x - window.x / 2.0, window.y / 2.0 - on_window.y)
     }
 }
 
-/// A text's box in the UI's units, measured as the figures' face sets it (every glyph 0.602
-/// of the font's size wide, a line 1.2 of it high): what the labels' placer avoids.
+/// Returns a text's box in the UI's units: what the labels' placer avoids.
+///
+/// It is measured as the figures' face sets it (every glyph 0.602 of the font's size wide, a line
+/// 1.2 of it high).
 pub fn text_box(at: Vec2, text: &str, font_size: f32) -> Rect {
     let size = Vec2::new(
         text.chars().count() as f32 * 0.602 * font_size,

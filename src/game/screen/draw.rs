@@ -66,7 +66,7 @@ fn thicken_lines(mut store: ResMut<GizmoConfigStore>) {
 #[derive(Component, Debug, Clone, Copy, PartialEq)]
 struct FilledSize(DVec2);
 
-/// A box's filled body for its size.
+/// Builds a box's filled body for its size.
 fn box_fill(size: DVec2) -> impl Bundle {
     let rectangle = shapes::Rectangle {
         extents: size.as_vec2(),
@@ -155,7 +155,7 @@ fn draw_bands(
     }
 }
 
-/// Red when slack, toward magenta as the band stretches.
+/// Returns the band's colour: red when slack, toward magenta as the band stretches.
 fn band_colour(length: f64) -> Color {
     Color::srgb(1.0, 0.0, (length / BAND_MAGENTA_LENGTH).min(1.0) as f32)
 }
@@ -164,12 +164,14 @@ const VELOCITY_COLOUR: Color = colour::VELOCITY;
 const FORCE_COLOUR: Color = colour::FORCE;
 /// The velocity arrow shows where the centre will be in this many seconds.
 const VELOCITY_ARROW_SECONDS: f32 = 0.25;
-/// The force arrow grows with the logarithm of the force, so that k = 20 and k = 1e9 both fit.
+/// Returns the force arrow's length, which grows with the logarithm of the force.
+///
+/// That way k = 20 and k = 1e9 both fit.
 fn force_arrow_length(force: f64) -> f64 {
     (30.0 * (1.0 + force / 10.0).log10()).min(300.0)
 }
 
-/// Velocity at the centre; the band's force at its corner.
+/// Draws the velocity at the centre and the band's force at its corner.
 fn draw_vectors(
     mut gizmos: Gizmos,
     params: Res<SceneParams>,
@@ -199,10 +201,11 @@ fn draw_vectors(
 const TORQUE_SWEEP: f32 = 1.5 * std::f32::consts::PI;
 const TORQUE_RADIUS: f32 = 22.0;
 
-/// Learn mode's pictures of its equations, in their colours: the arm r from the centre to the
-/// band's corner, the torque τ as an arc about the centre in its sense; with no band, the corner
-/// a press would take, nearest the pointer (the rubber band's chapter); the centre twin and
-/// its band.
+/// Draws learn mode's pictures of its equations, in their colours.
+///
+/// It draws the arm r from the centre to the band's corner, the torque τ as an arc about the centre
+/// in its sense; with no band, the corner a press would take, nearest the pointer (the rubber
+/// band's chapter); the centre twin and its band.
 fn draw_learning(
     mut gizmos: Gizmos,
     (learning, params, fixed_time): (Res<Learning>, Res<SceneParams>, Res<Time<Fixed>>),
@@ -263,8 +266,9 @@ fn draw_learning(
     }
 }
 
-/// An arc about `centre` sweeping in the torque's sense (counter-clockwise for a positive one),
-/// with its head at the end.
+/// Draws an arc about `centre` sweeping in the torque's sense, with its head at the end.
+///
+/// The arc runs counter-clockwise for a positive torque.
 fn torque_arc(gizmos: &mut Gizmos, centre: Vec2, from: f32, torque: f64) {
     let sense = if torque > 0.0 { 1.0 } else { -1.0 };
     let at = |angle: f32| centre + TORQUE_RADIUS * Vec2::from_angle(angle);
@@ -317,7 +321,7 @@ fn clear_trail_on_reset(_reset: On<ResetScene>, mut trail: ResMut<Trail>) {
     *trail = Trail::default();
 }
 
-/// Older points fade out.
+/// Draws the pulled corner's trail; older points fade out.
 fn draw_trail(mut gizmos: Gizmos, trail: Res<Trail>) {
     let n = trail.points.len().max(1) as f32;
     gizmos.linestrip_gradient_2d(
@@ -337,10 +341,13 @@ pub struct GhostLabel(pub GhostKind);
 const GHOST_LABEL_SIZE: f32 = 11.0;
 const GHOST_LABEL_PIXELS: f32 = 11.0;
 
-/// Where a column of `lines` names, each `line` high and at most `width` wide, goes beside an
-/// outline at `centre` that reaches `reach` from it: above, below, right or left of it, the
-/// first that lies inside `shown` (the part of the world in view); above when none does. Returned as the offset from `centre` of the column's first line and
-/// the step to the next (names that coincide, most ghosts on a soft band, keep apart).
+/// Returns where a column of names goes beside an outline: the first side that stays in view.
+///
+/// The column holds `lines` names, each `line` high and at most `width` wide; the outline is at
+/// `centre` and reaches `reach` from it. The column goes above, below, right or left of it, the
+/// first that lies inside `shown` (the part of the world in view); above when none does. Returned
+/// as the offset from `centre` of the column's first line and the step to the next (names that
+/// coincide, most ghosts on a soft band, keep apart).
 fn label_column(
     centre: Vec2,
     reach: f32,
@@ -382,9 +389,11 @@ fn label_column(
         .unwrap_or(sides[0])
 }
 
-/// Each ghost as a thin outline in its colour with its band and its name, between its last
-/// two steps as the live box is drawn; a diverged one crossed out where it froze, with the
-/// step. The ghost of the live box's own integrator is not drawn (it lies under the box).
+/// Draws each ghost as a thin outline in its colour, with its band and its name.
+///
+/// A ghost is drawn between its last two steps as the live box is; a diverged one is crossed out
+/// where it froze, with the step. The ghost of the live box's own integrator is not drawn (it lies
+/// under the box).
 #[allow(clippy::too_many_arguments)]
 fn draw_ghosts(
     mut commands: Commands,
@@ -522,8 +531,9 @@ fn draw_ghosts(
 mod tests {
     use super::*;
 
-    /// The ghosts' names go above the box, or where that would leave the view, below it, right or
-    /// left of it.
+    /// Checks that the ghosts' names stay in view.
+    ///
+    /// They go above the box, or where that would leave the view, below it, right or left of it.
     #[test]
     fn the_ghosts_names_stay_in_view() {
         let (reach, lines, line, width) = (45.0, 7, 13.2, 90.0);

@@ -67,7 +67,7 @@ fn spawn_canvas(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     ));
 }
 
-/// The graph's place in its canvas, in the UI's units: the whole canvas but a pixel.
+/// Returns the graph's place in its canvas, in the UI's units: the whole canvas but a pixel.
 fn graph_frame(canvas: Vec2) -> Rect {
     Rect::from_corners(Vec2::ONE, canvas - Vec2::ONE)
 }

@@ -43,7 +43,7 @@ pub struct PlotPoint {
 }
 
 impl PlotPoint {
-    /// Its name on the plot.
+    /// Returns the point's name on the plot.
     fn label(&self) -> String {
         let mut name = match (self.error, self.live) {
             (None, _) => format!("{} diverged", self.kind.name()),
@@ -58,7 +58,7 @@ impl PlotPoint {
     }
 }
 
-/// Every ghost but the reference, as the plot shows it.
+/// Returns every ghost but the reference, as the plot shows it.
 pub fn plot_points(ghosts: &Ghosts, step_rate_hz: f64, live: Integrator) -> Vec<PlotPoint> {
     ghosts
         .ghosts
@@ -89,8 +89,9 @@ const RIGHT: f32 = 8.0;
 const TOP: f32 = 26.0;
 const BOTTOM: f32 = 38.0;
 
-/// The plotting frame in a canvas of `canvas` size, in the UI's units from its top left (y
-/// down).
+/// Returns the plotting frame in a canvas of `canvas` size.
+///
+/// The frame is in the UI's units from the canvas's top left (y down).
 pub fn plot_frame(canvas: Vec2) -> Rect {
     Rect::from_corners(
         Vec2::new(LEFT, TOP),
@@ -98,15 +99,16 @@ pub fn plot_frame(canvas: Vec2) -> Rect {
     )
 }
 
-/// Where a decade lies along an axis of `length` spanning `decades`.
+/// Returns where a decade lies along an axis of `length` spanning `decades`.
 fn along(decades: (i32, i32), value: f64, length: f32) -> f32 {
     let share =
         (value.max(1e-300).log10() - f64::from(decades.0)) / f64::from(decades.1 - decades.0);
     share.clamp(0.0, 1.0) as f32 * length
 }
 
-/// A point's place in `frame` (y down): each axis's decade clamped into the frame; a diverged
-/// ghost at the right edge.
+/// Returns a point's place in `frame` (y down), each axis's decade clamped into the frame.
+///
+/// A diverged ghost is at the right edge.
 pub fn place(point: &PlotPoint, frame: Rect) -> Vec2 {
     let x = point.error.map_or(frame.width(), |error| {
         along(ERROR_DECADES, error, frame.width())
@@ -115,7 +117,7 @@ pub fn place(point: &PlotPoint, frame: Rect) -> Vec2 {
     Vec2::new(frame.min.x + x, frame.max.y - y)
 }
 
-/// A tick's value as the axis writes it.
+/// Returns a tick's value as the axis writes it.
 fn decade_label(decade: i32) -> String {
     match decade {
         0 => "1".to_owned(),
@@ -124,8 +126,9 @@ fn decade_label(decade: i32) -> String {
     }
 }
 
-/// Every how many decades an axis of `length` writes a value, so that no two meet: `room`
-/// is what one value needs.
+/// Returns every how many decades an axis of `length` writes a value, so that no two meet.
+///
+/// `room` is what one value needs.
 fn label_every(decades: (i32, i32), length: f32, room: f32) -> i32 {
     let per_decade = length / (decades.1 - decades.0) as f32;
     (1..=6)
@@ -136,10 +139,12 @@ fn label_every(decades: (i32, i32), length: f32, room: f32) -> i32 {
 /// The half-size of a point's mark, which no name may cover.
 const MARK: f32 = 7.0;
 
-/// Where each name goes: beside its point (right, left, above, below, then the diagonals),
-/// further out ring by ring, at the first place inside `bounds` that meets no mark of any
-/// point, no text of `obstacles` and no name placed before; where no such place is near, the
-/// first free place in `bounds`, top to bottom. `labels` are each point and its name's size.
+/// Returns where each name goes: near its point if there is room, else the first free place.
+///
+/// A name goes beside its point (right, left, above, below, then the diagonals), further out ring
+/// by ring, at the first place inside `bounds` that meets no mark of any point, no text of
+/// `obstacles` and no name placed before; where no such place is near, at the first free place in
+/// `bounds`, top to bottom. `labels` are each point and its name's size.
 fn place_labels(labels: &[(Vec2, Vec2)], bounds: Rect, obstacles: &[Rect]) -> Vec<Rect> {
     let marks: Vec<Rect> = labels
         .iter()
@@ -293,7 +298,7 @@ fn spawn_canvas(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     ));
 }
 
-/// A text node placed at `rect` (the UI's units, in its canvas), or hidden.
+/// Places a text node at `rect` (the UI's units, in its canvas), or hides it.
 fn put(node: &mut Node, rect: Option<Rect>) {
     let (display, left, top) = match rect {
         Some(rect) => (Display::Flex, px(rect.min.x), px(rect.min.y)),
@@ -489,8 +494,10 @@ fn draw_plot(
 mod tests {
     use super::*;
 
-    /// The names on the plot: each beside its point or tied to it, none on another name, on a
-    /// point's mark or on the axes' text, all inside the frame, however the points crowd.
+    /// Checks that the plot's names never meet.
+    ///
+    /// Each lies beside its point or is tied to it, none on another name, on a point's mark or on
+    /// the axes' text, all inside the frame, however the points crowd.
     #[test]
     fn the_plots_names_never_meet() {
         let bounds = Rect::new(34.0, 18.0, 320.0, 200.0);

@@ -53,7 +53,9 @@ impl Plugin for ViewPlugin {
     }
 }
 
-/// In the browser: where the tutorial's screen and the box's corners are on the page.
+/// Publishes where the tutorial's screen and the box's corners are on the page.
+///
+/// In the browser only.
 #[cfg(target_arch = "wasm32")]
 fn publish_view(
     fixed_time: Res<Time<Fixed>>,
@@ -105,12 +107,14 @@ pub struct View {
 }
 
 impl View {
-    /// The part of the world the view shows in a viewport of `size` logical pixels.
+    /// Returns the part of the world the view shows in a viewport of `size` logical pixels.
     fn area(&self, size: Vec2) -> Rect {
         Rect::from_center_size(self.centre, size * self.world_per_pixel)
     }
 
-    /// The view that shows `area` whole in a viewport of `size`, aspect kept, centred on it.
+    /// Returns the view, centred on `area`, that shows it whole in a viewport of `size`.
+    ///
+    /// The aspect is kept.
     fn fitting(area: Rect, size: Vec2) -> Self {
         let ratio = area.size() / size.max(Vec2::ONE);
         Self {
@@ -119,15 +123,18 @@ impl View {
         }
     }
 
-    /// A world point's place on the window, in logical pixels, with the viewport at `viewport`.
+    /// Returns a world point's place on the window, in logical pixels.
+    ///
+    /// The viewport lies at `viewport`.
     pub fn to_window(&self, world: Vec2, viewport: Rect) -> Vec2 {
         let offset = (world - self.centre) / self.world_per_pixel;
         viewport.center() + Vec2::new(offset.x, -offset.y)
     }
 }
 
-/// The scene camera's frame: where the player put it (the home: the tutorial's screen, or as
-/// zoomed and panned) and what it shows now.
+/// The scene camera's frame: where the player put it and what it shows now.
+///
+/// Where the player put it is the home: the tutorial's screen, or as zoomed and panned.
 #[derive(Resource, Debug, Clone, Copy, PartialEq)]
 pub struct CameraFrame {
     /// The player's zoom about the home frame (1: the tutorial's screen fitted) and pan.
@@ -157,8 +164,9 @@ const EASE_RATE: f32 = 6.0;
 const ZOOM_RANGE: (f32, f32) = (0.05, 20.0);
 
 impl CameraFrame {
-    /// The home view in a viewport of `size`: the tutorial's screen fitted, then the player's
-    /// zoom and pan.
+    /// Returns the home view in a viewport of `size`.
+    ///
+    /// It fits the tutorial's screen, then applies the player's zoom and pan.
     fn home(&self, size: Vec2) -> View {
         let screen = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2() * HOME_MARGIN);
         let fitted = View::fitting(screen, size);
@@ -169,8 +177,9 @@ impl CameraFrame {
     }
 }
 
-/// Where the view should be with `keep` (the box's corners, the anchor) to keep in sight: the
-/// home view while they lie in its inner 80%; else the least view, centred between, that
+/// Returns where the view should be to keep `keep` (the box's corners, the anchor) in sight.
+///
+/// It is the home view while they lie in its inner 80%; else the least view, centred between, that
 /// holds the home frame's centre and them in its inner 80%.
 fn wanted_view(home: View, size: Vec2, keep: Rect) -> View {
     let inner = Rect::from_center_size(home.centre, size * home.world_per_pixel * INNER);
@@ -183,8 +192,9 @@ fn wanted_view(home: View, size: Vec2, keep: Rect) -> View {
     view
 }
 
-/// `shown` moved toward `wanted` by the share `ease` (0 to 1), the zoom on a log scale; then,
-/// if `keep` is not whole in it, widened at once until it is (the box is never lost).
+/// Eases `shown` toward `wanted` by the share `ease` (0 to 1), the zoom on a log scale.
+///
+/// Then, if `keep` is not whole in it, widens it at once until it is (the box is never lost).
 fn eased_view(shown: View, wanted: View, ease: f32, size: Vec2, keep: Rect) -> View {
     let mut view = View {
         centre: shown.centre.lerp(wanted.centre, ease),
@@ -201,7 +211,7 @@ fn eased_view(shown: View, wanted: View, ease: f32, size: Vec2, keep: Rect) -> V
     view
 }
 
-/// What must stay in sight: every box's corners (as drawn) and the band's anchor.
+/// Returns what must stay in sight: every box's corners (as drawn) and the band's anchor.
 fn kept_in_sight(
     fixed_time: &Time<Fixed>,
     boxes: &Query<(&RenderSnapshots, &MassProperties)>,
@@ -220,7 +230,7 @@ fn kept_in_sight(
     keep
 }
 
-/// The viewport's rectangle now, in logical pixels: the layout's, or the whole window.
+/// Returns the viewport's rectangle now, in logical pixels: the layout's, or the whole window.
 fn viewport_rect(viewport: &SceneViewport, window: &Window) -> Rect {
     viewport
         .0
@@ -253,7 +263,7 @@ fn spawn_cameras(mut commands: Commands) {
     ));
 }
 
-/// An orthographic projection whose scale the view sets.
+/// Returns an orthographic projection whose scale the view sets.
 fn scene_projection() -> Projection {
     Projection::Orthographic(OrthographicProjection {
         scaling_mode: ScalingMode::WindowSize,
@@ -268,13 +278,15 @@ fn go_home(_home: On<HomeView>, mut frame: ResMut<CameraFrame>) {
     frame.shown = None;
 }
 
-/// A reset starts the view over too.
+/// Starts the view over on a reset too.
 fn go_home_on_reset(_reset: On<ResetScene>, mut frame: ResMut<CameraFrame>) {
     *frame = CameraFrame::default();
 }
 
-/// The wheel zooms about the pointer, the right button drags the view, two fingers pinch and
-/// pan: all on the scene's viewport only (the wheel over the dock scrolls it).
+/// Zooms and pans the view with the wheel, the right button and two fingers.
+///
+/// The wheel zooms about the pointer, the right button drags the view, two fingers pinch and pan:
+/// all on the scene's viewport only (the wheel over the dock scrolls it).
 #[allow(clippy::too_many_arguments)]
 fn zoom_and_pan(
     mut wheel: MessageReader<MouseWheel>,
@@ -344,7 +356,7 @@ fn zoom_and_pan(
     }
 }
 
-/// The view eased toward where it should be this frame; the box and the anchor always in it.
+/// Eases the view toward where it should be this frame; the box and the anchor always in it.
 fn follow_the_box(
     time: Res<Time<Real>>,
     fixed_time: Res<Time<Fixed>>,
@@ -372,8 +384,9 @@ fn follow_the_box(
     }
 }
 
-/// The scene's camera renders into the viewport, showing the frame's view; the chart
-/// camera covers the window.
+/// Places the cameras: the scene's renders into the viewport, showing the frame's view.
+///
+/// The chart camera covers the window.
 fn place_cameras(
     window: Option<Single<&Window, With<PrimaryWindow>>>,
     viewport: Res<SceneViewport>,
@@ -414,24 +427,27 @@ fn place_cameras(
     }
 }
 
-/// World units a logical pixel spans now (1 before the first view).
+/// Returns the world units a logical pixel spans now (1 before the first view).
 pub fn world_per_pixel(frame: &CameraFrame) -> f32 {
     frame.shown.map_or(1.0, |view| view.world_per_pixel)
 }
 
-/// The part of the world the scene's camera shows now, if it has shown any.
+/// Returns the part of the world the scene's camera shows now, if it has shown any.
 pub fn shown_area(frame: &CameraFrame, viewport: &SceneViewport, window: &Window) -> Option<Rect> {
     let size = viewport_rect(viewport, window).size();
     frame.shown.map(|view| view.area(size))
 }
 
-/// The state to draw this frame: between the last two fixed steps, by how far the clock has
-/// run past the last one.
+/// Returns the state to draw this frame, between the last two fixed steps.
+///
+/// It lies as far between them as the clock has run past the last one.
 pub fn interpolated_state(snapshots: &RenderSnapshots, fixed_time: &Time<Fixed>) -> BodyState {
     snapshots.interpolate(fixed_time.overstep_fraction_f64().clamp(0.0, 1.0))
 }
 
-/// `Transform` is written from the physics state for rendering only; physics never reads it.
+/// Writes each body's `Transform` from the physics state, for rendering only.
+///
+/// Physics never reads it.
 fn interpolate_body_transforms(
     fixed_time: Res<Time<Fixed>>,
     mut bodies: Query<(&RenderSnapshots, &mut Transform)>,
@@ -447,8 +463,10 @@ fn interpolate_body_transforms(
     }
 }
 
-/// Bands and bodies are never the same entity: said, so the two writers of `Transform` need
-/// no order between them.
+/// Places each band's pin at its anchor.
+///
+/// Bands and bodies are never the same entity: said, so the two writers of `Transform` need no
+/// order between them.
 fn place_band_pins(mut bands: Query<(&Band, &mut Transform), Without<RenderSnapshots>>) {
     for (band, mut transform) in &mut bands {
         transform.translation = band.ends.anchor.as_vec2().extend(transform.translation.z);
@@ -459,9 +477,10 @@ fn place_band_pins(mut bands: Query<(&Band, &mut Transform), Without<RenderSnaps
 mod tests {
     use super::*;
 
-    /// The camera keeps the box in view: while the box and the anchor lie well inside the home
-    /// frame it stays home; pulled out, it widens so that both lie inside, at every frame,
-    /// however fast, and comes home when they do.
+    /// Checks that the camera keeps the box in view and comes home.
+    ///
+    /// While the box and the anchor lie well inside the home frame it stays home; pulled out, it
+    /// widens so that both lie inside, at every frame, however fast, and comes home when they do.
     #[test]
     fn the_view_keeps_the_box_and_comes_home() {
         let size = Vec2::new(600.0, 500.0);

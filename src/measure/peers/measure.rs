@@ -23,7 +23,9 @@ pub const NAMES: [&str; 3] = [Ours::NAME, Avian::NAME, Rapier::NAME];
 /// The rates of the comparison: Bevy's default fixed rate and the tutorial's.
 pub const RATES: [f64; 2] = [64.0, 100.0];
 
-/// Interleaved rounds: the medians and the spread of the ratios are over these.
+/// Returns how many interleaved rounds to time.
+///
+/// The medians and the spread of the ratios are over these rounds.
 fn rounds(quick: bool) -> usize {
     if quick { 1 } else { 21 }
 }
@@ -35,20 +37,22 @@ pub struct PeerPoint {
     pub scene: &'static str,
     pub rate: f64,
     pub steps: u64,
-    /// Final pose error against the report's reference (px); None if the state went
-    /// non-finite.
+    /// Final pose error against the report's reference (px); None if the state went non-finite.
     pub error: Option<f64>,
     /// Largest |E − E0| / E0 over the run, on scenes where energy is an invariant.
     pub energy_drift: Option<f64>,
-    /// Wall time of one `App` update (one fixed step), in ns: the median over rounds of the
-    /// mean over the scored ticks but the first.
+    /// Wall time of one `App` update (one fixed step), in ns.
+    ///
+    /// The median over rounds of the mean over the scored ticks but the first.
     pub ns_per_tick: f64,
     /// This contender's tick over ours, round by round (1 for ours).
     pub tick_over_ours: Spread,
 }
 
-/// How a scripted run ended: its final state, the largest relative change of the energy, and
-/// its largest relative growth (both None when the run starts with no energy to compare with).
+/// How a scripted run ended.
+///
+/// Its final state, the largest relative change of the energy, and its largest relative
+/// growth (both None when the run starts with no energy to compare with).
 struct Accuracy {
     state: BodyState,
     drift: Option<f64>,
@@ -78,13 +82,16 @@ fn accuracy<C: Contender>(scene: &Scene, rate: f64, steps: u64) -> Accuracy {
     }
 }
 
-/// Ticks timed at least per repetition: a short scene is run again from the start until
-/// this many of its ticks have been timed.
+/// Ticks timed at least per repetition.
+///
+/// A short scene is run again from the start until this many of its ticks have been timed.
 const TIMED_TICKS: u64 = 100;
 
-/// One round's time per tick of contender `C` over `timed` ticks of fresh runs after each
-/// run's first tick, where every contender builds its own structures (how long:
-/// docs/peers.md): a game pays that once, not every tick. The `App`'s construction is untimed.
+/// Times one round of contender `C` and returns its time per tick.
+///
+/// The time is over `timed` ticks of fresh runs after each run's first tick, where every
+/// contender builds its own structures (how long: docs/peers.md): a game pays that once, not
+/// every tick. The `App`'s construction is untimed.
 fn round_ns<C: Contender>(scene: &Scene, rate: f64, timed: u64) -> f64 {
     let runs = TIMED_TICKS.div_ceil(timed);
     let mut total = Duration::ZERO;
@@ -99,8 +106,9 @@ fn round_ns<C: Contender>(scene: &Scene, rate: f64, timed: u64) -> f64 {
     total.as_nanos() as f64 / (runs * timed) as f64
 }
 
-/// Each contender's time per tick in each of `rounds` interleaved rounds, ours first, after
-/// one untimed run of each that warms caches and allocators.
+/// Returns each contender's time per tick in each of `rounds` interleaved rounds, ours first.
+///
+/// Before the rounds, one untimed run of each contender warms caches and allocators.
 fn interleaved(scene: &Scene, rate: f64, timed: u64, rounds: usize) -> Vec<[f64; 3]> {
     let timed = timed.max(1);
     let timers: [fn(&Scene, f64, u64) -> f64; 3] =
@@ -113,13 +121,15 @@ fn interleaved(scene: &Scene, rate: f64, timed: u64, rounds: usize) -> Vec<[f64;
         .collect()
 }
 
-/// The median time per tick of contender `index` over the rounds.
+/// Returns the median time per tick of contender `index` over the rounds.
 fn median_of(rounds: &[[f64; 3]], index: usize) -> f64 {
     median(rounds.iter().map(|round| round[index]).collect())
 }
 
-/// `scene` with every pull one fixed step later: the box rests through the first tick (the
-/// contenders' set-up, untimed), so that the ticks timed are exactly those of the original run.
+/// Returns `scene` with every pull one fixed step later.
+///
+/// The box rests through the first tick (the contenders' set-up, untimed), so that the ticks
+/// timed are exactly those of the original run.
 fn one_tick_later(scene: &Scene, rate: f64) -> Scene {
     let mut later = scene.clone();
     for pull in &mut later.pulls {
@@ -154,7 +164,7 @@ fn point<C: Contender>(
     }
 }
 
-/// Every contender on every scene of the work-precision sweep, at 64 and 100 Hz.
+/// Measures every contender on every scene of the work-precision sweep, at 64 and 100 Hz.
 pub fn side_by_side(quick: bool) -> Vec<PeerPoint> {
     let rounds = rounds(quick);
     let mut points = Vec::new();
@@ -178,15 +188,15 @@ pub struct PeerStiffPoint {
     pub k: f64,
     pub rate: f64,
     pub ns_per_tick: f64,
-    /// At the case's horizon, against its reference; None if non-finite or beyond any
-    /// horizon.
+    /// At the case's horizon, against its reference; None if non-finite or beyond any horizon.
     pub error: Option<f64>,
     /// Beyond any horizon: the largest (E − E0) / E0 of the undamped run; None if non-finite.
     pub energy_growth: Option<f64>,
     /// Whether every state of the run stayed finite.
     pub bounded: bool,
-    /// Our tick over the faster peer's in the same round, round by round (the same for every
-    /// contender of a case).
+    /// Our tick over the faster peer's in the same round, round by round.
+    ///
+    /// The same for every contender of a case.
     pub ours_over_fastest_peer: Spread,
 }
 
@@ -214,7 +224,7 @@ fn stiff_point<C: Contender>(
     }
 }
 
-/// The contenders across the stiffness sweep's cases.
+/// Measures the contenders across the stiffness sweep's cases.
 pub fn stiffness(cases: &[StiffCase], quick: bool) -> Vec<PeerStiffPoint> {
     let rounds = rounds(quick);
     cases
@@ -234,8 +244,9 @@ pub fn stiffness(cases: &[StiffCase], quick: bool) -> Vec<PeerStiffPoint> {
         .collect()
 }
 
-/// The floor under every contender's tick: an `App` with the same plugins and clock as theirs
-/// but no physics at all, timed as they are.
+/// Times the floor under every contender's tick: an `App` with no physics at all.
+///
+/// The `App` has the same plugins and clock as theirs and is timed as they are.
 fn empty_app_round_ns(rate: f64) -> f64 {
     let mut app = headless_app(rate);
     start(&mut app);
@@ -247,8 +258,10 @@ fn empty_app_round_ns(rate: f64) -> f64 {
     begin.elapsed().as_nanos() as f64 / TIMED_TICKS as f64
 }
 
-/// Our plugin's own cost: the tutorial scene's tick against an empty `App`'s, interleaved in
-/// rounds. The empty `App`'s median tick, and the ratio's spread.
+/// Measures our plugin's own cost: the tutorial scene's tick against an empty `App`'s.
+///
+/// The two are timed interleaved, in rounds. Returns the empty `App`'s median tick and the
+/// ratio's spread.
 pub fn tutorial_over_empty_app(rate: f64, quick: bool) -> (f64, Spread) {
     // The work scene's tutorial: its pull and release, ticks timed as in the side-by-side.
     let work = work_scenes()

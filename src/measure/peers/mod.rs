@@ -1,6 +1,6 @@
-//! The peers (issue #5): the report's scenes in the Bevy physics crates avian2d and
-//! bevy_rapier2d, each in a headless `App` beside our own plugin, driven by the same scripted pulls so that
-//! the report can measure error, energy drift and the cost of a tick side by side.
+//! The peers (issue #5): the report's scenes in the Bevy physics crates avian2d and bevy_rapier2d,
+//! each in a headless `App` beside our own plugin, driven by the same scripted pulls so that the
+//! report can measure error, energy drift and the cost of a tick side by side.
 //!
 //! Compiled only with the `peers` feature: the game, the tests and CI never build these crates.
 
@@ -19,25 +19,28 @@ use crate::game::simulation::run_single_threaded;
 use crate::physics::scenes::{BandChange, PullSchedule};
 use crate::physics::{BandEnds, BodyState, MassProperties, Scene, SceneParams};
 
-/// A contender (our plugin or a peer) holding the scene in a headless `App` that takes exactly
-/// one fixed step per `update()`.
+/// A contender (our plugin or a peer) holding the scene in a headless `App`.
+///
+/// The `App` takes exactly one fixed step per `update()`.
 pub trait Contender {
     /// Short name for tables and plots.
     const NAME: &'static str;
 
-    /// The box of `params` at `initial`, no band, stepping at `rate_hz`.
+    /// Builds the contender with the box of `params` at `initial`, no band, stepping at `rate_hz`.
     fn new(params: &SceneParams, initial: BodyState, rate_hz: f64) -> Self;
 
     /// Attaches the band (or moves it), or removes it with `None`.
     fn set_band(&mut self, band: Option<BandEnds>);
 
-    /// The box's state as the contender holds it now, in f64.
+    /// Returns the box's state as the contender holds it now, in f64.
     fn state(&mut self) -> BodyState;
 
     fn app(&mut self) -> &mut App;
 }
 
-/// `MinimalPlugins` on a manual clock that advances exactly one fixed step per update.
+/// Builds a headless `App`: `MinimalPlugins` on a manual clock.
+///
+/// The clock advances exactly one fixed step per update.
 pub fn headless_app(rate_hz: f64) -> App {
     let step = Duration::from_secs_f64(1.0 / rate_hz);
     let mut app = App::new();
@@ -47,10 +50,11 @@ pub fn headless_app(rate_hz: f64) -> App {
     app
 }
 
-/// Finishes the app, runs its first update (which only starts the clock and runs `Startup`)
-/// and puts every schedule on the single-threaded executor, so that all contenders pay the
-/// same, smallest, scheduling cost (on two cores the multi-threaded one costs far more for a
-/// scene this small: docs/benchmarks.md).
+/// Finishes the app, runs its first update and puts every schedule on the single-threaded executor.
+///
+/// The first update only starts the clock and runs `Startup`. The single-threaded executor
+/// makes all contenders pay the same, smallest, scheduling cost (on two cores the
+/// multi-threaded one costs far more for a scene this small: docs/benchmarks.md).
 pub fn start(app: &mut App) {
     app.finish();
     app.cleanup();
@@ -58,8 +62,10 @@ pub fn start(app: &mut App) {
     run_single_threaded(app);
 }
 
-/// A scripted run of a scene on a contender: the same pulls, at the same steps, attached
-/// to the corner nearest the target at the pull's first step, as [`crate::physics::Run`].
+/// A scripted run of a scene on a contender.
+///
+/// It has the same pulls, at the same steps, attached to the corner nearest the target at the
+/// pull's first step, as [`crate::physics::Run`].
 pub struct PeerRun<C: Contender> {
     pub contender: C,
     pub mass: MassProperties,
@@ -97,9 +103,10 @@ impl<C: Contender> PeerRun<C> {
         self.contender.set_band(self.band);
     }
 
-    /// One fixed step (one `App` update), then the pulls for the next. The state is read
-    /// after every step, so that peers that keep the rotation as (cos, sin) count whole
-    /// turns (see [`unwrap_angle`]); every contender pays the same small read.
+    /// Takes one fixed step (one `App` update), then applies the pulls for the next.
+    ///
+    /// The state is read after every step, so that peers that keep the rotation as (cos, sin)
+    /// count whole turns (see [`unwrap_angle`]); every contender pays the same small read.
     pub fn advance(&mut self) {
         self.contender.app().update();
         self.step += 1;
@@ -118,8 +125,10 @@ impl<C: Contender> PeerRun<C> {
     }
 }
 
-/// The angle equal to `wrapped` modulo 2π that is nearest `previous`: peers that keep a
-/// rotation as (cos, sin) give it back in (−π, π]; our orientation counts whole turns.
+/// Returns the angle equal to `wrapped` modulo 2π that is nearest `previous`.
+///
+/// Peers that keep a rotation as (cos, sin) give it back in (−π, π]; our orientation counts
+/// whole turns.
 pub fn unwrap_angle(previous: f64, wrapped: f64) -> f64 {
     let turn = std::f64::consts::TAU;
     wrapped + ((previous - wrapped) / turn).round() * turn

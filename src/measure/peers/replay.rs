@@ -26,7 +26,7 @@ pub struct PeerReplay<'a, C: Contender> {
 }
 
 impl<'a, C: Contender> PeerReplay<'a, C> {
-    /// Each recorded step as `substeps` fixed steps.
+    /// Starts the replay on `C`, taking each recorded step as `substeps` fixed steps.
     pub fn new(replay: &'a Replay, substeps: u32) -> Self {
         let settings = replay.header.settings;
         let substeps = substeps.max(1);
@@ -100,11 +100,13 @@ fn build<C: Contender>(settings: &Settings, substeps: u32, state: BodyState) -> 
 pub struct PeerReplayPoint {
     pub contender: &'static str,
     pub substeps: u32,
-    /// The largest corner distance from the reference over the game (px); None if a state
-    /// went non-finite.
+    /// The largest corner distance from the reference over the game (px).
+    ///
+    /// None if a state went non-finite.
     pub error: Option<f64>,
-    /// Wall time per simulated second of the whole replay (building the `App`s included: a
-    /// settings change costs a peer that much in a game too).
+    /// Wall time per simulated second of the whole replay, building the `App`s included.
+    ///
+    /// A settings change costs a peer that much in a game too.
     pub ns_per_simulated_second: f64,
 }
 
@@ -140,7 +142,7 @@ fn point<C: Contender>(
     }
 }
 
-/// Every contender on `replay` at each subdivision, against `reference`.
+/// Measures every contender on `replay` at each subdivision, against `reference`.
 pub fn sweep(
     replay: &Replay,
     subdivisions: &[u32],

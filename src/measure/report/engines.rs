@@ -6,8 +6,9 @@ use crate::measure::timing::median_ns;
 
 use super::table::{Cell, Column, Table, or_empty};
 
-/// The engine comparison: each candidate at several settings on the stiff pulls at 100 Hz,
-/// error at the horizon against the reference, cost per fixed step of the core alone.
+/// The engine comparison: each candidate at several settings on the stiff pulls at 100 Hz.
+///
+/// Error at the horizon against the reference, cost per fixed step of the core alone.
 pub struct EnginePoint {
     pub k: f64,
     pub engine: Engine,
@@ -54,7 +55,7 @@ fn engines_compared(cases: &[StiffCase], quick: bool) -> Vec<EnginePoint> {
     points
 }
 
-/// A line per case and engine.
+/// Builds the engine comparison's table: a line per case and engine.
 pub(super) fn table(cases: &[StiffCase], quick: bool) -> Table {
     let mut table = Table::new(
         "Engines for auto: candidates on the stiff pulls at 100 Hz, restarted every fixed \

@@ -14,8 +14,9 @@ pub struct HardCase {
     pub steps: u64,
 }
 
-/// The stiff band at 100 and 64 Hz over k, then the hard scenes (`undamped` ten times shorter
-/// when `quick`).
+/// Builds the hard cases: the stiff band at 100 and 64 Hz over k, then the hard scenes.
+///
+/// `undamped` runs ten times shorter when `quick`.
 pub fn hard_cases(quick: bool) -> Vec<HardCase> {
     let named = |name: &str| Scene::named(name).expect("built-in");
     let mut cases = Vec::new();
@@ -50,7 +51,9 @@ pub fn hard_cases(quick: bool) -> Vec<HardCase> {
     cases
 }
 
-/// For each hard case and integrator: `None` if bounded throughout, else the diverging step.
+/// Runs every hard case with each integrator.
+///
+/// For each case and integrator: `None` if bounded throughout, else the diverging step.
 fn run_hard_cases(quick: bool) -> Vec<(HardCase, Vec<Option<u64>>)> {
     hard_cases(quick)
         .into_iter()
@@ -67,7 +70,9 @@ fn run_hard_cases(quick: bool) -> Vec<(HardCase, Vec<Option<u64>>)> {
         .collect()
 }
 
-/// A line per case, one column per integrator; the CSV a row per case and integrator.
+/// Builds the hard cases' table: a line per case, one column per integrator.
+///
+/// The CSV has a row per case and integrator.
 pub(super) fn table(quick: bool) -> Table {
     let mut table = Table::new(
         "Hard cases: bounded (ok) or diverged at step N",

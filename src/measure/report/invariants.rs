@@ -9,8 +9,10 @@ use super::table::{Cell, Column, Table, diverged};
 /// Largest energy error and angular momentum change, or the step where the run diverged.
 type InvariantDrift = Result<(f64, f64), u64>;
 
-/// The undamped stiff band (k = 1e5, 100 Hz, 10 s): the largest energy error relative to the
-/// energy the band put in, and the largest change of the angular momentum about the anchor.
+/// Measures the undamped stiff band's invariants (k = 1e5, 100 Hz, 10 s) for every integrator.
+///
+/// They are the largest energy error relative to the energy the band put in, and the largest
+/// change of the angular momentum about the anchor.
 fn stiff_invariants(quick: bool) -> Vec<(Integrator, InvariantDrift)> {
     let mut scene = Scene::named("undamped").expect("built-in");
     scene.params.stiffness = 1e5;
@@ -36,7 +38,7 @@ fn stiff_invariants(quick: bool) -> Vec<(Integrator, InvariantDrift)> {
         .collect()
 }
 
-/// A line per integrator, in the Markdown only.
+/// Builds the invariants' table: a line per integrator, in the Markdown only.
 pub(super) fn table(quick: bool) -> Table {
     let mut table = Table::new(
         "Undamped stiff band (k = 1e5, 100 Hz, 10 s): largest energy error relative to the \

@@ -6,8 +6,9 @@ use crate::physics::{Integrator, Run, Scene};
 
 use super::table::{Cell, Column, Table, diverged};
 
-/// The largest |ledger residual| over a run, relative to the energy that passed through, or
-/// the step where the run diverged.
+/// Returns the largest |ledger residual| over a run, relative to the energy that passed through.
+///
+/// If the run diverged, returns the step where it did instead.
 fn ledger_residual(scene: &Scene, integrator: Integrator, steps: u64) -> Result<f64, u64> {
     let mut run = Run::of(scene, integrator, 0.01).expect("valid");
     let mut worst: f64 = 0.0;
@@ -18,7 +19,7 @@ fn ledger_residual(scene: &Scene, integrator: Integrator, steps: u64) -> Result<
     Ok(worst / run.ledger.throughput())
 }
 
-/// A line per integrator, in the Markdown only.
+/// Builds the energy ledger's table: a line per integrator, in the Markdown only.
 pub(super) fn table(quick: bool) -> Table {
     let mut table = Table::new(
         "Energy ledger at 100 Hz: largest |residual| relative to the energy that passed \

@@ -45,12 +45,12 @@ pub struct ReportArgs {
     /// A reduced sweep that runs in well under a minute (CI's smoke test).
     #[arg(long)]
     pub quick: bool,
-    /// Also run avian2d and bevy_rapier2d side by side with our plugin (needs a build with
-    /// `--features peers`).
+    /// Also run avian2d and bevy_rapier2d beside ours (needs a build with `--features peers`).
     #[arg(long)]
     pub peers: bool,
-    /// Only the sweep on a recorded game (`play --record`): every integrator at the recorded
-    /// step rate and finer, against the tightest reference.
+    /// Only the sweep on a recorded game (`play --record`).
+    ///
+    /// Every integrator at the recorded step rate and finer, against the tightest reference.
     #[arg(long, value_name = "FILE")]
     pub replay: Option<PathBuf>,
 }
@@ -123,7 +123,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     write(&args.out, &tables, started)
 }
 
-/// Every table's CSV file, then `report.md`, the tables one after another (also printed).
+/// Writes every table's CSV file, then `report.md`, the tables one after another (also printed).
 fn write(out: &Path, tables: &[Table], started: Instant) -> Result<(), Box<dyn Error>> {
     let mut markdown = Vec::new();
     for table in tables {

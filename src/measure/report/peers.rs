@@ -12,10 +12,11 @@ use super::plots::{ExtraLines, Line};
 use super::stiffness::{case_cells, horizon_cells};
 use super::table::{Cell, Column, Table, or_empty};
 
-/// The targets of `auto` beside the peers at band stiffness k: the largest error at the
-/// horizon (None beyond any horizon: bounded, and no energy growth undamped instead) and the
-/// largest ratio of our tick to the fastest peer's. None below k = 1e3 (the tutorial scene's
-/// own target is in the side-by-side table).
+/// Returns the targets of `auto` beside the peers at band stiffness k.
+///
+/// They are the largest error at the horizon (None beyond any horizon: bounded, and no energy
+/// growth undamped instead) and the largest ratio of our tick to the fastest peer's. None below
+/// k = 1e3 (the tutorial scene's own target is in the side-by-side table).
 fn stiff_target(k: f64) -> Option<(Option<f64>, f64)> {
     if k < 1e3 {
         None
@@ -28,8 +29,10 @@ fn stiff_target(k: f64) -> Option<(Option<f64>, f64)> {
     }
 }
 
-/// A contender's colour in the plots: dark, unlike the integrators' palette, black for ours,
-/// brown and grey for the peers.
+/// Returns a contender's colour in the plots.
+///
+/// The colours are dark, unlike the integrators' palette: black for ours, brown and grey for the
+/// peers.
 fn colour(name: &str) -> RGBAColor {
     let index = NAMES.iter().position(|&n| n == name).unwrap_or(0);
     [
@@ -40,7 +43,7 @@ fn colour(name: &str) -> RGBAColor {
         .to_rgba()
 }
 
-/// A contender's line in a plot: triangles, its whole `App` tick.
+/// Builds a contender's line in a plot: triangles, its whole `App` tick.
 fn line(name: &str, points: Vec<(f64, f64)>) -> Line {
     Line {
         label: format!("{name} (App tick)"),
@@ -50,7 +53,7 @@ fn line(name: &str, points: Vec<(f64, f64)>) -> Line {
     }
 }
 
-/// The side-by-side's two tables, and the contenders' lines for the two plots.
+/// Builds the side-by-side's two tables, and the contenders' lines for the two plots.
 pub(super) fn section(cases: &[StiffCase], quick: bool) -> (Vec<Table>, ExtraLines) {
     let (work_table, work) = work_scenes_side_by_side(quick);
     let (stiffness_table, stiffness) = stiffness_side_by_side(cases, quick);
@@ -60,8 +63,9 @@ pub(super) fn section(cases: &[StiffCase], quick: bool) -> (Vec<Table>, ExtraLin
     )
 }
 
-/// Every contender on the work scenes at 64 and 100 Hz, a line each, with the ratios to ours;
-/// then how an empty `App` ticks.
+/// Tabulates every contender on the work scenes at 64 and 100 Hz, a line each.
+///
+/// The table gives the ratios to ours, then notes how an empty `App` ticks.
 fn work_scenes_side_by_side(quick: bool) -> (Table, Vec<(&'static str, Line)>) {
     let short = |value: Option<f64>| value.map_or("-".to_owned(), |v| format!("{v:.1e}"));
     let points = measure::side_by_side(quick);
@@ -135,8 +139,10 @@ fn work_scenes_side_by_side(quick: bool) -> (Table, Vec<(&'static str, Line)>) {
     (table, lines)
 }
 
-/// Every contender on the stiffness sweep's cases, a line per case, with our tick over the
-/// fastest peer's and the targets; the CSV a row per case and contender.
+/// Tabulates every contender on the stiffness sweep's cases, a line per case.
+///
+/// The table gives our tick over the fastest peer's and the targets; the CSV has a row per
+/// case and contender.
 fn stiffness_side_by_side(cases: &[StiffCase], quick: bool) -> (Table, [Vec<Line>; 2]) {
     let stiff = measure::stiffness(cases, quick);
     let mut table = Table::new(
@@ -232,8 +238,10 @@ fn stiffness_side_by_side(cases: &[StiffCase], quick: bool) -> (Table, [Vec<Line
     (table, [cost, error])
 }
 
-/// `report --replay FILE --peers`: the contenders on the recorded hand at the recorded rate
-/// and finer, against the replay sweep's reference (`peers_replay.csv`).
+/// Tabulates the contenders on the recorded hand, for `report --replay FILE --peers`.
+///
+/// They run at the recorded rate and finer, against the replay sweep's reference
+/// (`peers_replay.csv`).
 pub(super) fn replay_table(
     recorded: &crate::replay::Replay,
     reference: &crate::measure::references::ReplayReference,

@@ -37,9 +37,10 @@ impl Line {
     }
 }
 
-/// Lines from outside the core's integrators (the contenders in their `App`s), to draw beside
-/// them: by scene in
-/// the work-precision plot, and in the stiffness plot's cost and error panels.
+/// Lines from outside the core's integrators, to draw beside them.
+///
+/// They are the contenders' (in their `App`s): by scene in the work-precision plot, and in the
+/// stiffness plot's cost and error panels.
 #[derive(Default)]
 pub struct ExtraLines {
     pub work: Vec<(&'static str, Line)>,
@@ -101,8 +102,10 @@ fn draw_panel(
     Ok(())
 }
 
-/// A panel's legend, in its strip: each line's mark (a dot or a triangle on a stroke) and
-/// name, top to bottom, level with the axes' top.
+/// Draws a panel's legend, in its strip.
+///
+/// It lists each line's mark (a dot or a triangle on a stroke) and name, top to bottom, level with
+/// the axes' top.
 fn draw_legend(
     area: &DrawingArea<SVGBackend<'_>, Shift>,
     lines: &[Line],
@@ -125,15 +128,17 @@ fn draw_legend(
     Ok(())
 }
 
-/// Smallest and largest of some positive values.
+/// Returns the smallest and largest of some positive values.
 fn extent(values: impl Iterator<Item = f64>) -> (f64, f64) {
     values.fold((f64::INFINITY, 0.0), |(low, high), v| {
         (low.min(v), high.max(v))
     })
 }
 
-/// Error (log x) against cost (log y), a panel per scene, a line per integrator (and per
-/// contender: `extra`, by scene); diverged runs are red crosses at the right edge.
+/// Plots error (log x) against cost (log y), a panel per scene, a line per integrator.
+///
+/// There is also a line per contender (`extra`, by scene); diverged runs are red crosses at the
+/// right edge.
 pub(super) fn plot_work_precision(
     points: &[WorkPoint],
     mut extra: Vec<(&'static str, Line)>,
@@ -185,8 +190,9 @@ pub(super) fn plot_work_precision(
     Ok(())
 }
 
-/// Cost per step and error against k at 100 Hz, a line per integrator; `extra` holds the
-/// contenders' lines for the two panels (cost, error).
+/// Plots cost per step and error against k at 100 Hz, a line per integrator.
+///
+/// `extra` holds the contenders' lines for the two panels (cost, error).
 pub(super) fn plot_stiffness(
     points: &[StiffPoint],
     extra: [Vec<Line>; 2],

@@ -13,12 +13,12 @@ use crate::replay::Replay;
 use super::table::{Cell, Column, Table};
 use super::work_precision::WorkPoint;
 
-/// How many steps per recorded step each run takes.
+/// Returns the subdivisions: how many steps per recorded step each run takes.
 pub(super) fn subdivisions(quick: bool) -> &'static [u32] {
     if quick { &[1, 4] } else { &[1, 2, 4, 8, 16] }
 }
 
-/// One point per integrator and rate.
+/// Runs the sweep on the recorded game: one point per integrator and rate.
 pub(super) fn sweep(replay: &Replay, reference: &ReplayReference, quick: bool) -> Vec<WorkPoint> {
     let mut points = Vec::new();
     for &substeps in subdivisions(quick) {
@@ -47,7 +47,7 @@ pub(super) fn sweep(replay: &Replay, reference: &ReplayReference, quick: bool) -
     points
 }
 
-/// One column per integrator, a line per rate.
+/// Builds the replay's table: one column per integrator, a line per rate.
 pub(super) fn table(replay: &Replay, name: &str, points: &[WorkPoint]) -> Table {
     let mut table = Table::new(
         format!(

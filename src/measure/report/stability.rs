@@ -7,7 +7,7 @@ use crate::physics::{Integrator, Run, Scene, SceneParams};
 
 use super::table::{Cell, Column, Table};
 
-/// Whether the tutorial scene with the band held at stiffness `k` stays bounded for 20 s.
+/// Tells whether the tutorial scene with the band held at stiffness `k` stays bounded for 20 s.
 fn stable_at(integrator: Integrator, k: f64, rate: f64) -> bool {
     let mut scene = Scene::named("tutorial").expect("built-in");
     scene.params.stiffness = k;
@@ -29,7 +29,7 @@ pub struct StabilityRow {
 }
 
 impl StabilityRow {
-    /// ω·dt of the stiffest mode, ω = 2·sqrt(k/m), at the largest stable k.
+    /// Returns ω·dt of the stiffest mode, ω = 2·sqrt(k/m), at the largest stable k.
     pub fn omega_dt(&self) -> Option<f64> {
         let mass = SceneParams::tutorial().mass;
         self.largest_stable_k
@@ -37,16 +37,18 @@ impl StabilityRow {
     }
 }
 
-/// Steps of log10 k in the scan: a coarse pass, then a fine one from the last coarse k
-/// that held.
+/// Steps of log10 k in the scan.
+///
+/// A coarse pass, then a fine one from the last coarse k that held.
 const COARSE: f64 = 0.25;
 const FINE: f64 = 0.01;
 
-/// The largest k, scanning upward from 1e-2, below which every k tried holds: a coarse pass
-/// to the first failure, then a fine one from the last k that held to the next failure.
-/// Scanning, not bisecting: above the first failure lie islands of stability (the box swings
-/// onto the band's line, where the stiffest mode is half as fast), and a bisection that lands
-/// in one reports a limit that a last-bit change moves by 0.4 in ω·dt.
+/// Finds the largest k, scanning upward from 1e-2, below which every k tried holds.
+///
+/// A coarse pass runs to the first failure, then a fine one from the last k that held to the
+/// next failure. Scanning, not bisecting: above the first failure lie islands of stability
+/// (the box swings onto the band's line, where the stiffest mode is half as fast), and a
+/// bisection that lands in one reports a limit that a last-bit change moves by 0.4 in ω·dt.
 fn largest_stable_k(integrator: Integrator, rate: f64) -> Option<f64> {
     if stable_at(integrator, STIFFEST_TRIED, rate) {
         return None;
@@ -79,7 +81,9 @@ fn stability_table() -> Vec<StabilityRow> {
     rows
 }
 
-/// A line per integrator, k and ω·dt side by side for each rate; the CSV a row per rate.
+/// Builds the stability table: a line per integrator, k and ω·dt side by side for each rate.
+///
+/// The CSV has a row per rate of each integrator.
 pub(super) fn table() -> Table {
     let mut table = Table::new(
         "Stability: largest stable k (tutorial scene, band held, 20 s)",

@@ -16,8 +16,10 @@ pub struct StiffPoint {
     pub rate: f64,
     pub integrator: Integrator,
     pub ns_per_tick: f64,
-    /// Pose error at the horizon against the case's reference (Taylor series of order 24 at
-    /// 1e-15 px); None if diverged or beyond any horizon.
+    /// Pose error at the horizon against the case's reference.
+    ///
+    /// The reference is the Taylor series of order 24 at 1e-15 px. None if diverged or beyond
+    /// any horizon.
     pub error: Option<f64>,
     /// Beyond any horizon: the largest (E − E0) / E0 of the undamped run (positive: it grew).
     pub energy_growth: Option<f64>,
@@ -27,7 +29,7 @@ pub struct StiffPoint {
     pub fallbacks: u64,
 }
 
-/// The k swept, 20 to 1e12.
+/// Returns the k swept, 20 to 1e12.
 pub fn ks_swept(quick: bool) -> &'static [f64] {
     if quick {
         &[20.0, 1e5, 1e9]
@@ -39,7 +41,7 @@ pub fn ks_swept(quick: bool) -> &'static [f64] {
 /// The rates of the stiffness sweep.
 pub const SWEEP_RATES: [f64; 2] = [100.0, 64.0];
 
-/// Every case of the stiffness sweep, references computed once.
+/// Builds every case of the stiffness sweep, its references computed once.
 pub fn stiff_cases(quick: bool) -> Vec<StiffCase> {
     SWEEP_RATES
         .iter()
@@ -51,7 +53,7 @@ pub fn stiff_cases(quick: bool) -> Vec<StiffCase> {
         .collect()
 }
 
-/// Every integrator on every case, in the cases' order.
+/// Runs every integrator on every case, in the cases' order.
 pub(super) fn sweep(cases: &[StiffCase], quick: bool) -> Vec<StiffPoint> {
     let mut points = Vec::new();
     for case in cases {
@@ -101,8 +103,10 @@ pub(super) fn sweep(cases: &[StiffCase], quick: bool) -> Vec<StiffPoint> {
     points
 }
 
-/// The horizon and the references' agreement of a case: the first two cells after k and the
-/// rate in the stiffness tables, ours and the side-by-side's.
+/// Builds the cells of a case's horizon and of its references' agreement.
+///
+/// They are the first two cells after k and the rate in the stiffness tables, ours and the
+/// side-by-side's.
 pub(super) fn horizon_cells(case: &StiffCase) -> [Cell; 2] {
     let seconds = case.seconds();
     let agreement = case.reference.map(|r| r.agreement);
@@ -118,7 +122,7 @@ pub(super) fn horizon_cells(case: &StiffCase) -> [Cell; 2] {
     }
 }
 
-/// k and the rate, the first cells of the stiffness tables.
+/// Builds the cells of k and the rate, the first cells of the stiffness tables.
 pub(super) fn case_cells(k: f64, rate: f64) -> [Cell; 2] {
     [
         Cell::new(format!("{k:e}"), k.to_string()),
@@ -126,7 +130,9 @@ pub(super) fn case_cells(k: f64, rate: f64) -> [Cell; 2] {
     ]
 }
 
-/// A line per case, one column per integrator; the CSV a row per case and integrator.
+/// Builds the stiffness table: a line per case, one column per integrator.
+///
+/// The CSV has a row per case and integrator.
 pub(super) fn table(cases: &[StiffCase], points: &[StiffPoint]) -> Table {
     let mut table = Table::new(
         format!(

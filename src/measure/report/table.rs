@@ -14,7 +14,7 @@ pub struct Column {
 }
 
 impl Column {
-    /// In both forms.
+    /// Builds a column in both forms.
     pub fn new(markdown: &str, csv: &'static str) -> Self {
         Self {
             markdown: Some(markdown.to_owned()),
@@ -23,7 +23,7 @@ impl Column {
         }
     }
 
-    /// In the Markdown only.
+    /// Builds a column in the Markdown only.
     pub fn markdown(name: &str) -> Self {
         Self {
             markdown: Some(name.to_owned()),
@@ -32,7 +32,7 @@ impl Column {
         }
     }
 
-    /// In the CSV only.
+    /// Builds a column in the CSV only.
     pub fn csv(name: &'static str) -> Self {
         Self {
             markdown: None,
@@ -41,15 +41,17 @@ impl Column {
         }
     }
 
-    /// Shown in the Markdown once per value of the table's `across` column, its name there
-    /// with `{}` standing for that value.
+    /// Shows the column in the Markdown once per value of the table's `across` column.
+    ///
+    /// Its name there has `{}` standing for that value.
     pub fn each(self) -> Self {
         Self { each: true, ..self }
     }
 }
 
-/// One cell: its Markdown text and its CSV text (written as given: see [`quoted`]). A column
-/// absent from one form ignores that text.
+/// One cell: its Markdown text and its CSV text (written as given: see [`quoted`]).
+///
+/// A column absent from one form ignores that text.
 pub struct Cell {
     markdown: String,
     csv: String,
@@ -63,45 +65,46 @@ impl Cell {
         }
     }
 
-    /// The same text in both forms.
+    /// Builds a cell with the same text in both forms.
     pub fn same(value: impl Display) -> Self {
         let text = value.to_string();
         Self::new(text.clone(), text)
     }
 
-    /// For a column in the Markdown only.
+    /// Builds a cell for a column in the Markdown only.
     pub fn markdown(text: impl Into<String>) -> Self {
         Self::new(text, "")
     }
 
-    /// For a column in the CSV only.
+    /// Builds a cell for a column in the CSV only.
     pub fn csv(value: impl Display) -> Self {
         Self::new("", value.to_string())
     }
 
-    /// For a column in the CSV only: empty when absent.
+    /// Builds a cell for a column in the CSV only: empty when absent.
     pub fn csv_option(value: Option<impl Display>) -> Self {
         Self::new("", or_empty(value))
     }
 }
 
-/// An optional CSV field: empty when absent.
+/// Formats an optional CSV field: empty when absent.
 pub fn or_empty(value: Option<impl Display>) -> String {
     value.map_or(String::new(), |v| v.to_string())
 }
 
-/// A CSV field that may hold commas, in quotes.
+/// Quotes a CSV field that may hold commas.
 pub fn quoted(text: &str) -> String {
     format!("\"{}\"", text.replace('"', "\"\""))
 }
 
-/// The Markdown cell of a run that diverged at `step`.
+/// Formats the Markdown cell of a run that diverged at `step`.
 pub fn diverged(step: u64) -> String {
     format!("diverged @{step}")
 }
 
-/// One table of the report: a heading, the columns, the rows, and the CSV file it is written
-/// to (none for a table shown only in the Markdown).
+/// One table of the report: a heading, the columns, the rows, and the CSV file it is written to.
+///
+/// There is no file for a table shown only in the Markdown.
 pub struct Table {
     heading: String,
     file: Option<&'static str>,
@@ -127,10 +130,11 @@ impl Table {
         }
     }
 
-    /// A wide Markdown table over a long CSV: consecutive rows that differ only in this
-    /// column (a CSV-only one) and in the `each` columns share one Markdown line, which shows
-    /// their `each` cells side by side, a set per value of this column (its cells' Markdown
-    /// text). The CSV keeps a line per row.
+    /// Spreads the Markdown across this column: a wide Markdown table over a long CSV.
+    ///
+    /// Consecutive rows that differ only in this column (a CSV-only one) and in the `each`
+    /// columns share one Markdown line, which shows their `each` cells side by side, a set per
+    /// value of this column (its cells' Markdown text). The CSV keeps a line per row.
     pub fn across(self, column: usize) -> Self {
         Self {
             across: Some(column),
@@ -138,24 +142,24 @@ impl Table {
         }
     }
 
-    /// A row: a cell per column, in the columns' order.
+    /// Adds a row: a cell per column, in the columns' order.
     pub fn row(&mut self, cells: Vec<Cell>) {
         assert_eq!(cells.len(), self.columns.len(), "{}", self.heading);
         self.rows.push(cells);
     }
 
-    /// A line of prose under the table, in the Markdown only (the side-by-side's).
+    /// Adds a line of prose under the table, in the Markdown only (the side-by-side's).
     #[cfg_attr(not(feature = "peers"), allow(dead_code))]
     pub fn note(&mut self, line: impl Display) {
         self.note += &format!("{line}\n");
     }
 
-    /// The CSV file to write, if any.
+    /// Returns the CSV file to write, if any.
     pub fn file(&self) -> Option<&'static str> {
         self.file
     }
 
-    /// The CSV: the header, then a line per row.
+    /// Builds the CSV: the header, then a line per row.
     pub fn csv(&self) -> String {
         let columns: Vec<usize> = (0..self.columns.len())
             .filter(|&c| self.columns[c].csv.is_some())
@@ -171,12 +175,12 @@ impl Table {
         text
     }
 
-    /// A row's value of the `across` column, as the Markdown shows it.
+    /// Returns a row's value of the `across` column, as the Markdown shows it.
     fn value_of<'a>(&self, row: &'a [Cell]) -> &'a str {
         self.across.map_or("", |a| row[a].markdown.as_str())
     }
 
-    /// The heading, the table, and the notes after a blank line.
+    /// Builds the Markdown: the heading, the table, and the notes after a blank line.
     pub fn markdown(&self) -> String {
         let mut values: Vec<&str> = Vec::new();
         for row in &self.rows {
@@ -234,12 +238,12 @@ impl Table {
     }
 }
 
-/// `fields` joined by commas, then a newline.
+/// Joins `fields` with commas and ends the line with a newline.
 fn csv_line<'a>(fields: impl Iterator<Item = &'a str>) -> String {
     fields.collect::<Vec<_>>().join(",") + "\n"
 }
 
-/// A Markdown line, `| a | b |`, an empty cell as `| |`.
+/// Formats `cells` as a Markdown line, `| a | b |`, an empty cell as `| |`.
 fn cells_line<'a>(cells: impl Iterator<Item = &'a str>) -> String {
     let mut text = String::from("|");
     for cell in cells {
@@ -256,7 +260,7 @@ fn cells_line<'a>(cells: impl Iterator<Item = &'a str>) -> String {
 mod tests {
     use super::*;
 
-    /// Two rows per line in the Markdown, one each in the CSV; an empty cell stays `| |`.
+    /// Checks two rows per line in the Markdown and one each in the CSV; an empty cell stays `| |`.
     #[test]
     fn a_wide_markdown_table_over_a_long_csv() {
         let mut table = Table::new(

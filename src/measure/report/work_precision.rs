@@ -8,7 +8,7 @@ use crate::physics::{Integrator, Run};
 
 use super::table::{Cell, Column, Table, diverged};
 
-/// The steps swept, from 1/30 s to 1/10000 s.
+/// Returns the steps swept, from 1/30 s to 1/10000 s.
 fn steps_swept(quick: bool) -> Vec<f64> {
     let rates: &[f64] = if quick {
         &[30.0, 100.0, 1000.0]
@@ -33,7 +33,7 @@ pub struct WorkPoint {
 }
 
 impl WorkPoint {
-    /// The Markdown cell: "error, dE drift / cost", or where it diverged.
+    /// Formats the Markdown cell: "error, dE drift / cost", or where it diverged.
     pub(super) fn outcome(&self) -> String {
         match (self.error, self.diverged_at) {
             (Some(error), _) => {
@@ -48,7 +48,7 @@ impl WorkPoint {
     }
 }
 
-/// Every work scene, step and integrator, in that order.
+/// Runs the sweep over every work scene, step and integrator, in that order.
 pub(super) fn sweep(quick: bool) -> Vec<WorkPoint> {
     let mut points = Vec::new();
     for work in work_scenes() {
@@ -96,7 +96,9 @@ pub(super) fn sweep(quick: bool) -> Vec<WorkPoint> {
     points
 }
 
-/// One column per integrator, a line per scene and step; the CSV a row per point.
+/// Builds the work-precision table: one column per integrator, a line per scene and step.
+///
+/// The CSV has a row per point.
 pub(super) fn table(points: &[WorkPoint]) -> Table {
     let mut table = Table::new(
         "Work-precision (final pose error in px; cost in ns per simulated second)",

@@ -12,7 +12,9 @@ use super::taylor::{self, TaylorSettings};
 use crate::physics::body::BodyState;
 use crate::physics::forces::ForceModel;
 
-/// The settings of `auto`; defaults from the report's engine comparison and stiffness sweep
+/// The settings of `auto`.
+///
+/// The defaults come from the report's engine comparison and stiffness sweep
 /// (docs/integrators.md).
 #[derive(Resource, Clone, Copy, Debug, PartialEq)]
 pub struct AutoSettings {
@@ -20,8 +22,9 @@ pub struct AutoSettings {
     pub tolerance: f64,
     /// The order of the Taylor series.
     pub order: usize,
-    /// Most Taylor steps per fixed step before falling back to `implicit`. Counted in steps,
-    /// not measured time, so that runs stay bit-identical everywhere.
+    /// Most Taylor steps per fixed step before falling back to `implicit`.
+    ///
+    /// Counted in steps, not measured time, so that runs stay bit-identical everywhere.
     pub max_substeps: u32,
 }
 
@@ -35,7 +38,7 @@ impl Default for AutoSettings {
     }
 }
 
-/// One fixed step of `auto`.
+/// Advances `state` by one fixed step of `auto`.
 pub fn auto_step(
     state: &mut BodyState,
     model: &ForceModel,

@@ -28,6 +28,7 @@ type Vector = Components;
 // The tableau, as SciPy's `dop853_coefficients.py` gives it (printed to f64 by a script);
 // the nodes c are not needed: the scene's forces do not depend on time within a step.
 /// Row i: the coefficients of stages 0..i in stage i (explicit: zero on and above the diagonal).
+///
 /// The tableau is public so that a test can check its order conditions.
 #[rustfmt::skip]
 pub const A: [[f64; STAGES]; STAGES] = [
@@ -120,7 +121,7 @@ impl Rhs {
         }
     }
 
-    /// The time derivative of `y`, given the band's force and torque at `y`.
+    /// Returns the time derivative of `y`, given the band's force and torque at `y`.
     fn rate_with(&self, y: &Vector, force: DVec2, torque: f64) -> Vector {
         let (vx, vy, omega) = (y[5], y[6], y[7]);
         let damping_force = -self.linear_damping * DVec2::new(vx, vy);
@@ -139,8 +140,10 @@ impl Rhs {
         ]
     }
 
-    /// One force evaluation: the band as `BandEnds::wrench` computes it, with the rotation
-    /// read from (cos θ, sin θ) instead of computed from θ.
+    /// Returns the time derivative of `y` at the cost of one force evaluation.
+    ///
+    /// The band's force is as `BandEnds::wrench` computes it, with the rotation read from
+    /// (cos θ, sin θ) instead of computed from θ.
     fn rate(&self, y: &Vector) -> Vector {
         let (force, torque) = match self.band {
             None => (DVec2::ZERO, 0.0),
@@ -166,14 +169,16 @@ pub struct Integrated {
     pub dissipated: f64,
 }
 
-/// λh of the first substep of a fixed step, where λ is the fastest rate of the motion: about
-/// what the controller settles on at tolerances near 1e-9, so that few first substeps are
-/// rejected.
+/// λh of the first substep of a fixed step, where λ is the fastest rate of the motion.
+///
+/// It matches roughly what the controller settles on at tolerances near 1e-9, so that few first
+/// substeps are rejected.
 const FIRST_SUBSTEP_LAMBDA_H: f64 = 0.3;
 
-/// Advances `state` by `dt` with error-controlled DOP853 substeps, each within `tolerance`
-/// (px); `start` holds the forces at `state`. None when the step needs more than `budget`
-/// substeps (expected beforehand, or found on the way).
+/// Advances `state` by `dt` with error-controlled DOP853 substeps, each within `tolerance` (px).
+///
+/// `start` holds the forces at `state`. None when the step needs more than `budget` substeps
+/// (expected beforehand, or found on the way).
 pub fn integrate(
     state: &BodyState,
     model: &ForceModel,

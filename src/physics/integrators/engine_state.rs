@@ -15,9 +15,10 @@ pub type Components = [f64; COMPONENTS];
 /// The index of the energy damping took out.
 pub const DISSIPATED: usize = 8;
 
-/// The error allowed per unit of a component's size, on top of the tolerance: some thousand
-/// times f64's round-off, so that round-off far from the origin (the anchor a million px away)
-/// is never asked to beat the tolerance.
+/// The error allowed per unit of a component's size, on top of the tolerance.
+///
+/// It comes to some thousand times f64's round-off, so that round-off far from the origin (the
+/// anchor a million px away) is never asked to beat the tolerance.
 pub const RELATIVE_TOLERANCE: f64 = 1e-13;
 
 pub fn pack(state: &BodyState) -> Components {
@@ -48,10 +49,11 @@ pub fn unpack(y: &Components) -> BodyState {
     }
 }
 
-/// Error weights for a fixed step `dt` from `state`: positions in px, the orientation (and its
-/// unit vector) as the displacement of the farthest corner, velocities over the time in which
-/// they move the box that far (the faster of the motion's rate and the fixed step), none for
-/// the energy.
+/// Returns the error weights for a fixed step `dt` from `state`.
+///
+/// Positions count in px, the orientation (and its unit vector) as the displacement of the
+/// farthest corner, velocities over the time in which they move the box that far (the faster of
+/// the motion's rate and the fixed step); the energy has no weight.
 pub fn error_weights(state: &BodyState, model: &ForceModel, dt: f64) -> Components {
     let reach = 0.5 * model.mass.size().length();
     let rate = model.fastest_rate(state).max(1.0 / dt);

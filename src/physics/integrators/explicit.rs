@@ -7,7 +7,9 @@ use bevy::math::DVec2;
 use crate::physics::body::{AngularState, BodyState, LinearState, MassProperties};
 use crate::physics::forces::{ForceModel, Forces, Wrench};
 
-/// Linear and angular acceleration: a = F/m, α = τ/I (steps 2 and 4 of the total reaction).
+/// Returns the linear and angular accelerations: a = F/m, α = τ/I.
+///
+/// These are steps 2 and 4 of the total reaction.
 fn accelerations(wrench: Wrench, mass: &MassProperties) -> (DVec2, f64) {
     (
         wrench.force * mass.inverse_mass(),
@@ -15,7 +17,7 @@ fn accelerations(wrench: Wrench, mass: &MassProperties) -> (DVec2, f64) {
     )
 }
 
-/// Forward Euler: the position moves with the old velocity.
+/// Advances `state` by `dt` with forward Euler: the position moves with the old velocity.
 pub fn euler(state: &mut BodyState, mass: &MassProperties, total: Wrench, dt: f64) {
     let (acceleration, angular_acceleration) = accelerations(total, mass);
     state.linear.position += state.linear.velocity * dt;
@@ -24,9 +26,10 @@ pub fn euler(state: &mut BodyState, mass: &MassProperties, total: Wrench, dt: f6
     state.angular.angular_velocity += angular_acceleration * dt;
 }
 
-/// The tutorial's total reaction (section 4.4), steps 2 to 5, given the summed force and
-/// torque of steps 1 and 3: a = F/m, α = τ/I, then semi-implicit (symplectic) Euler: the
-/// velocities first, then the position and orientation from the new velocities.
+/// Applies the tutorial's total reaction (section 4.4), steps 2 to 5: symplectic Euler.
+///
+/// From the summed force and torque of steps 1 and 3 it takes a = F/m and α = τ/I, then moves
+/// the velocities first, then the position and orientation from the new velocities.
 pub fn symplectic_euler(state: &mut BodyState, mass: &MassProperties, total: Wrench, dt: f64) {
     let (acceleration, angular_acceleration) = accelerations(total, mass);
     state.linear.velocity += acceleration * dt;
@@ -35,9 +38,11 @@ pub fn symplectic_euler(state: &mut BodyState, mass: &MassProperties, total: Wre
     state.angular.orientation += state.angular.angular_velocity * dt;
 }
 
-/// Velocity Verlet. The closing half-kick takes the damping at the new velocity, which is
-/// solvable in closed form because damping is linear: over the step the damping term is the
-/// trapezoidal rule, so the method stays second order and damping never limits the step.
+/// Advances `state` by `dt` with velocity Verlet.
+///
+/// The closing half-kick takes the damping at the new velocity, which is solvable in closed
+/// form because damping is linear: over the step the damping term is the trapezoidal rule, so
+/// the method stays second order and damping never limits the step.
 pub fn velocity_verlet(state: &mut BodyState, model: &ForceModel, start: Forces, dt: f64) {
     let half = 0.5 * dt;
     let (linear_rate, angular_rate) = model.damping_rates();
@@ -85,8 +90,10 @@ fn advanced(state: &BodyState, rate: &Rate, dt: f64) -> BodyState {
     }
 }
 
-/// Classical Runge-Kutta; damping is part of the force at every stage. Returns the energy
-/// damping took out, integrated with the same stages (so to the same fourth order).
+/// Advances `state` by `dt` with classical Runge-Kutta; returns the energy damping took out.
+///
+/// Damping is part of the force at every stage. The energy it took out is integrated with the
+/// same stages (so to the same fourth order).
 pub fn runge_kutta_4(state: &mut BodyState, model: &ForceModel, start: Forces, dt: f64) -> f64 {
     let rate_at = |s: &BodyState| Rate::of(s, model.forces(s).total(), &model.mass);
     let k1 = Rate::of(state, start.total(), &model.mass);

@@ -5,6 +5,8 @@ use bevy::math::{DMat3, DVec3};
 use crate::physics::body::{BodyState, rotate};
 use crate::physics::forces::ForceModel;
 
+/// Advances `state` by `dt` with backward Euler; returns the force-law evaluations it made.
+///
 /// Backward Euler: q₁ = q₀ + h v₁, v₁ = v₀ + h (F(q₁)/M − r v₁), for the configuration
 /// q = (x, y, θ), mass matrix M = diag(m, m, I) and damping rates r = (b/m, b/m, c).
 ///

@@ -43,13 +43,16 @@ pub enum Integrator {
     Verlet,
     /// Classical fourth-order Runge-Kutta.
     Rk4,
-    /// Backward Euler, solved by minimising the step's incremental potential with Newton's
-    /// method: stable for any stiffness and step, and it damps the stiff band's ringing.
+    /// Backward Euler, solved by minimising the step's incremental potential with Newton's method.
+    ///
+    /// It is stable for any stiffness and step, and it damps the stiff band's ringing.
     Implicit,
     /// Exactly the tutorial's per-frame update, in its order, in per-second units.
     Seed,
-    /// Error-controlled Taylor-series steps within each step, within a budget; `implicit`
-    /// where the budget binds (see [`super::auto`]). The game's default.
+    /// Error-controlled Taylor-series steps within each step, within a budget.
+    ///
+    /// It falls back to `implicit` where the budget binds (see [`super::auto`]). The game's
+    /// default.
     #[default]
     Auto,
 }
@@ -77,8 +80,10 @@ impl Integrator {
         }
     }
 
-    /// Its colour (sRGB), one table for every figure: the game's ghosts, table and plot, and
-    /// the report's charts. Read on the game's dark background and the report's white one.
+    /// Returns the integrator's colour (sRGB), from one table for every figure.
+    ///
+    /// The table serves the game's ghosts, table and plot, and the report's charts. Its colours
+    /// read on the game's dark background and the report's white one.
     pub fn colour(self) -> [u8; 3] {
         match self {
             Self::Euler => [225, 87, 89],
@@ -91,7 +96,7 @@ impl Integrator {
         }
     }
 
-    /// Order of accuracy of the global error.
+    /// Returns the order of accuracy of the global error.
     pub fn order(self) -> u32 {
         match self {
             Self::Verlet => 2,
@@ -101,7 +106,7 @@ impl Integrator {
         }
     }
 
-    /// The next integrator in [`Self::ALL`], wrapping round (the game's switch).
+    /// Returns the next integrator in [`Self::ALL`], wrapping round (the game's switch).
     pub fn next(self) -> Self {
         let index = Self::ALL.iter().position(|&i| i == self).unwrap_or(0);
         Self::ALL[(index + 1) % Self::ALL.len()]
@@ -118,7 +123,7 @@ impl Integrator {
         self.step_with(state, model, start, dt, &AutoSettings::default())
     }
 
-    /// [`Self::step`] with `auto`'s settings given.
+    /// Advances `state` as [`Self::step`] does, with `auto`'s settings given.
     pub fn step_with(
         self,
         state: &mut BodyState,

@@ -4,12 +4,13 @@ use crate::physics::body::BodyState;
 use crate::physics::forces::{ForceModel, Forces};
 use crate::physics::maths;
 
-/// The tutorial's update (its section 5 and appendix), in its order, at a step of `dt`
-/// instead of one frame: the angular damping scales ω by exp(−c·dt) (0.98 at 0.01 s); the
-/// damping force from the current velocity and the band's force and torque from the current position
-/// and orientation are summed (`start`); then ω, θ, v, x in that order, each from the one
-/// just updated. Its acceleration is the sum of each force divided by m, as the tutorial's
-/// `addForce` scales each force before summing.
+/// Applies the tutorial's update (its section 5 and appendix), in its order, at a step of `dt`.
+///
+/// The step is `dt` instead of one frame: the angular damping scales ω by exp(−c·dt) (0.98 at
+/// 0.01 s); the damping force from the current velocity and the band's force and torque from
+/// the current position and orientation are summed (`start`); then ω, θ, v, x in that order,
+/// each from the one just updated. Its acceleration is the sum of each force divided by m, as
+/// the tutorial's `addForce` scales each force before summing.
 pub fn tutorial_update(state: &mut BodyState, model: &ForceModel, start: Forces, dt: f64) {
     let mass = &model.mass;
     state.angular.angular_velocity *= maths::exp(-model.angular_damping * dt);

@@ -27,15 +27,18 @@ pub const MAX_ORDER: usize = 24;
 
 const N: usize = COMPONENTS;
 
-/// The longest step, as rate times step, at which every truncation from order 2 up of the
-/// fastest decay e^(−λh) still shrinks (as RK4's stability limit of 2.78 bounds its own).
+/// The longest step, as rate times step, at which the fastest decay's truncations still shrink.
+///
+/// Every truncation from order 2 up of the fastest decay e^(−λh) still shrinks there (as RK4's
+/// stability limit of 2.78 bounds its own).
 const STABLE_RATE_TIMES_STEP: f64 = 1.5;
 
 /// The lowest order at which a step may stop early.
 const MIN_ORDER: usize = 4;
 
-/// Slightly under the step the last two coefficients allow: the terms past the truncation
-/// then shrink geometrically.
+/// Slightly under the step the last two coefficients allow.
+///
+/// The terms past the truncation then shrink geometrically.
 const SAFETY: f64 = 0.9;
 
 /// What one fixed step of the engine did.
@@ -44,28 +47,33 @@ pub struct Integrated {
     pub state: BodyState,
     /// Taylor steps taken.
     pub steps: u32,
-    /// The orders of the steps, summed: the work done, each order about one evaluation of
-    /// the equations of motion.
+    /// The orders of the steps, summed: the work done.
+    ///
+    /// Each order is about one evaluation of the equations of motion.
     pub orders: u32,
     /// Energy damping took out, its Taylor series integrated with the motion's.
     pub dissipated: f64,
 }
 
-/// The rate times the step that a Taylor step covers on the stiff pulls at the default
-/// settings: the band's oscillation sets the box spinning about three times faster than the
-/// band's own rate, and a step covers about one radian of that (the report's engine table).
+/// The rate times the step that a Taylor step covers on the stiff pulls at the default settings.
+///
+/// The band's oscillation sets the box spinning about three times faster than the band's own
+/// rate, and a step covers about one radian of that (the report's engine table).
 const RATE_TIMES_STEP: f64 = 0.3;
 
-/// The steps a fixed step `dt` is expected to need, from the motion at its start: what
-/// decides, before any work, whether the budget can afford it.
+/// Returns the steps a fixed step `dt` is expected to need, from the motion at its start.
+///
+/// The estimate decides, before any work, whether the budget can afford the step.
 pub fn steps_expected(state: &BodyState, model: &ForceModel, dt: f64) -> f64 {
     (model.fastest_rate(state) * dt / RATE_TIMES_STEP)
         .ceil()
         .max(1.0)
 }
 
-/// How the engine works: the order of its series, the error allowed per step (px of corner
-/// displacement) and the most steps a fixed step may take.
+/// How the engine works: the order of its series, the error allowed and the step budget.
+///
+/// The error allowed is per step, in px of corner displacement; the budget is the most steps a
+/// fixed step may take.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TaylorSettings {
     pub order: usize,
@@ -73,9 +81,10 @@ pub struct TaylorSettings {
     pub max_steps: u32,
 }
 
-/// Advances `state` by `dt` with Taylor steps. None when the step needs more than
-/// `settings.max_steps` (expected beforehand, or found on the way): the caller falls back to a
-/// method that is stable at any step.
+/// Advances `state` by `dt` with Taylor steps.
+///
+/// None when the step needs more than `settings.max_steps` (expected beforehand, or found on
+/// the way): the caller falls back to a method that is stable at any step.
 pub fn integrate(
     state: &BodyState,
     model: &ForceModel,
@@ -234,18 +243,21 @@ pub fn integrate(
 
 type Quad = [f64; 4];
 
-/// acc + a·b, lane by lane: written so that the compiler makes it vector multiplies and adds
-/// where the machine has them (two SSE2 instructions each on any x86-64); the same
-/// operations, so the same bits, one lane at a time where it has none (wasm).
+/// Returns acc + a·b, lane by lane.
+///
+/// It is written so that the compiler makes it vector multiplies and adds where the machine has
+/// them (two SSE2 instructions each on any x86-64); the same operations, so the same bits, one
+/// lane at a time where it has none (wasm).
 #[inline(always)]
 fn mul_add(acc: Quad, a: Quad, b: Quad) -> Quad {
     std::array::from_fn(|i| acc[i] + a[i] * b[i])
 }
 
-/// One order's operands of the Cauchy products, in lanes, so that one multiply-add serves four
-/// sums: `left` × `right` is [ω·sin, ω·cos, arm x · (a − x) y, arm y · (a − x) x] (the torque's
-/// cross product arm × (a − x) is then the difference of the last two lanes), and `square` ×
-/// `square` is [vx², vy², ω², 0], the damping power's.
+/// One order's operands of the Cauchy products, in lanes: one multiply-add serves four sums.
+///
+/// `left` × `right` is [ω·sin, ω·cos, arm x · (a − x) y, arm y · (a − x) x] (the torque's cross
+/// product arm × (a − x) is then the difference of the last two lanes), and `square` × `square`
+/// is [vx², vy², ω², 0], the damping power's.
 #[derive(Clone, Copy, Default)]
 struct Operands {
     /// [ω, ω, arm x, arm y], the corner's arm R(θ) r.
@@ -262,8 +274,9 @@ impl Operands {
     }
 }
 
-/// The Cauchy products the n-th coefficients need: ω·sin, ω·cos, the torque's arm × (a − x),
-/// and the damping power's |v|² and ω².
+/// The Cauchy products the n-th coefficients need.
+///
+/// They are ω·sin, ω·cos, the torque's arm × (a − x), and the damping power's |v|² and ω².
 struct Products {
     omega_sin: f64,
     omega_cos: f64,
@@ -273,6 +286,8 @@ struct Products {
 }
 
 impl Products {
+    /// Computes the Cauchy products for the n-th coefficients, each sum from its middle out.
+    ///
     /// Each sum Σ f[j] g[n − j] is taken from its middle term out to its ends, the terms
     /// (j, n − j) and (n − j, j) together: the ends hold the newest order, found only by the
     /// previous one, so the middle's additions run while that order is still being computed,
@@ -317,17 +332,18 @@ impl Products {
     }
 }
 
-/// Every component's series summed at `h`, each by Horner's rule.
+/// Sums every component's series at `h`, each by Horner's rule.
 fn horner(rows: &[Components], h: f64) -> Components {
     rows.iter().rev().fold([0.0; N], |sums, row| {
         std::array::from_fn(|i| sums[i] * h + row[i])
     })
 }
 
-/// The largest of weights[i]·|values[i]| over the motion's components (the energy is not
-/// weighed), as a tree of plain comparisons: every order of the series takes one, and the
-/// NaN-aware `f64::max` costs five instructions a comparison. A NaN here needs no care: it
-/// reaches the state, which the step then refuses.
+/// Returns the largest of weights[i]·|values[i]| over the motion's components.
+///
+/// The energy is not weighed. It is found by a tree of plain comparisons: every order of the
+/// series takes one, and the NaN-aware `f64::max` costs five instructions a comparison. A NaN
+/// here needs no care: it reaches the state, which the step then refuses.
 fn weighted_max(weights: &[f64; N], values: &[f64; N]) -> f64 {
     let w = |i: usize| weights[i] * values[i].abs();
     let larger = |a: f64, b: f64| if a > b { a } else { b };
