@@ -1,15 +1,20 @@
 #!/usr/bin/env bash
-# Mutation scores (docs/testing.md, "Robustness"): cargo-mutants changes the code one operator
-# at a time and runs the tests against each change. Not part of CI (all of src/physics takes
-# about an hour and a half on two cores, the game layer about as long). Needs
+# Mutation scores (docs/testing.md, "Mutation testing"): cargo-mutants changes the code one
+# operator at a time and runs the tests against each change. Not part of CI: on the 2-core
+# machine a mutant takes 15 to 30 s (our crate rebuilt, the group's test targets linked), so
+# all of src/physics (about 1150 mutants) takes hours and the game layer (about 380) two;
+# `--since COMMIT` tries only the functions changed since a run. Needs
 # `cargo install --locked cargo-mutants --version '^27'`.
 #
 # Two runs:
 # - core (the default): src/physics/ against the core's tests (tests/core.rs,
-#   tests/integrators.rs without the soak, tests/cli.rs). Results in mutants.out/.
-# - game: the game layer (src/game/input/{controls,pointer,panel}.rs, src/game/simulation.rs,
-#   src/game/hud/), each file against the headless tests that drive it (the groups below).
-#   Results in mutants-game.out/: the lists summed, and each group's own run beside them.
+#   tests/integrators.rs without the soak, tests/cli.rs, tests/stability.rs). Results in
+#   mutants.out/core/.
+# - game: the game layer (src/game/input/{controls,panel}.rs, src/game/pointer.rs,
+#   src/game/simulation.rs, src/game/hud/), each file against the headless tests that drive
+#   it (the groups below). Results in mutants-game.out/, a folder a group.
+# Each writes summary.csv beside its results (.ci/mutants-summary.sh): a row a group, the
+# score of the viable mutants; docs/testing.md shows a committed snapshot of it.
 #
 # It mutates a throw-away git worktree of HEAD in place, with a target folder of its own:
 # cargo names our crate's artifacts the same whatever folder it sits in, so a mutant built in
@@ -17,8 +22,9 @@
 # first run builds the dependencies once (about as long as a first `cargo test`), later ones
 # reuse them. The working tree is never touched.
 #
-# Usage: .ci/mutants.sh [core|game] [cargo-mutants options; core's default: its files]
-# (`--iterate` skips what the previous run of that kind caught.)
+# Usage: .ci/mutants.sh [core|game] [--since COMMIT] [cargo-mutants options]
+# (core's default options: its files; `--iterate` skips what the previous run of that kind
+# caught; `--since COMMIT` mutates only what `git diff COMMIT HEAD` touches, `--in-diff`.)
 # Never edit this file while it runs: bash reads a script as it goes, and a run's results are
 # copied out of its worktree by the last lines (an hour's results were lost that way once).
 set -euo pipefail
@@ -31,6 +37,13 @@ case "${1:-}" in
         shift
         ;;
 esac
+since=()
+if [ "${1:-}" = --since ]; then
+    diff=$(mktemp)
+    git diff "$2" HEAD -- src >"$diff"
+    since=(--in-diff "$diff")
+    shift 2
+fi
 work="$(mktemp -d)/tree"
 git worktree add --detach --quiet "$work" HEAD
 trap 'git worktree remove --force "$work"' EXIT
@@ -38,18 +51,20 @@ if [ "$kind" = core ]; then
     out=mutants.out
     if [ $# -eq 0 ]; then set -- --file 'src/physics/**/*.rs'; fi
     # The previous results, so that `--iterate` tests only what they did not catch.
-    if [ -d "$out" ]; then cp -r "$out" "$work/mutants.out"; fi
+    if [ -d "$out/core" ]; then cp -r "$out/core" "$work/mutants.out"; fi
     (
         cd "$work"
         # The targets go to the build as well as the test (-C): building every test target
         # for each mutant would double its time. The soak would multiply it by ten (the
         # invariant tests cover what it checks, over fewer steps).
         cargo mutants --in-place --no-shuffle --timeout 15 \
-            -C --test=core -C --test=integrators -C --test=cli "$@" \
+            -C --test=core -C --test=integrators -C --test=cli -C --test=stability \
+            "${since[@]}" "$@" \
             -- -- --skip soak || true
     )
     rm -rf "$out"
-    cp -r "$work/mutants.out" "$out"
+    mkdir -p "$out"
+    if [ -d "$work/mutants.out" ]; then cp -r "$work/mutants.out" "$out/core"; fi
 else
     # Each file against the tests that drive it (building them all for every mutant would
     # triple the time): a group a line, its files then its test targets. The layout (the
@@ -72,6 +87,7 @@ else
         for file in ${group%%:*}; do files+=(--file "$file"); done
         for test in ${group##*:}; do targets+=(-C "--test=$test"); done
         name=$(basename "${group%% *}" .rs)
+        if [ "$name" = mod ]; then name=$(basename "$(dirname "${group%% *}")"); fi
         if [ -d "$previous/$name" ]; then
             mkdir -p "$work/$name"
             cp -r "$previous/$name" "$work/$name/mutants.out"
@@ -79,15 +95,14 @@ else
         (
             cd "$work"
             cargo mutants --in-place --no-shuffle --timeout 60 --baseline "$baseline" \
-                "${targets[@]}" "${files[@]}" "$@" --output "$work/$name" || true
+                "${targets[@]}" "${files[@]}" "${since[@]}" "$@" --output "$work/$name" || true
         )
-        # The tree unmutated passed once: the same tree, the same tests.
-        baseline=skip
-        cp -r "$work/$name/mutants.out" "$out/$name"
-        for list in caught missed timeout unviable; do
-            cat "$out/$name/$list.txt" >>"$out/$list.txt" 2>/dev/null || true
-        done
+        # With `--since`, a group whose files did not change has no mutants and no results.
+        if [ -d "$work/$name/mutants.out" ]; then
+            # The tree unmutated passed once: the same tree, the same tests.
+            baseline=skip
+            cp -r "$work/$name/mutants.out" "$out/$name"
+        fi
     done
 fi
-grep -c . "$out"/caught.txt "$out"/missed.txt "$out"/timeout.txt "$out"/unviable.txt \
-    2>/dev/null || true
+.ci/mutants-summary.sh "$out" | tee "$out/summary.csv"

@@ -2,8 +2,9 @@
 
 use bevy::math::DVec2;
 use rubber_band_box::physics::{
-    BandEnds, BodyState, Energies, EnergyLedger, Integrator, MassProperties, ParamError,
-    SceneParams, Stepper, Wrench, angular_momentum_about, damping_wrench, kinetic_energy, rotate,
+    BandEnds, BodyState, Energies, EnergyLedger, Integrator, MASS_RANGE, MassProperties,
+    ParamError, Range, STIFFNESS_RANGE, SceneParams, Stepper, TIME_SCALE_RANGE, Wrench,
+    angular_momentum_about, damping_wrench, kinetic_energy, param_error::exact, rotate,
     symplectic_euler,
 };
 
@@ -338,6 +339,98 @@ fn the_ledger_books_by_hand() {
     assert_eq!(ledger.expected(), 10.0 + 3.0 - 4.0);
     assert_eq!(ledger.residual(9.5), 0.5);
     assert_eq!(ledger.throughput(), 10.0 + 7.0 + 4.0);
+}
+
+#[test]
+fn a_step_opens_with_the_hands_work_since_the_last_or_a_fresh_ledger() {
+    let mut ledger = EnergyLedger::starting_at(10.0);
+    // The band moved between two steps: its energy went from 10 to 12.5, then 12 to 11.
+    ledger.open_step(Some(10.0), 12.5);
+    assert_eq!((ledger.work_in, ledger.work_moved), (2.5, 2.5));
+    ledger.open_step(Some(12.0), 11.0);
+    assert_eq!((ledger.work_in, ledger.work_moved), (1.5, 3.5));
+    assert_eq!(ledger.initial, 10.0);
+    // No previous step (the start, a reset): the books start again at the energy now.
+    ledger.dissipated = 1.0;
+    ledger.open_step(None, 7.0);
+    assert_eq!(ledger, EnergyLedger::starting_at(7.0));
+}
+
+#[test]
+fn the_games_ranges_include_their_ends_and_refuse_what_lies_outside() {
+    let range = Range::new(1.0, 2.0, "px");
+    for (value, inside) in [
+        (1.0, true),
+        (2.0, true),
+        (1.5, true),
+        (0.5, false),
+        (2.5, false),
+    ] {
+        assert_eq!(range.contains(value), inside, "{value}");
+    }
+    assert!(!range.contains(f64::NAN));
+    assert_eq!(ParamError::check_within("width", 1.0, &range), Ok(()));
+    let refused = ParamError::check_within("width", 3.0, &range).unwrap_err();
+    assert_eq!((refused.field, refused.value), ("width", 3.0));
+    assert_eq!(refused.requirement, "from 1 to 2 px");
+
+    let mut params = SceneParams::default();
+    assert_eq!(params.check_playable(), Ok(()));
+    params.stiffness = STIFFNESS_RANGE.high;
+    assert_eq!(params.check_playable(), Ok(()));
+    // A valid scene (any positive mass) that the game's controls cannot reach.
+    params.mass = MASS_RANGE.high * 2.0;
+    assert_eq!(params.validate(), Ok(()));
+    let refused = params.check_playable().unwrap_err();
+    assert_eq!(refused.field, "mass");
+    assert_eq!(refused.requirement, MASS_RANGE.to_string());
+}
+
+#[test]
+fn a_range_clamps_into_itself_and_names_its_ends_exactly() {
+    let range = Range::new(0.5, 4.0, "Hz");
+    let clamped: Vec<f64> = [0.1, 0.5, 2.0, 4.0, 9.0, f64::NAN, f64::INFINITY]
+        .iter()
+        .map(|&v| range.clamp(v))
+        .collect();
+    assert_eq!(clamped, [0.5, 0.5, 2.0, 4.0, 4.0, 0.5, 4.0]);
+    assert_eq!(range.to_string(), "from 0.5 to 4 Hz");
+    assert_eq!(Range::new(1e-3, 1e12, "").to_string(), "from 1e-3 to 1e12");
+    // Slow motion to fast forward, through real time.
+    assert!(TIME_SCALE_RANGE.contains(1.0) && TIME_SCALE_RANGE.clamp(0.0) < 1.0);
+    assert_eq!(TIME_SCALE_RANGE.low * TIME_SCALE_RANGE.high, 1.0);
+}
+
+#[test]
+fn a_number_is_written_plainly_in_the_usual_range_and_reads_back_the_same() {
+    for (value, written) in [
+        (0.0, "0"),
+        (20.0, "20"),
+        (0.05, "0.05"),
+        (-4096.0, "-4096"),
+        (1e5, "1e5"),
+        (1e-3, "1e-3"),
+        (-2.5e-7, "-2.5e-7"),
+    ] {
+        assert_eq!(exact(value), written);
+    }
+    for value in [0.1 + 0.2, 1.0 / 3.0, 6.02e23, -1e-300, f64::MIN_POSITIVE] {
+        assert_eq!(exact(value).parse::<f64>(), Ok(value), "{value}");
+    }
+}
+
+#[test]
+fn each_integrator_has_a_colour_of_its_own() {
+    let colours: Vec<[u8; 3]> = Integrator::ALL.iter().map(|i| i.colour()).collect();
+    for (at, colour) in colours.iter().enumerate() {
+        assert!(
+            !colours[..at].contains(colour),
+            "{colour:?} is used twice: {colours:?}"
+        );
+        // Drawn on the game's dark background and the report's white one.
+        assert!(colour.iter().any(|&c| c > 64), "{colour:?} is too dark");
+        assert!(colour.iter().any(|&c| c < 192), "{colour:?} is too light");
+    }
 }
 
 #[test]

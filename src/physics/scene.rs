@@ -28,7 +28,7 @@ pub const TUTORIAL_ANGULAR_FACTOR: f64 = 0.98;
 pub const STEP_RATE_RANGE: Range = Range::new(8.0, 4096.0, "Hz");
 pub const STIFFNESS_RANGE: Range = Range::new(1e-2, 1e12, "");
 pub const MASS_RANGE: Range = Range::new(1e-3, 1e3, "");
-/// The box's width and height: the game never changes them; a replay may not exceed them.
+/// The box's width and height: the size slider's range, which a replay may not exceed.
 pub const SIZE_RANGE: Range = Range::new(1.0, 640.0, "px");
 /// The coefficient b.
 pub const LINEAR_DAMPING_RANGE: Range = Range::new(0.0, 50.0, "");
