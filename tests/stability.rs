@@ -149,3 +149,25 @@ fn the_margins_say_which_methods_hold_the_present_band() {
         assert!(margin.holds, "{:?}", margin.integrator);
     }
 }
+
+#[test]
+fn an_overdamped_mode_decays_at_its_slower_rate() {
+    // Heavy damping: both roots of s² + γs + ω² are real, and one step of a fourth-order method
+    // scales the mode by about exp(s·dt) for the slower one, the larger in size.
+    let params = SceneParams {
+        linear_damping: 320.0,
+        angular_damping: 0.0,
+        ..SceneParams::tutorial()
+    };
+    let mode = Mode::of(&params);
+    let half = mode.damping / 2.0;
+    assert!(half > mode.omega, "{mode:?} is not overdamped");
+    let slower = -half + (half * half - mode.omega * mode.omega).sqrt();
+    let dt = 1e-3;
+    let radius = spectral_radius(Integrator::Rk4, &params, dt, &AutoSettings::default());
+    assert!(
+        (radius - (slower * dt).exp()).abs() < 1e-9,
+        "{radius} against {}",
+        (slower * dt).exp()
+    );
+}
