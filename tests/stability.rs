@@ -171,3 +171,21 @@ fn an_overdamped_mode_decays_at_its_slower_rate() {
         (slower * dt).exp()
     );
 }
+
+#[test]
+fn undamped_margins_hold_on_the_nose_and_name_the_textbooks_limits() {
+    // Undamped, a symplectic step keeps the mode's size exactly (|λ| = 1 up to round-off):
+    // the margin holds it, and its limit is ω·dt = 2 at the game's step.
+    let params = undamped();
+    for margin in margins(&params, &AutoSettings::default()) {
+        if matches!(
+            margin.integrator,
+            Integrator::Symplectic | Integrator::Verlet | Integrator::Seed
+        ) {
+            assert!((margin.spectral_radius - 1.0).abs() < 1e-12, "{margin:?}");
+            assert!(margin.holds, "{margin:?}");
+            let limit = margin.limit_omega_dt.expect("a limit");
+            assert!((limit - 2.0).abs() < 1e-3, "{margin:?}");
+        }
+    }
+}
