@@ -7,42 +7,51 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::Path;
 
-/// Every module of the crate (`physics::integrators::auto`; "" for the crate root) and its
-/// source without comments.
-fn modules() -> BTreeMap<String, String> {
-    fn walk(dir: &Path, found: &mut BTreeMap<String, String>, root: &Path) {
+/// Every source file under src/, with its path relative to src/ and its text.
+fn source_files() -> Vec<(std::path::PathBuf, String)> {
+    fn walk(dir: &Path, root: &Path, found: &mut Vec<(std::path::PathBuf, String)>) {
         for entry in fs::read_dir(dir).expect("src is readable") {
             let path = entry.expect("an entry").path();
             if path.is_dir() {
-                walk(&path, found, root);
+                walk(&path, root, found);
             } else if path.extension().is_some_and(|e| e == "rs") {
-                let relative = path.strip_prefix(root).unwrap().with_extension("");
-                let mut parts: Vec<String> = relative
-                    .iter()
-                    .map(|p| p.to_string_lossy().into_owned())
-                    .collect();
-                if matches!(
-                    parts.last().map(String::as_str),
-                    Some("mod" | "lib" | "main")
-                ) {
-                    parts.pop();
-                }
                 let source = fs::read_to_string(&path).expect("a source file");
-                let code: String = source
-                    .lines()
-                    .map(|line| line.split("//").next().unwrap_or(""))
-                    .collect::<Vec<_>>()
-                    .join("\n");
-                found.insert(parts.join("::"), code);
+                found.push((path.strip_prefix(root).unwrap().to_owned(), source));
             }
         }
     }
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut found = Vec::new();
+    walk(&root, &root, &mut found);
+    found
+}
+
+/// Every module of the crate (`physics::integrators::auto`; "" for the crate root) and its
+/// source without comments.
+fn modules() -> BTreeMap<String, String> {
     let mut found = BTreeMap::new();
-    walk(&root, &mut found, &root);
+    for (relative, source) in source_files() {
+        let mut parts: Vec<String> = relative
+            .with_extension("")
+            .iter()
+            .map(|p| p.to_string_lossy().into_owned())
+            .collect();
+        if matches!(
+            parts.last().map(String::as_str),
+            Some("mod" | "lib" | "main")
+        ) {
+            parts.pop();
+        }
+        let code: String = source
+            .lines()
+            .map(|line| line.split("//").next().unwrap_or(""))
+            .collect::<Vec<_>>()
+            .join("\n");
+        found.insert(parts.join("::"), code);
+    }
     // main.rs is the binary, not a module of the library: it may use anything.
     found.remove("");
-    let lib = fs::read_to_string(root.join("lib.rs")).unwrap();
+    let lib = fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("src/lib.rs")).unwrap();
     found.insert(String::new(), lib);
     found
 }
@@ -444,31 +453,18 @@ fn is_function(line: &str) -> bool {
 
 #[test]
 fn each_item_doc_opens_with_a_one_line_summary() {
-    fn walk(dir: &Path, problems: &mut Vec<String>, docs: &mut usize) {
-        for entry in fs::read_dir(dir).expect("src is readable") {
-            let path = entry.expect("an entry").path();
-            if path.is_dir() {
-                walk(&path, problems, docs);
-            } else if path.extension().is_some_and(|e| e == "rs") {
-                let source = fs::read_to_string(&path).expect("a source file");
-                *docs += source
-                    .lines()
-                    .zip(source.lines().skip(1))
-                    .filter(|(a, b)| a.trim().starts_with("///") && !b.trim().starts_with("///"))
-                    .count();
-                for problem in doc_problems(&source) {
-                    problems.push(format!("{}:{problem}", path.display()));
-                }
-            }
-        }
-    }
     let mut problems = Vec::new();
     let mut docs = 0;
-    walk(
-        &Path::new(env!("CARGO_MANIFEST_DIR")).join("src"),
-        &mut problems,
-        &mut docs,
-    );
+    for (relative, source) in source_files() {
+        docs += source
+            .lines()
+            .zip(source.lines().skip(1))
+            .filter(|(a, b)| a.trim().starts_with("///") && !b.trim().starts_with("///"))
+            .count();
+        for problem in doc_problems(&source) {
+            problems.push(format!("src/{}:{problem}", relative.display()));
+        }
+    }
     // The walk reads the crate's docs, so a check that found none would not pass.
     assert!(docs > 500, "only {docs} item docs found");
     assert!(
