@@ -7,6 +7,8 @@
 # Usage: .ci/mutants-summary.sh DIR
 set -euo pipefail
 count() { if [ -f "$1" ]; then grep -c . "$1" || true; else echo 0; fi; }
+# The percentage of CAUGHT in VIABLE, one decimal.
+score() { awk -v c="$1" -v v="$2" 'BEGIN { printf "%.1f", v ? 100 * c / v : 0 }'; }
 echo "group,mutants,unviable,viable,caught,missed,timeout,score_percent"
 totals=(0 0 0 0 0 0)
 for dir in "$1"/*/; do
@@ -18,8 +20,6 @@ for dir in "$1"/*/; do
     viable=$((caught + missed + timeout))
     row=($((viable + unviable)) "$unviable" "$viable" "$caught" "$missed" "$timeout")
     for i in "${!row[@]}"; do totals[i]=$((totals[i] + row[i])); done
-    score=$(awk -v c="$((caught + timeout))" -v v="$viable" 'BEGIN { printf "%.1f", v ? 100 * c / v : 0 }')
-    echo "$(basename "$dir"),$(IFS=,; echo "${row[*]}"),$score"
+    echo "$(basename "$dir"),$(IFS=,; echo "${row[*]}"),$(score $((caught + timeout)) "$viable")"
 done
-score=$(awk -v c="$((totals[3] + totals[5]))" -v v="${totals[2]}" 'BEGIN { printf "%.1f", v ? 100 * c / v : 0 }')
-echo "all,$(IFS=,; echo "${totals[*]}"),$score"
+echo "all,$(IFS=,; echo "${totals[*]}"),$(score $((totals[3] + totals[5])) "${totals[2]}")"
