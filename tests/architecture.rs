@@ -275,7 +275,7 @@ fn each_room_imports_only_the_rooms_under_it() {
 const GAME_LAYERS: [&[&str]; 9] = [
     &["schedule", "shared", "theme", "web"],
     &["simulation", "stability"],
-    &["ghosts", "layout", "pointer"],
+    &["ghosts", "layout", "pointer", "camera"],
     &["replays"],
     &["learn"],
     &["input"],

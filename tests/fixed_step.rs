@@ -348,8 +348,8 @@ fn the_games_energy_books_balance_to_the_integrators_error() {
 /// jitter no other test would see.)
 #[test]
 fn the_drawn_state_moves_forward_every_frame_between_steps() {
-    use rubber_band_box::game::screen::view::interpolated_state;
     use rubber_band_box::game::simulation::RenderSnapshots;
+    use rubber_band_box::game::simulation::interpolated_state;
     let mut game = Game::new(Duration::from_millis(7));
     // Along the diagonal from rest: x grows for the first half period, about 1.5 s.
     game.press_at(DVec2::new(150.0, 150.0));

@@ -1,9 +1,8 @@
 //! The screen's regions, laid out by Bevy's own UI layout (no renderer) at six window sizes,
 //! from a phone held upright to a desktop: with every instrument open and with every one
 //! folded, no two texts meet, no text or control lies on the scene's viewport, everything
-//! lies in the window, and the viewport is the largest region. And the box stays in the
-//! viewport through the tutorial's scripted pull and a hand's pull far past its 640 x 480
-//! screen, read from the scene camera's transform against the body's state.
+//! lies in the window, and the viewport is the largest region. (The box in the viewport under
+//! a player's hand: tests/camera.rs.)
 
 mod common;
 
@@ -13,8 +12,6 @@ use common::*;
 use rubber_band_box::game::layout::{Card, Cards, SceneViewport, Shape, shown_texts, visible_rect};
 use rubber_band_box::game::pointer::PointerAction;
 use rubber_band_box::game::shared::Overlays;
-use rubber_band_box::game::simulation::RenderSnapshots;
-use rubber_band_box::physics::MassProperties;
 
 const SIZES: [UVec2; 6] = [
     UVec2::new(360, 740),
@@ -24,24 +21,6 @@ const SIZES: [UVec2; 6] = [
     UVec2::new(1280, 800),
     UVec2::new(1920, 1080),
 ];
-
-/// The game with its screen and the layout, the view's own camera replaced by the test's
-/// (which the view places as its own).
-fn laid_out_game() -> Game {
-    let mut game = Game::with(Duration::from_millis(10), |app| {
-        add_the_layout(app);
-        add_the_screen(app);
-    });
-    let world = game.world();
-    let views: Vec<Entity> = world
-        .query::<(Entity, &Name)>()
-        .iter(world)
-        .filter(|(_, name)| name.as_str() == "Camera")
-        .map(|(entity, _)| entity)
-        .collect();
-    world.despawn(views[0]);
-    game
-}
 
 /// Every text shown and every button shown, as the window shows them.
 fn shown(game: &mut Game) -> (Vec<(String, Rect)>, Vec<Rect>) {
@@ -117,7 +96,7 @@ fn check(game: &mut Game, size: UVec2, name: &str) -> f32 {
 
 #[test]
 fn at_six_sizes_nothing_meets_and_the_scene_is_the_largest_region() {
-    let mut game = laid_out_game();
+    let mut game = Game::laid_out();
     // Every instrument on: the ghosts, the plot, the vectors and the trail, a pull going on.
     game.tap_key(KeyCode::KeyP);
     game.tap_key(KeyCode::KeyV);
@@ -171,7 +150,7 @@ fn at_six_sizes_nothing_meets_and_the_scene_is_the_largest_region() {
 /// finger is about to land.
 #[test]
 fn a_message_under_the_scene_moves_nothing() {
-    let mut game = laid_out_game();
+    let mut game = Game::laid_out();
     for size in SIZES {
         game.resize(size);
         game.update(4);
@@ -197,7 +176,7 @@ fn a_message_under_the_scene_moves_nothing() {
 fn learn_modes_card_lays_out_at_six_sizes() {
     use rubber_band_box::game::learn::Learn;
     use rubber_band_box::game::learn::chapters::CHAPTERS;
-    let mut game = laid_out_game();
+    let mut game = Game::laid_out();
     game.world()
         .write_message(PointerAction::Press(DVec2::new(200.0, 120.0)));
     for chapter in 0..CHAPTERS.len() {
@@ -223,83 +202,6 @@ fn learn_modes_card_lays_out_at_six_sizes() {
                 texts.iter().any(|(text, _)| text.starts_with(&title)),
                 "{name}: the chapter's title is not shown"
             );
-        }
-    }
-}
-
-/// Where the scene camera puts a world point on the window: its transform and its
-/// projection's scale, in the viewport Bevy's layout gave it.
-fn on_window(game: &mut Game, world_point: Vec2) -> Vec2 {
-    let world = game.world();
-    let viewport = world.resource::<SceneViewport>().0.unwrap();
-    let mut cameras = world.query_filtered::<(&Transform, &Projection), With<SceneCamera>>();
-    let (transform, projection) = cameras.single(world).unwrap();
-    let Projection::Orthographic(orthographic) = projection else {
-        panic!("the scene camera is orthographic");
-    };
-    let offset = (world_point - transform.translation.truncate()) / orthographic.scale;
-    viewport.center() + Vec2::new(offset.x, -offset.y)
-}
-
-/// The box's corners and the band's anchor as drawn this frame, each on the window, and the
-/// viewport: every one inside it.
-fn assert_in_view(game: &mut Game, name: &str) {
-    let world = game.world();
-    let fixed = *world.resource::<Time<bevy::time::Fixed>>();
-    let mut boxes = world.query::<(&RenderSnapshots, &MassProperties)>();
-    let (snapshots, mass) = boxes.single(world).unwrap();
-    let state = snapshots.interpolate(fixed.overstep_fraction_f64().clamp(0.0, 1.0));
-    let mut points: Vec<Vec2> = mass
-        .corners()
-        .iter()
-        .map(|&corner| state.local_to_world(corner).as_vec2())
-        .collect();
-    points.extend(game.bands().iter().map(|band| band.ends.anchor.as_vec2()));
-    let viewport = game.world().resource::<SceneViewport>().0.unwrap();
-    for point in points {
-        let at = on_window(game, point);
-        assert!(
-            viewport.inflate(0.5).contains(at),
-            "{name}: {point} drawn at {at}, out of {viewport:?}"
-        );
-    }
-}
-
-#[test]
-fn the_box_stays_in_view_through_the_tutorials_pull_and_a_long_hand_pull() {
-    for size in [UVec2::new(960, 720), UVec2::new(390, 844)] {
-        let mut game = laid_out_game();
-        game.resize(size);
-        game.tap_key(KeyCode::KeyP);
-        game.update(3);
-        // The tutorial's scene plays its scripted pull.
-        game.tap_key(KeyCode::Digit1);
-        for frame in 0..500 {
-            game.update(1);
-            assert_in_view(
-                &mut game,
-                &format!("{size}, the tutorial's pull, frame {frame}"),
-            );
-        }
-        // A hand pulls the box far past the 640 x 480 screen, holds it there, lets go.
-        game.tap_key(KeyCode::KeyR);
-        game.update(2);
-        game.world()
-            .write_message(PointerAction::Press(DVec2::new(20.0, 20.0)));
-        for frame in 0..400 {
-            let t = (frame as f64 / 100.0).min(1.0);
-            let anchor = DVec2::new(900.0, 650.0) * t;
-            game.world().write_message(PointerAction::Move(anchor));
-            game.update(1);
-            assert_in_view(
-                &mut game,
-                &format!("{size}, the hand's pull, frame {frame}"),
-            );
-        }
-        game.world().write_message(PointerAction::Release);
-        for frame in 0..300 {
-            game.update(1);
-            assert_in_view(&mut game, &format!("{size}, let go, frame {frame}"));
         }
     }
 }

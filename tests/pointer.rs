@@ -15,14 +15,9 @@ fn the_camera_maps_the_window_onto_the_scene() {
     game.mouse(ButtonState::Pressed);
     game.update(1);
     let anchor = game.the_band().ends.anchor;
-    assert!(
-        (anchor - DVec2::new(60.0, 40.0)).length() < 1e-4,
-        "{anchor}"
-    );
-    assert_eq!(
-        screen_to_world(Vec2::new(730.0, 300.0)),
-        DVec2::new(60.0, 40.0)
-    );
+    let expected = DVec2::new(90.0, 60.0) * HOME_SCALE;
+    assert!((anchor - expected).length() < 1e-4, "{anchor}");
+    assert_eq!(screen_to_world(Vec2::new(730.0, 300.0)), expected);
 }
 
 #[test]
@@ -36,7 +31,7 @@ fn a_press_spawns_one_band_at_the_nearest_corner_that_follows_the_cursor_until_r
     assert_eq!(band.ends.local_point, DVec2::new(30.0, -30.0));
     assert!((band.ends.anchor - DVec2::new(150.0, -120.0)).length() < 1e-4);
 
-    for target in [DVec2::new(0.0, 200.0), DVec2::new(-250.0, 10.0)] {
+    for target in [DVec2::new(0.0, 150.0), DVec2::new(-250.0, 10.0)] {
         game.cursor(Some(world_to_screen(target)));
         game.update(1);
         let band = game.the_band();
@@ -222,8 +217,8 @@ fn the_state_survives_a_resize_and_the_pointer_follows_the_new_view() {
     twin.update(20);
     assert_eq!(resized.state(), twin.state());
 
-    // Portrait: the scene's 640 units fill the 720 px width, 0.889 units a pixel, centred.
-    let scale = 640.0 / 720.0;
+    // Portrait: the scene's 640 units and their 4% margin fill the 720 px width, centred.
+    let scale = 640.0 * 1.04 / 720.0;
     let to_screen =
         |w: DVec2| Vec2::new((360.0 + w.x / scale) as f32, (640.0 - w.y / scale) as f32);
     let target = DVec2::new(100.0, -150.0);
@@ -249,4 +244,35 @@ fn of_two_bands_one_is_removed() {
     game.update(1);
     let left = game.the_band();
     assert!([held.ends.anchor, second.ends.anchor].contains(&left.ends.anchor));
+}
+
+/// A held band's anchor stops at the reach (the home frame less the box's diagonal), however
+/// far the pointer goes: past the window's edge it stops at the viewport's edge, mapped and
+/// clamped, and a press near the edge grabs at the reach's edge.
+#[test]
+fn the_anchor_stops_at_the_reach() {
+    let mut game = Game::stepping();
+    // The home frame at 1280 x 720: 1280 and 720 pixels at HOME_SCALE, less 60 * sqrt 2.
+    let diagonal = 60.0 * std::f64::consts::SQRT_2;
+    let reach = DVec2::new(640.0, 360.0) * HOME_SCALE - DVec2::splat(diagonal);
+    game.press_at(DVec2::new(10.0, 10.0));
+    game.update(1);
+    for (cursor, expected) in [
+        (Vec2::new(640.0, 5.0), DVec2::new(0.0, reach.y)),
+        (Vec2::new(1279.0, 700.0), DVec2::new(reach.x, -reach.y)),
+        (Vec2::new(0.0, 360.0), DVec2::new(-reach.x, 0.0)),
+    ] {
+        game.cursor(Some(cursor));
+        game.update(1);
+        let anchor = game.the_band().ends.anchor;
+        assert!(
+            (anchor - expected).length() < 1e-3,
+            "{cursor}: {anchor}, not {expected}"
+        );
+    }
+    // Inside the reach the anchor is under the cursor.
+    let inside = DVec2::new(reach.x - 1.0, 1.0 - reach.y);
+    game.cursor(Some(world_to_screen(inside)));
+    game.update(1);
+    assert!((game.the_band().ends.anchor - inside).length() < 1e-3);
 }

@@ -11,6 +11,8 @@
 //!   dock of instrument cards;
 //! - [`simulation`]: the physics plugin that steps the core in `FixedUpdate`;
 //! - [`pointer`]: the mouse and the finger, which hold the band;
+//! - [`camera`]: what the scene shows (home, following the box, zoomed and panned) and the
+//!   map between the window and the world;
 //! - [`replays`]: the game's side of replays and scenes: recording, playback, the scenes on
 //!   the number keys, links opened and shared;
 //! - [`ghosts`]: every integrator and a reference stepping beside the live box;
@@ -22,6 +24,7 @@
 //! - `web`, in the browser only: the page's side (downloads, files opened, what the page
 //!   reads back).
 
+pub mod camera;
 pub mod ghosts;
 pub mod hud;
 pub mod input;
@@ -41,7 +44,7 @@ pub mod web;
 
 use bevy::prelude::*;
 
-/// The game without a screen: the physics, the pointer, the keys and the HUD's text.
+/// The game without a screen: physics, pointer, camera's view, keys and the HUD's text.
 ///
 /// They run in the frame's order ([`schedule`]), under `MinimalPlugins`.
 pub struct GameLogicPlugin;
@@ -54,7 +57,7 @@ impl Plugin for GameLogicPlugin {
             theme::ThemePlugin,
             layout::LayoutPlugin,
             simulation::SimulationPlugin,
-            pointer::PointerPlugin,
+            (pointer::PointerPlugin, camera::CameraPlugin),
             input::controls::ControlsPlugin,
             replays::recording::RecordingPlugin,
             replays::playback::PlaybackPlugin,

@@ -2,13 +2,17 @@
 //!
 //! Two systems run before the fixed loop each frame, in [`GameSystems::Input`], so that a
 //! press is felt by the very next fixed step: [`read_pointer`] turns mouse, touch and focus
-//! input into [`PointerAction`]s in world coordinates (through the camera), and [`drive_band`]
+//! input into [`PointerAction`]s in world coordinates (through the camera's frame,
+//! [`CameraFrame::anchor_at`]), and [`drive_band`]
 //! spawns, moves and despawns the band entity from them. Tests can drive either end. The
 //! plugin owns the grip (which device holds the band) and lets go on a reset.
 //!
 //! What happens at the edges:
 //! - press and release within one frame (a quick click or tap): the band acts for exactly one
 //!   fixed step, then is removed, so no click is lost;
+//! - the pointer leaves the scene while held (over the dock, the status line, the bottom
+//!   sheet): the anchor stops at the viewport's edge, and never goes past the camera's reach,
+//!   so the box held still stays in the home frame;
 //! - the cursor leaves the window while held: the anchor stays where the cursor was last seen
 //!   and follows again when it comes back;
 //! - the window loses focus: the band is released (the button's release may never arrive);
@@ -20,6 +24,7 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy::window::{PrimaryWindow, WindowFocused};
 
+use crate::game::camera::{CameraFrame, viewport_rect};
 use crate::game::layout::SceneViewport;
 use crate::game::schedule::GameSystems;
 use crate::game::simulation::{Band, Bodies, ResetScene, Tap};
@@ -63,30 +68,35 @@ pub enum PointerSource {
     Touch(u64),
 }
 
-/// The camera the scene is rendered with, into its viewport: the pointer maps through it.
-#[derive(Component, Debug, Default)]
-pub struct SceneCamera;
-
 /// Reads mouse, touch and focus input into [`PointerAction`]s.
 ///
 /// A press grabs only on the scene's viewport (the dock and its controls lie outside it); a
-/// held band follows anywhere.
+/// held band follows anywhere, its anchor clamped to the viewport and the camera's reach.
 fn read_pointer(
-    (buttons, touches, viewport): (
+    (buttons, touches, viewport, frame): (
         Res<ButtonInput<MouseButton>>,
         Res<Touches>,
         Res<SceneViewport>,
+        Res<CameraFrame>,
     ),
     mut focus: MessageReader<WindowFocused>,
     window: Option<Single<&Window, With<PrimaryWindow>>>,
-    camera: Option<Single<(&Camera, &GlobalTransform), With<SceneCamera>>>,
+    boxes: Bodies,
     mut grip: ResMut<Grip>,
     mut actions: MessageWriter<PointerAction>,
 ) {
+    // The box's diagonal: how far past its corner a box held still may lie.
+    let span = boxes
+        .iter()
+        .map(|body| body.mass.size().length() as f32)
+        .fold(0.0, f32::max);
+    let area = window
+        .as_deref()
+        .map(|window| viewport_rect(&viewport, window));
     let to_world = |screen: Vec2| -> Option<DVec2> {
-        let (camera, transform) = *camera.as_deref()?;
-        let world = camera.viewport_to_world_2d(transform, screen).ok()?;
-        world.is_finite().then(|| world.as_dvec2())
+        let area = area.filter(|area| area.size().min_element() > 0.0)?;
+        let world = frame.anchor_at(area, span, screen);
+        world.is_finite().then_some(world)
     };
     // Before any layout (and in the headless game) the scene has the whole window.
     let on_scene = |screen: Vec2| viewport.0.is_none_or(|viewport| viewport.contains(screen));

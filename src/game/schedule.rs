@@ -14,12 +14,13 @@
 //! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
 //!    interpolated between the last two steps, the end of a playback said, learn mode's task
 //!    checked;
-//! 4. `Update`, [`ScreenSystems`]: the regions arranged for the window, the camera placed,
-//!    the HUD's text and the window title, learn mode's card, the panel, the drawing and the
-//!    energy graph, then the plot;
+//! 4. `Update`, [`ScreenSystems`]: the regions arranged for the window, the HUD's text and
+//!    the window title, learn mode's card, the panel, the drawing and the energy graph, then
+//!    the plot;
 //! 5. `PostUpdate` and `Last`, [`AfterBevySystems`]: after Bevy's UI layout the layout says
-//!    where the scene's viewport lies; after Bevy's window exit systems the recorder saves a
-//!    game that ends.
+//!    where the scene's viewport lies, then the view is chosen for it and the scene camera
+//!    placed (before transforms propagate, so the frame drawn is the frame laid out); after
+//!    Bevy's window exit systems the recorder saves a game that ends.
 //!
 //! [`order_the_physics`] chains the fixed step's sets, and the physics plugin calls it itself
 //! because it also runs without the game (the benchmarks, the side-by-side with the peers);
@@ -80,8 +81,6 @@ pub enum AfterStepsSystems {
 pub enum ScreenSystems {
     /// The regions arranged for the window's shape and the cards open, the UI's scale.
     Scale,
-    /// The scene camera zoomed, panned, following the box, placed in the viewport.
-    Camera,
     /// The HUD's text and the window title.
     Hud,
     /// Learn mode's card: the chapter and its equations with this frame's numbers.
@@ -101,6 +100,14 @@ pub enum ScreenSystems {
 pub enum AfterBevySystems {
     /// In `PostUpdate`, after the UI's layout: where the scene's viewport lies.
     AfterLayout,
+    /// In `PostUpdate`, then: what the scene shows chosen, for the viewport laid out.
+    ///
+    /// The player's zoom and pan, the view following the box.
+    View,
+    /// In `PostUpdate`, then, before transforms propagate: the scene camera placed.
+    ///
+    /// It renders into the viewport, showing the view.
+    Camera,
     /// In `Last`, after the window's exit systems asked to exit: a game that ends saved.
     AfterExit,
 }
@@ -149,7 +156,6 @@ pub fn order_the_frame(app: &mut App) {
         Update,
         (
             ScreenSystems::Scale,
-            ScreenSystems::Camera,
             ScreenSystems::Hud,
             ScreenSystems::Learn,
             ScreenSystems::Panel,
@@ -160,7 +166,14 @@ pub fn order_the_frame(app: &mut App) {
     )
     .configure_sets(
         PostUpdate,
-        AfterBevySystems::AfterLayout.after(bevy::ui::UiSystems::Layout),
+        (
+            AfterBevySystems::AfterLayout,
+            AfterBevySystems::View,
+            AfterBevySystems::Camera,
+        )
+            .chain()
+            .after(bevy::ui::UiSystems::Layout)
+            .before(bevy::transform::TransformSystems::Propagate),
     )
     .configure_sets(
         Last,

@@ -84,6 +84,13 @@ pub struct Band {
 #[derive(Component, Debug, Default)]
 pub struct Tap;
 
+/// Returns the state to draw this frame, between the last two fixed steps.
+///
+/// It lies as far between them as the clock has run past the last one.
+pub fn interpolated_state(snapshots: &RenderSnapshots, fixed_time: &Time<Fixed>) -> BodyState {
+    snapshots.interpolate(fixed_time.overstep_fraction_f64().clamp(0.0, 1.0))
+}
+
 /// The state before and after the latest fixed step, for drawing in between.
 #[derive(Component, Debug, Default, Clone, Copy)]
 pub struct RenderSnapshots {

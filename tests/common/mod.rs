@@ -22,9 +22,10 @@ pub use bevy::window::{
 };
 
 pub use rubber_band_box::game::GameLogicPlugin;
+pub use rubber_band_box::game::camera::SceneCamera;
 pub use rubber_band_box::game::hud::{EnergyHistory, Hud, HudLine};
 pub use rubber_band_box::game::input::controls::CYCLE_INTEGRATOR;
-pub use rubber_band_box::game::pointer::{Grip, PointerPlugin, PointerSource, SceneCamera};
+pub use rubber_band_box::game::pointer::{Grip, PointerPlugin, PointerSource};
 pub use rubber_band_box::game::schedule::PhysicsSystems;
 pub use rubber_band_box::game::simulation::{
     Band, EnergyBooks, ForceAccumulator, RigidBox, SimulationPlugin, StepCount, StepStats,
@@ -36,12 +37,16 @@ pub use rubber_band_box::physics::{
 use rubber_band_box::physics::{AutoSettings, BandEnds, BodyState};
 use rubber_band_box::replay::{Replay, Settings};
 
-/// A 1280 x 720 window: the 640 x 480 scene fits its height, so one pixel is 2/3 of a world
-/// unit and the screen centre (640, 360) is the world origin.
+/// A 1280 x 720 window: the 640 x 480 scene with its 4% margin (499.2 high) fits its height,
+/// so one pixel is 499.2 / 720 of a world unit and the screen centre (640, 360) is the world
+/// origin.
 pub const WINDOW: UVec2 = UVec2::new(1280, 720);
 
+/// World units a pixel at home in [`WINDOW`].
+pub const HOME_SCALE: f64 = 480.0 * 1.04 / 720.0;
+
 pub fn screen_to_world(screen: Vec2) -> DVec2 {
-    let scale = 480.0 / 720.0;
+    let scale = HOME_SCALE;
     DVec2::new(
         (screen.x as f64 - 640.0) * scale,
         (360.0 - screen.y as f64) * scale,
@@ -49,7 +54,7 @@ pub fn screen_to_world(screen: Vec2) -> DVec2 {
 }
 
 pub fn world_to_screen(world: DVec2) -> Vec2 {
-    let scale = 720.0 / 480.0;
+    let scale = 1.0 / HOME_SCALE;
     Vec2::new(
         (640.0 + world.x * scale) as f32,
         (360.0 - world.y * scale) as f32,
@@ -96,8 +101,8 @@ impl Game {
                 PrimaryWindow,
             ))
             .id();
-        // What bevy_render's camera system would compute for this window, with the tutorial's
-        // 640 x 480 screen fitted to it (as the game's camera does with no dock).
+        // A scene camera as bevy_render's camera system would compute it for this window, for
+        // the screen's plugins to place (the pointer maps through the camera's frame, not it).
         let mut projection = Projection::Orthographic(OrthographicProjection {
             scaling_mode: bevy::camera::ScalingMode::AutoMin {
                 min_width: 640.0,
@@ -394,6 +399,58 @@ pub fn bits(states: &[BodyState]) -> Vec<[u64; 6]> {
         .iter()
         .map(|state| state.to_array().map(f64::to_bits))
         .collect()
+}
+
+impl Game {
+    /// The game with its screen and Bevy's UI layout, the view's own camera replaced by the
+    /// test's (which the view places as its own).
+    pub fn laid_out() -> Self {
+        let mut game = Game::with(Duration::from_millis(10), |app| {
+            add_the_layout(app);
+            add_the_screen(app);
+        });
+        let world = game.world();
+        let views: Vec<Entity> = world
+            .query::<(Entity, &Name)>()
+            .iter(world)
+            .filter(|(_, name)| name.as_str() == "Camera")
+            .map(|(entity, _)| entity)
+            .collect();
+        world.despawn(views[0]);
+        game
+    }
+
+    /// Returns where the scene camera puts a world point on the window: its transform and its
+    /// projection's scale, in the viewport Bevy's layout gave it.
+    pub fn on_window(&mut self, world_point: Vec2) -> Vec2 {
+        let world = self.world();
+        let viewport = world
+            .resource::<rubber_band_box::game::layout::SceneViewport>()
+            .0
+            .unwrap();
+        let mut cameras = world.query_filtered::<(&Transform, &Projection), With<SceneCamera>>();
+        let (transform, projection) = cameras.single(world).unwrap();
+        let Projection::Orthographic(orthographic) = projection else {
+            panic!("the scene camera is orthographic");
+        };
+        let offset = (world_point - transform.translation.truncate()) / orthographic.scale;
+        viewport.center() + Vec2::new(offset.x, -offset.y)
+    }
+
+    /// Returns the box's corners as drawn this frame, in the world.
+    pub fn drawn_corners(&mut self) -> Vec<Vec2> {
+        use rubber_band_box::game::simulation::{RenderSnapshots, interpolated_state};
+        use rubber_band_box::physics::MassProperties;
+        let world = self.world();
+        let fixed = *world.resource::<Time<bevy::time::Fixed>>();
+        let mut boxes = world.query::<(&RenderSnapshots, &MassProperties)>();
+        let (snapshots, mass) = boxes.single(world).unwrap();
+        let state = interpolated_state(snapshots, &fixed);
+        mass.corners()
+            .iter()
+            .map(|&corner| state.local_to_world(corner).as_vec2())
+            .collect()
+    }
 }
 
 /// The screen's plugins (view, drawing, energy graph, plot) added to a headless game, with

@@ -8,6 +8,7 @@
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
+use crate::game::camera::HomeView;
 use crate::game::learn::Learn;
 use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
@@ -339,10 +340,6 @@ pub fn key_hint() -> String {
     let labels: Vec<&str> = CONTROLS.iter().map(|control| control.label).collect();
     labels.join(" ")
 }
-
-/// The camera back to its home frame: triggered by the controls, observed by the view.
-#[derive(Event, Debug, Clone, Copy)]
-pub struct HomeView;
 
 /// Sends the action of each key pressed this frame.
 fn keys_to_actions(keys: Res<ButtonInput<KeyCode>>, mut actions: MessageWriter<Action>) {

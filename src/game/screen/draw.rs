@@ -10,16 +10,15 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
+use crate::game::camera::{CameraFrame, SceneCamera, shown_area, world_per_pixel};
 use crate::game::ghosts::{Ghost, GhostKind, Ghosts};
 use crate::game::layout::SceneViewport;
 use crate::game::learn::Learning;
 use crate::game::learn::chapters::{CHAPTERS, Equation};
 use crate::game::learn::twin::CentreTwin;
-use crate::game::pointer::SceneCamera;
 use crate::game::schedule::ScreenSystems;
-use crate::game::screen::view::{CameraFrame, interpolated_state, shown_area, world_per_pixel};
 use crate::game::shared::Overlays;
-use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox};
+use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox, interpolated_state};
 use crate::game::theme::colour;
 use crate::physics::{Integrator, MassProperties, SCENE_SIZE, SceneParams};
 
