@@ -19,6 +19,7 @@ fn readings() -> HudReadings {
         time_scale: 1.0,
         paused: false,
         simulated_seconds: 1.5,
+        pace: 1.0,
         frames_per_second: 60.0,
         mass: 5.0,
         stiffness: 20.0,
@@ -588,4 +589,28 @@ fn the_title_says_autos_substeps_and_no_one_elses() {
         "{rk4}"
     );
     assert!(!rk4.contains("substep"), "{rk4}");
+}
+
+/// A game whose frames give the simulation less time than the wall clock (Bevy's virtual clock
+/// caps each frame's time, as it does when a frame takes over 250 ms) says so on the status
+/// line, with the rate it runs at; one that keeps up says nothing.
+#[test]
+fn the_status_line_says_when_the_game_falls_behind_the_wall_clock() {
+    let mut game = Game::stepping();
+    game.update(200);
+    assert!(!game.hud(HudLine::Status).contains("behind"));
+    // Each 10 ms frame gives the simulation 4 ms.
+    game.world()
+        .resource_mut::<Time<Virtual>>()
+        .set_max_delta(Duration::from_millis(4));
+    game.update(500);
+    let status = game.hud(HudLine::Status);
+    assert!(status.contains("behind: runs ×0.40"), "{status}");
+    // Back to the wall clock's pace: it stops saying so within a few seconds.
+    game.world()
+        .resource_mut::<Time<Virtual>>()
+        .set_max_delta(Duration::from_millis(250));
+    game.update(500);
+    let status = game.hud(HudLine::Status);
+    assert!(!status.contains("behind"), "{status}");
 }

@@ -37,10 +37,13 @@ impl Plugin for HudPlugin {
             app.add_plugins(FrameTimeDiagnosticsPlugin::default());
         }
         app.add_plugins(history::EnergyHistoryPlugin)
+            .init_resource::<Pace>()
             .add_systems(Startup, spawn_hud)
             .add_systems(
                 Update,
-                (show_hud, title::show_state_in_title).in_set(ScreenSystems::Hud),
+                (measure_pace, (show_hud, title::show_state_in_title))
+                    .chain()
+                    .in_set(ScreenSystems::Hud),
             );
     }
 }
@@ -270,9 +273,42 @@ struct News {
 /// The hint under the scene: how to play, in a line a phone can hold.
 pub const HINT: &str = "drag: pull the box · wheel or pinch: zoom · F: frame · H: instruments";
 
+/// The share of the set pace below which the status line says the game falls behind.
+pub const BEHIND: f64 = 0.95;
+
+/// The share of the set pace the game's clock has kept over about the last second.
+///
+/// The set pace is the wall clock times the time scale. 1 while every frame's time reaches the simulation. Bevy's virtual clock takes at most
+/// 250 ms from a frame (`Time<Virtual>`'s `max_delta`): when frames (their fixed steps, their
+/// drawing) take longer, the simulated time falls behind the wall clock, and this says by how
+/// much.
+#[derive(Resource, Debug, Clone, Copy, PartialEq)]
+pub struct Pace(pub f64);
+
+impl Default for Pace {
+    fn default() -> Self {
+        Self(1.0)
+    }
+}
+
+/// Updates [`Pace`] from this frame's real and virtual time, with a memory of about a second.
+fn measure_pace(real: Res<Time<Real>>, virtual_time: Res<Time<Virtual>>, mut pace: ResMut<Pace>) {
+    let wall = real.delta_secs_f64();
+    let set = wall * virtual_time.relative_speed_f64();
+    if virtual_time.is_paused() || set <= 0.0 {
+        return;
+    }
+    let kept = (virtual_time.delta_secs_f64() / set).clamp(0.0, 1.0);
+    let weight = 1.0 - (-wall).exp();
+    let next = pace.0 + (kept - pace.0) * weight;
+    if pace.0 != next {
+        pace.0 = next;
+    }
+}
+
 /// Writes the status over the scene: the integrator, k, the step rate, the time scale, the clock.
 ///
-/// It says so when paused or diverged.
+/// It says so when paused, diverged, or falling behind the wall clock ([`Pace`]).
 fn status_line(r: &HudReadings) -> String {
     let mut line = format!(
         "{} · k {} · {} Hz · time ×{} · t {:.1} s",
@@ -284,6 +320,9 @@ fn status_line(r: &HudReadings) -> String {
     );
     if r.paused {
         line += " · PAUSED";
+    } else if r.pace < BEHIND {
+        // The rate the clock really runs at, beside the one set ("time ×1").
+        line += &format!(" · behind: runs ×{:.2}", r.pace * r.time_scale);
     }
     if let Some((diverged, step)) = r.divergence {
         line += &format!(" · {diverged} DIVERGED at step {step}");
@@ -425,6 +464,8 @@ pub struct HudReadings {
     pub time_scale: f64,
     pub paused: bool,
     pub simulated_seconds: f64,
+    /// The share of the set pace the game's clock keeps ([`Pace`]).
+    pub pace: f64,
     pub frames_per_second: f64,
     pub mass: f64,
     pub stiffness: f64,
@@ -484,6 +525,7 @@ pub struct HudSources<'w, 's> {
     params: Res<'w, SceneParams>,
     books: Res<'w, EnergyBooks>,
     virtual_time: Res<'w, Time<Virtual>>,
+    pace: Res<'w, Pace>,
     fixed_time: Res<'w, Time<Fixed>>,
     diagnostics: Res<'w, DiagnosticsStore>,
     history: Res<'w, EnergyHistory>,
@@ -517,6 +559,7 @@ impl HudSources<'_, '_> {
             time_scale: self.virtual_time.relative_speed_f64(),
             paused: self.virtual_time.is_paused(),
             simulated_seconds: self.fixed_time.elapsed_secs_f64() - self.history.since,
+            pace: self.pace.0,
             frames_per_second: self
                 .diagnostics
                 .get(&FrameTimeDiagnosticsPlugin::FPS)
