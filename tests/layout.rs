@@ -205,3 +205,78 @@ fn learn_modes_card_lays_out_at_six_sizes() {
         }
     }
 }
+
+/// The dock's track and thumb on the window, and whether each is painted.
+fn dock_scrollbar(game: &mut Game) -> ((Rect, bool), (Rect, bool)) {
+    use bevy::ui_widgets::ScrollbarThumb;
+    use rubber_band_box::game::layout::DockScrollbar;
+    use rubber_band_box::game::shared::window_rect;
+    let world = game.world();
+    let scale = UiScale(world.resource::<UiScale>().0);
+    let track = world
+        .query_filtered::<Entity, With<DockScrollbar>>()
+        .single(world)
+        .unwrap();
+    let thumb = world
+        .query_filtered::<Entity, With<ScrollbarThumb>>()
+        .single(world)
+        .unwrap();
+    let read = |entity: Entity| {
+        let node = world.get::<ComputedNode>(entity).unwrap();
+        let transform = world.get::<UiGlobalTransform>(entity).unwrap();
+        let painted = world.get::<BackgroundColor>(entity).unwrap().0.alpha() > 0.5;
+        (window_rect(node, transform, &scale), painted)
+    };
+    (read(track), read(thumb))
+}
+
+/// At 960 x 720 with the energy, ghosts and plot cards open the dock's cards run past the
+/// window's bottom: a scrollbar beside them says so (its thumb shorter than its track, at the
+/// top), and it reaches the track's end when the cards are scrolled to theirs. With the cards
+/// folded, or on a phone with one short card open, no scrollbar is painted.
+#[test]
+fn a_dock_that_overflows_shows_its_scrollbar() {
+    use rubber_band_box::game::layout::DockCards;
+    let mut game = Game::laid_out();
+    game.resize(UVec2::new(960, 720));
+    game.tap_key(KeyCode::KeyG);
+    game.tap_key(KeyCode::KeyP);
+    let mut open = Cards::default();
+    for card in [Card::Energy, Card::Ghosts, Card::Plot] {
+        open.set(card, true);
+    }
+    *game.world().resource_mut::<Cards>() = open;
+    game.update(4);
+    let ((track, painted), (thumb, shown)) = dock_scrollbar(&mut game);
+    assert!(
+        painted && shown,
+        "the scrollbar is seen: {track:?} {thumb:?}"
+    );
+    assert!(
+        thumb.height() < track.height() - 10.0 && (thumb.min.y - track.min.y).abs() < 1.0,
+        "a short thumb at the top: {thumb:?} in {track:?}"
+    );
+    assert!(track.width() >= 3.0 && track.max.x <= 960.5, "{track:?}");
+    // Scrolled to the end: the thumb at the track's end.
+    let world = game.world();
+    let mut scrolled = world.query_filtered::<&mut ScrollPosition, With<DockCards>>();
+    scrolled.single_mut(world).unwrap().0.y = 1e6;
+    game.update(3);
+    let ((track, _), (thumb, _)) = dock_scrollbar(&mut game);
+    assert!(
+        (thumb.max.y - track.max.y).abs() < 1.0,
+        "scrolled to the end, the thumb at the track's end: {thumb:?} in {track:?}"
+    );
+    // Folded: nothing to scroll, nothing painted.
+    *game.world().resource_mut::<Cards>() = Cards::default();
+    game.update(4);
+    let ((_, painted), (_, shown)) = dock_scrollbar(&mut game);
+    assert!(!painted && !shown, "folded cards need no scrollbar");
+    game.resize(UVec2::new(390, 844));
+    let mut readouts = Cards::default();
+    readouts.set(Card::Readouts, true);
+    *game.world().resource_mut::<Cards>() = readouts;
+    game.update(4);
+    let ((track, painted), (_, shown)) = dock_scrollbar(&mut game);
+    assert!(!painted && !shown, "a short card on a phone: {track:?}");
+}

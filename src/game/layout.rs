@@ -15,7 +15,9 @@
 use bevy::picking::Pickable;
 use bevy::prelude::*;
 use bevy::ui::{CalculatedClip, UiGlobalTransform};
-use bevy::ui_widgets::{ActivateOnPress, Button};
+use bevy::ui_widgets::{
+    ActivateOnPress, Button, ControlOrientation, Scrollbar, ScrollbarPlugin, ScrollbarThumb,
+};
 use bevy::window::PrimaryWindow;
 
 use crate::game::schedule::{AfterBevySystems, ScreenSystems};
@@ -26,6 +28,10 @@ pub struct LayoutPlugin;
 
 impl Plugin for LayoutPlugin {
     fn build(&self, app: &mut App) {
+        // `DefaultPlugins` bring it with the widgets feature; the headless game adds it.
+        if !app.is_plugin_added::<ScrollbarPlugin>() {
+            app.add_plugins(ScrollbarPlugin);
+        }
         // The panel's sliders read it too (the UI plugin has it; the headless game does not).
         app.init_resource::<UiScale>()
             .init_resource::<Cards>()
@@ -44,7 +50,7 @@ impl Plugin for LayoutPlugin {
             )
             .add_systems(
                 PostUpdate,
-                publish_viewport.in_set(AfterBevySystems::AfterLayout),
+                (publish_viewport, show_the_dock_scrollbar).in_set(AfterBevySystems::AfterLayout),
             );
         #[cfg(target_arch = "wasm32")]
         app.add_systems(
@@ -320,9 +326,17 @@ pub struct CardButton(pub Card);
 #[derive(Component, Debug)]
 struct ViewportNode;
 
-/// The dock (the side column or the bottom sheet).
+/// The dock (the side column or the bottom sheet): its cards and their scrollbar.
 #[derive(Component, Debug)]
 pub struct Dock;
+
+/// The dock's cards, in a column that scrolls when they are taller than the dock.
+#[derive(Component, Debug)]
+pub struct DockCards;
+
+/// The dock's scrollbar: seen only while the cards overflow, a sign that there is more.
+#[derive(Component, Debug)]
+pub struct DockScrollbar;
 
 /// The root of every region.
 #[derive(Component, Debug)]
@@ -451,21 +465,59 @@ fn spawn_regions(mut commands: Commands) {
     hint.3.overflow = Overflow::clip_x();
     commands.spawn((hint, ChildOf(scene)));
 
-    let dock = commands
+    let holder = commands
         .spawn((
             Name::new("Dock"),
             Dock,
             Node {
-                flex_direction: FlexDirection::Column,
+                flex_direction: FlexDirection::Row,
                 flex_shrink: 0.0,
-                overflow: Overflow::scroll_y(),
-                row_gap: px(space::GAP),
-                padding: UiRect::all(px(space::GAP)),
                 ..default()
             },
             ChildOf(root),
         ))
         .id();
+    // The scrollbar takes the cards' right padding: the cards keep the width they had.
+    let dock = commands
+        .spawn((
+            Name::new("Dock cards"),
+            DockCards,
+            Node {
+                flex_direction: FlexDirection::Column,
+                flex_grow: 1.0,
+                flex_shrink: 1.0,
+                min_width: px(0),
+                min_height: px(0),
+                overflow: Overflow::scroll_y(),
+                row_gap: px(space::GAP),
+                padding: UiRect {
+                    right: px(0),
+                    ..UiRect::all(px(space::GAP))
+                },
+                ..default()
+            },
+            ChildOf(holder),
+        ))
+        .id();
+    commands.spawn((
+        Name::new("Dock scrollbar"),
+        DockScrollbar,
+        Scrollbar::new(dock, ControlOrientation::Vertical, 24.0),
+        Node {
+            width: px(space::GAP),
+            flex_shrink: 0.0,
+            ..default()
+        },
+        BackgroundColor(Color::NONE),
+        children![(
+            ScrollbarThumb {
+                border_radius: BorderRadius::all(px(space::GAP / 2.0)),
+                border: UiRect::DEFAULT,
+            },
+            BackgroundColor(Color::NONE),
+        )],
+        ChildOf(holder),
+    ));
     let tabs = commands
         .spawn((
             Name::new("Tabs"),
@@ -664,7 +716,7 @@ fn scroll_the_dock(
     touches: Res<Touches>,
     windows: Query<&Window, With<PrimaryWindow>>,
     ui_scale: Res<UiScale>,
-    mut docks: Query<(&ComputedNode, &UiGlobalTransform, &mut ScrollPosition), With<Dock>>,
+    mut docks: Query<(&ComputedNode, &UiGlobalTransform, &mut ScrollPosition), With<DockCards>>,
 ) {
     let cursor = windows.iter().next().and_then(Window::cursor_position);
     for event in wheel.read() {
@@ -688,6 +740,41 @@ fn scroll_the_dock(
             }
         }
     }
+}
+
+/// Shows the dock's scrollbar while its cards are taller than the dock, and hides it when not.
+///
+/// Only colours change: the bar keeps its width either way, so the layout never moves.
+fn show_the_dock_scrollbar(
+    cards: Query<&ComputedNode, With<DockCards>>,
+    bars: Query<(&Children, Entity), With<DockScrollbar>>,
+    mut colours: Query<&mut BackgroundColor>,
+) {
+    let Some(node) = cards.iter().next() else {
+        return;
+    };
+    let overflows = tells_overflow(node);
+    for (thumbs, bar) in &bars {
+        let (track, thumb) = if overflows {
+            (colour::CARD, colour::DIM)
+        } else {
+            (Color::NONE, Color::NONE)
+        };
+        if let Ok(mut background) = colours.get_mut(bar) {
+            background.set_if_neq(BackgroundColor(track));
+        }
+        for thumb_entity in thumbs {
+            if let Ok(mut background) = colours.get_mut(*thumb_entity) {
+                background.set_if_neq(BackgroundColor(thumb));
+            }
+        }
+    }
+}
+
+/// Tells whether a scrolled node's content is taller than the node (by more than a pixel).
+pub fn tells_overflow(node: &ComputedNode) -> bool {
+    let scale = node.inverse_scale_factor();
+    (node.content_size().y - node.size().y) * scale > 1.0
 }
 
 /// Publishes where Bevy's layout put the viewport node.
