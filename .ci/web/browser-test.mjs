@@ -355,13 +355,16 @@ const checkLayout = (where, s, share) => {
   check(got >= share, `${where}: the scene's viewport ${fmt(s.viewport)} takes at least ${share} of the window's ${s.width} x ${s.height} (${got.toFixed(3)})`);
 };
 
-// A hand pulls the box out of the frame (from its centre to just inside the viewport's
-// top-right corner, held there): the camera must follow, so every corner of the box lies in
-// the viewport in every frame sampled. Counted on the rectangles the page publishes, in many
-// frames; a sample is counted only in a frame the earlier sample did not see and with the
-// viewport where it was at the earlier sample (the page places the box with the viewport of
-// the frame before).
-const pullOutOfView = async (p, where, pointer, snap) => {
+// A hand pulls the box (from its centre) to a point and holds it there: to just inside the
+// viewport's top-right corner, and over the dock (past the viewport's right edge on a wide
+// window, on the bottom sheet on a tall one), where a camera that chased the anchor once
+// shrank the world to a dot. In every frame sampled every corner of the box lies in the
+// viewport and the box is at least half as large on the page as when the pull began (a
+// world shrunk to a dot keeps the box "inside"); after letting go, the same while it swings
+// back. Counted on the rectangles the page publishes, in many frames; a sample is counted
+// only in a frame the earlier sample did not see and with the viewport where it was at the
+// earlier sample (the page places the box with the viewport of the frame before).
+const pullAndHold = async (p, where, pointer, snap, target) => {
   const s = await api(p);
   const from = boxCentre(s);
   if (!from || !s.viewport) {
@@ -369,32 +372,44 @@ const pullOutOfView = async (p, where, pointer, snap) => {
     return;
   }
   const v = s.viewport;
-  const to = [v[0] + v[2] - 40, v[1] + 40];
+  const [to, said] = target === "dock"
+    ? (wideWindow(s)
+      ? [[(v[0] + v[2] + s.width) / 2, v[1] + 100], "over the dock"]
+      : [[v[0] + v[2] / 2 + 40, Math.min(s.height - 8, v[1] + v[3] + 40)], "on the bottom sheet"])
+    : [[v[0] + v[2] - 40, v[1] + 40], "40 px inside the viewport's top-right corner"];
+  const rest = polygonArea(s.box);
   await pointer.down(...from);
   for (let i = 1; i <= 10; i++) {
     await pointer.move(from[0] + (to[0] - from[0]) * i / 10, from[1] + (to[1] - from[1]) * i / 10);
     await p.waitForTimeout(30);
   }
   const outside = [];
-  let [counted, skipped, last] = [0, 0, null];
-  const held = Date.now();
-  while ((counted < 10 || Date.now() - held < 2000) && Date.now() - held < 15000) {
-    await p.waitForTimeout(120);
-    const now = await api(p);
-    if (!last) { last = now; continue; }
-    const steady = JSON.stringify(now.viewport) === JSON.stringify(last.viewport);
-    const fresh = now.frame !== last.frame;
-    last = now;
-    if (!fresh) continue;
-    if (!steady || !now.viewport) { skipped++; continue; }
-    counted++;
-    const off = (now.box ?? []).filter((c) => !contains(now.viewport, c, 1));
-    if (!now.box?.length || off.length) outside.push(`frame ${now.frame}: corners ${fmt(now.box)}, viewport ${fmt(now.viewport)}`);
-  }
-  await snap("pull");
+  let [counted, skipped, smallest] = [0, 0, Infinity];
+  const sample = async (least, most) => {
+    let last = null;
+    const began = Date.now();
+    while ((counted < least || Date.now() - began < 2000) && Date.now() - began < most) {
+      await p.waitForTimeout(120);
+      const now = await api(p);
+      if (!last) { last = now; continue; }
+      const steady = JSON.stringify(now.viewport) === JSON.stringify(last.viewport);
+      const fresh = now.frame !== last.frame;
+      last = now;
+      if (!fresh) continue;
+      if (!steady || !now.viewport) { skipped++; continue; }
+      counted++;
+      const off = (now.box ?? []).filter((c) => !contains(now.viewport, c, 1));
+      if (!now.box?.length || off.length) outside.push(`frame ${now.frame}: corners ${fmt(now.box)}, viewport ${fmt(now.viewport)}`);
+      if (now.box?.length) smallest = Math.min(smallest, Math.sqrt(polygonArea(now.box) / rest));
+    }
+  };
+  await sample(10, 15000);
+  await snap(target === "dock" ? "pull-dock" : "pull");
   await pointer.up();
-  check(counted >= 10 && outside.length === 0,
-    `${where}: a pull from the box's centre ${fmt(from)} held 40 px inside the viewport's top-right corner ${fmt(to)}: every corner of the box inside the viewport (1 px tolerance) in all ${counted} frames sampled (${skipped} skipped, the viewport moving)${outside.length ? `; outside in ${outside.length}: ${outside.slice(0, 4).join("; ")}` : ""}`);
+  const held = counted;
+  await sample(held + 10, 15000);
+  check(held >= 10 && counted >= held + 10 && outside.length === 0 && smallest >= 0.5,
+    `${where}: a pull from the box's centre ${fmt(from)} held ${said} ${fmt(to)}, then let go: every corner of the box inside the viewport (1 px tolerance) in all ${counted} frames sampled (${held} held; ${skipped} skipped, the viewport moving), the box at least half its size on the page (${smallest.toFixed(2)} of it at the least)${outside.length ? `; outside in ${outside.length}: ${outside.slice(0, 4).join("; ")}` : ""}`);
 };
 
 // The box's area on the page: the polygon of its corners (the shoelace formula).
@@ -826,7 +841,7 @@ try {
   const dark = titlesShown(lab).filter((t) => litIn(labPng, lab.panel[t]) === false);
   check(unopened.length === 0 && dark.length === 0, `desktop: every card opens, any number at once (not opened: ${unopened.join(", ") || "none"}; titles in view not lit: ${dark.join(", ") || "none"})`);
   checkLayout("desktop 960 x 720, the lab on, every card open", lab, 0.5);
-  await pullOutOfView(page, "desktop", mouse, (label) => shot(`desktop-lab-${label}`));
+  for (const target of ["corner", "dock"]) await pullAndHold(page, "desktop", mouse, (label) => shot(`desktop-lab-${label}`), target);
 
   // Links (docs/links.md). The panel's "link" puts the link of what is on screen in the
   // address bar (and window.rubberBandBox.link); that link opened in a fresh page shows the
@@ -981,7 +996,7 @@ try {
     const lab = await api(phone);
     await snap(tall ? "lab-plot" : "lab");
     checkLayout(`${where}, the lab on, ${tall ? "the plot's tab open" : "the Controls, Ghosts and plot cards open"}`, lab, 0.4);
-    await pullOutOfView(phone, where, finger, (label) => snap(`lab-${label}`));
+    for (const target of ["corner", "dock"]) await pullAndHold(phone, where, finger, (label) => snap(`lab-${label}`), target);
     if (tall && full) {
       // Each tab in turn: its card opens alone, and the layout's rules hold with it.
       for (const title of CARDS.filter((t) => t !== "Speed against error")) {
