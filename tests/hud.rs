@@ -606,6 +606,10 @@ fn the_status_line_says_when_the_game_falls_behind_the_wall_clock() {
     game.update(500);
     let status = game.hud(HudLine::Status);
     assert!(status.contains("behind: runs ×0.40"), "{status}");
+    // The window title says it too, for a hidden HUD.
+    let window = game.window;
+    let title = game.world().get::<Window>(window).unwrap().title.clone();
+    assert!(title.contains("time ×1, behind: runs ×0.40"), "{title}");
     // Back to the wall clock's pace: it stops saying so within a few seconds.
     game.world()
         .resource_mut::<Time<Virtual>>()

@@ -8,6 +8,7 @@
 //! draws with gizmos and is added with the screen.
 
 pub mod history;
+pub mod pace;
 pub mod title;
 
 use bevy::diagnostic::{DiagnosticsStore, FrameTimeDiagnosticsPlugin};
@@ -28,6 +29,7 @@ use crate::game::theme::{self, colour, size, space};
 use crate::physics::stability::{Limit, Margin};
 use crate::physics::{Energies, EnergyLedger, Integrator, Scene, SceneParams};
 pub use history::EnergyHistory;
+use pace::{BEHIND, Pace, measure_pace};
 
 pub struct HudPlugin;
 
@@ -272,39 +274,6 @@ struct News {
 
 /// The hint under the scene: how to play, in a line a phone can hold.
 pub const HINT: &str = "drag: pull the box · wheel or pinch: zoom · F: frame · H: instruments";
-
-/// The share of the set pace below which the status line says the game falls behind.
-pub const BEHIND: f64 = 0.95;
-
-/// The share of the set pace the game's clock has kept over about the last second.
-///
-/// The set pace is the wall clock times the time scale. 1 while every frame's time reaches the simulation. Bevy's virtual clock takes at most
-/// 250 ms from a frame (`Time<Virtual>`'s `max_delta`): when frames (their fixed steps, their
-/// drawing) take longer, the simulated time falls behind the wall clock, and this says by how
-/// much.
-#[derive(Resource, Debug, Clone, Copy, PartialEq)]
-pub struct Pace(pub f64);
-
-impl Default for Pace {
-    fn default() -> Self {
-        Self(1.0)
-    }
-}
-
-/// Updates [`Pace`] from this frame's real and virtual time, with a memory of about a second.
-fn measure_pace(real: Res<Time<Real>>, virtual_time: Res<Time<Virtual>>, mut pace: ResMut<Pace>) {
-    let wall = real.delta_secs_f64();
-    let set = wall * virtual_time.relative_speed_f64();
-    if virtual_time.is_paused() || set <= 0.0 {
-        return;
-    }
-    let kept = (virtual_time.delta_secs_f64() / set).clamp(0.0, 1.0);
-    let weight = 1.0 - (-wall).exp();
-    let next = pace.0 + (kept - pace.0) * weight;
-    if pace.0 != next {
-        pace.0 = next;
-    }
-}
 
 /// Writes the status over the scene: the integrator, k, the step rate, the time scale, the clock.
 ///

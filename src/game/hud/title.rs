@@ -3,19 +3,21 @@
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 
+use crate::game::hud::pace::{BEHIND, Pace};
 use crate::game::input::controls::key_hint;
 use crate::game::simulation::{EnergyBooks, StepStats};
 use crate::physics::{Integrator, SceneParams};
 
 /// Writes the state and the keys into the window title.
 ///
-/// "Rubber Band Box: auto (2 substeps, 0 fall-backs), k 20, 100 Hz, time ×1, paused; keys".
+/// "Rubber Band Box: auto (2 substeps, 0 fall-backs), k 20, 100 Hz, time ×1, paused; keys";
+/// "behind: runs ×0.42" after the time scale while the clock falls behind ([`Pace`]).
 pub fn show_state_in_title(
     integrator: Res<Integrator>,
     stats: Res<StepStats>,
     params: Res<SceneParams>,
     books: Res<EnergyBooks>,
-    virtual_time: Res<Time<Virtual>>,
+    (virtual_time, pace): (Res<Time<Virtual>>, Res<Pace>),
     mut window: Option<Single<&mut Window, With<PrimaryWindow>>>,
 ) {
     let Some(window) = window.as_deref_mut() else {
@@ -36,6 +38,12 @@ pub fn show_state_in_title(
         params.step_rate_hz,
         virtual_time.relative_speed_f64()
     );
+    if !virtual_time.is_paused() && pace.0 < BEHIND {
+        title += &format!(
+            ", behind: runs ×{:.2}",
+            pace.0 * virtual_time.relative_speed_f64()
+        );
+    }
     title += &format!(", energy error {:.1e}", books.residual);
     if virtual_time.is_paused() {
         title += ", paused (N steps)";

@@ -1,0 +1,41 @@
+//! The pace: the share of the set pace the game's clock keeps, for the status line and the
+//! window title to say when the game falls behind the wall clock.
+
+use bevy::prelude::*;
+
+/// The share of the set pace below which the status line says the game falls behind.
+pub const BEHIND: f64 = 0.95;
+
+/// The share of the set pace the game's clock has kept over about the last second.
+///
+/// The set pace is the wall clock times the time scale. 1 while every frame's time reaches the
+/// simulation. Bevy's virtual clock takes at most 250 ms from a frame (`Time<Virtual>`'s
+/// `max_delta`): when frames (their fixed steps, their drawing) take longer, the simulated
+/// time falls behind the wall clock, and this says by how much.
+#[derive(Resource, Debug, Clone, Copy, PartialEq)]
+pub struct Pace(pub f64);
+
+impl Default for Pace {
+    fn default() -> Self {
+        Self(1.0)
+    }
+}
+
+/// Updates [`Pace`] from this frame's real and virtual time, with a memory of about a second.
+pub fn measure_pace(
+    real: Res<Time<Real>>,
+    virtual_time: Res<Time<Virtual>>,
+    mut pace: ResMut<Pace>,
+) {
+    let wall = real.delta_secs_f64();
+    let set = wall * virtual_time.relative_speed_f64();
+    if virtual_time.is_paused() || set <= 0.0 {
+        return;
+    }
+    let kept = (virtual_time.delta_secs_f64() / set).clamp(0.0, 1.0);
+    let weight = 1.0 - (-wall).exp();
+    let next = pace.0 + (kept - pace.0) * weight;
+    if pace.0 != next {
+        pace.0 = next;
+    }
+}
