@@ -7,7 +7,6 @@
 mod common;
 
 use std::any::TypeId;
-use std::time::Duration;
 
 use bevy::color::LinearRgba;
 use bevy::gizmos::config::DefaultGizmoConfigGroup;
@@ -16,26 +15,9 @@ use common::*;
 use rubber_band_box::game::ghosts::GhostKind;
 use rubber_band_box::game::screen::draw::{BOX_OUTLINE, PIN_FILL};
 
-/// The headless game with the screen's plugins. The view's own camera has no renderer to
-/// compute its projection, so it goes: the test's camera (as bevy_render would compute it)
-/// maps the pointer.
+/// The headless game with the screen's plugins ([`Game::with_screen`]).
 fn screen_game() -> Game {
-    screen_game_with(add_the_screen)
-}
-
-/// [`screen_game`], with what `plugins` adds.
-fn screen_game_with(plugins: impl FnOnce(&mut App)) -> Game {
-    let mut game = Game::with(Duration::from_millis(10), plugins);
-    let world = game.world();
-    let views: Vec<Entity> = world
-        .query::<(Entity, &Name)>()
-        .iter(world)
-        .filter(|(_, name)| name.as_str() == "Camera")
-        .map(|(entity, _)| entity)
-        .collect();
-    assert_eq!(views.len(), 1, "the view's camera");
-    world.despawn(views[0]);
-    game
+    Game::with_screen(add_the_screen)
 }
 
 /// One thing drawn: a segment, or a strip (a loop repeats its first two points at its end,
@@ -401,7 +383,7 @@ fn the_ui_scales_down_with_a_small_window_to_no_less_than_0_85() {
 /// The headless game with the screen and Bevy's UI layout: the dock laid out, its charts'
 /// canvases placed (every camera told the window's size, as the renderer would).
 fn laid_out_screen_game(size: UVec2) -> Game {
-    let mut game = screen_game_with(|app| {
+    let mut game = Game::with_screen(|app| {
         add_the_layout(app);
         add_the_screen(app);
     });

@@ -402,13 +402,20 @@ pub fn bits(states: &[BodyState]) -> Vec<[u64; 6]> {
 }
 
 impl Game {
-    /// The game with its screen and Bevy's UI layout, the view's own camera replaced by the
-    /// test's (which the view places as its own).
+    /// The game with its screen and Bevy's UI layout (see [`Game::with_screen`]).
     pub fn laid_out() -> Self {
-        let mut game = Game::with(Duration::from_millis(10), |app| {
+        Self::with_screen(|app| {
             add_the_layout(app);
             add_the_screen(app);
-        });
+        })
+    }
+
+    /// The game with what `plugins` adds, the screen's among them, one fixed step a frame.
+    ///
+    /// The view's own camera has no renderer to compute its projection, so it goes: the
+    /// test's camera (as bevy_render would compute it) is placed by the view as its own.
+    pub fn with_screen(plugins: impl FnOnce(&mut App)) -> Self {
+        let mut game = Game::with(Duration::from_millis(10), plugins);
         let world = game.world();
         let views: Vec<Entity> = world
             .query::<(Entity, &Name)>()
@@ -416,6 +423,7 @@ impl Game {
             .filter(|(_, name)| name.as_str() == "Camera")
             .map(|(entity, _)| entity)
             .collect();
+        assert_eq!(views.len(), 1, "the view's camera");
         world.despawn(views[0]);
         game
     }
