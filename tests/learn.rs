@@ -97,6 +97,13 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
     let damp_torque = -params.angular_damping * inertia * omega;
     let sum = force + damp;
     let torques = torque + damp_torque;
+    let f = |x: f64| if x < 0.0 { format!("({})", n(x)) } else { n(x) };
+    let torque_parts = format!(
+        "Στ = τ_band + τ_damp = {} + {} = {}",
+        n(torque),
+        f(damp_torque),
+        n(torques)
+    );
     let mut wanted = Vec::new();
     match CHAPTERS[index].task {
         Task::MoveWithoutTurning => {
@@ -119,6 +126,7 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
                 n(torque)
             ));
             wanted.push(v(sum / m));
+            wanted.push(torque_parts);
             wanted.push(n(torques / inertia));
             // The centre twin: the same band's anchor moved by the offset, held at its centre.
             let twin = world.resource::<CentreTwin>().body.clone().expect("a twin");
@@ -126,11 +134,13 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
             let pulled = band.map(|ends| ends.anchor + TWIN_OFFSET);
             assert_eq!(twin.anchor(), pulled);
             if let Some(q) = pulled {
-                let f = -params.stiffness * (state.linear.position - q);
+                let pull = -params.stiffness * (state.linear.position - q);
+                let drag = -params.linear_damping * state.linear.velocity;
                 wanted.push(format!(
-                    "twin: F = −k (x − q) = {}, a = F / m = {}",
-                    v(f),
-                    v(f / m)
+                    "twin: ΣF = −k (x − q) − b v = {} + {}, a = ΣF / m = {}",
+                    v(pull),
+                    v(drag),
+                    v((pull + drag) / m)
                 ));
                 // Pulled through its centre, it never turns.
                 assert_eq!(state.angular.orientation, 0.0);
@@ -139,6 +149,7 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
         }
         Task::DoubleTheInertia => {
             wanted.push(format!("= {}", n(inertia)));
+            wanted.push(torque_parts);
             wanted.push(n(torques / inertia));
         }
         Task::ThreeCorners => {
@@ -160,7 +171,6 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
             wanted.push(v(damp));
             wanted.push(n(damp_torque));
             wanted.push(n(kinetic + turning + elastic));
-            let f = |x: f64| if x < 0.0 { format!("({})", n(x)) } else { n(x) };
             wanted.push(format!(
                 "E₀ + W_hand − W_damp = {} + {} − {} = {}",
                 n(ledger.initial),
@@ -170,10 +180,31 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
             ));
         }
         Task::StepFiveTimes => {
-            wanted.push(format!("ΣF = {}", v(sum)));
-            wanted.push(format!("a = ΣF / m = {}", v(sum / m)));
-            wanted.push(format!("Στ = Σ r × F = {}", n(torques)));
-            wanted.push(format!("α = Στ / I = {}", n(torques / inertia)));
+            // The tutorial's update (its appendix's RigidBody.update after AngularDamping),
+            // redone here: ω scaled first, a and α from the forces at the start, then ω, θ,
+            // v, x, each from the one just updated.
+            let dt = params.dt();
+            let factor = (-params.angular_damping * dt).exp();
+            let damped = omega * factor;
+            let a = force / m + damp / m;
+            let alpha = torque / inertia;
+            let omega_after = damped + alpha * dt;
+            let theta_after = theta + omega_after * dt;
+            let v_after = vel + a * dt;
+            let x_after = x + v_after * dt;
+            wanted.push(format!("= {}", n(damped)));
+            wanted.push(format!("= {}", v(a)));
+            wanted.push(format!("= {}", n(alpha)));
+            wanted.push(format!(
+                "ω += α dt → {}   θ += ω dt → {}",
+                n(omega_after),
+                n(theta_after)
+            ));
+            wanted.push(format!(
+                "v += a dt → {}   x += v dt → {}",
+                v(v_after),
+                v(x_after)
+            ));
         }
     }
     wanted
@@ -378,4 +409,235 @@ fn leaving_learn_mode_puts_the_game_back_as_it_was() {
     // The box where it was, moving as it was (one step on, as the frame steps it).
     let (linear, _) = game.state();
     assert!(linear.position.distance(state.0.position) < 1.0 + 0.01 * state.0.velocity.length());
+}
+
+// --- Each chapter's claims, as physics: one test a claim, on the chapter's own scene. ---
+
+/// The body's state now.
+fn body_state(game: &mut Game) -> rubber_band_box::physics::BodyState {
+    let (linear, angular) = game.state();
+    rubber_band_box::physics::BodyState { linear, angular }
+}
+
+/// Chapter 1: "A force whose line passes through the centre of mass moves the box as if all
+/// its mass sat there: F = m a, and the box does not turn." The diagonal scene's band pulls
+/// through the centre: the box moves, and its orientation and spin stay exactly zero.
+#[test]
+fn claim_1_a_force_through_the_centre_moves_the_box_without_turning_it() {
+    let mut game = Game::stepping();
+    chapter(&mut game, 0);
+    let start = body_state(&mut game);
+    for _ in 0..150 {
+        game.update(1);
+        let now = body_state(&mut game);
+        assert_eq!(now.angular.orientation, 0.0);
+        assert_eq!(now.angular.angular_velocity, 0.0);
+    }
+    let moved = body_state(&mut game).linear.position - start.linear.position;
+    assert!(moved.length() > 40.0, "moved {moved}");
+    // Along the line of the force: the diagonal.
+    assert!((moved.x - moved.y).abs() < 1e-9 * moved.length(), "{moved}");
+}
+
+/// Chapter 2: "Nothing pulls this box: it only spins, and angular damping takes ω down at
+/// the rate c." On the spin scene the centre stays put and ω falls as ω₀ e^(−c t).
+#[test]
+fn claim_2_an_unpulled_box_only_spins_and_omega_falls_at_the_rate_c() {
+    let mut game = Game::stepping();
+    chapter(&mut game, 1);
+    let c = game.world().resource::<SceneParams>().angular_damping;
+    let start = body_state(&mut game);
+    let t0 = game.world().resource::<Time<Fixed>>().elapsed_secs_f64();
+    game.update(100);
+    let now = body_state(&mut game);
+    let t = game.world().resource::<Time<Fixed>>().elapsed_secs_f64() - t0;
+    assert!(game.bands().is_empty());
+    assert_eq!(now.linear.position, start.linear.position);
+    let expected = start.angular.angular_velocity * (-c * t).exp();
+    let omega = now.angular.angular_velocity;
+    assert!(
+        (omega - expected).abs() < 1e-9 * expected.abs(),
+        "ω {omega}, ω₀ e^(−c t) {expected} after {t} s"
+    );
+    assert!(omega.abs() < start.angular.angular_velocity.abs());
+}
+
+/// Chapter 3: "A force applied away from the centre ... also turns the box" and "the twin
+/// held by a band ... at its centre: r = 0, so it never turns, however hard it is pulled."
+/// Pulled hard at a corner for a second, the box spins while its twin's θ stays exactly 0.
+#[test]
+fn claim_3_a_force_at_a_corner_turns_the_box_and_never_the_twin_held_at_its_centre() {
+    let mut game = Game::stepping();
+    chapter(&mut game, 2);
+    game.press_at(DVec2::new(250.0, 150.0));
+    let mut spun = 0.0f64;
+    for _ in 0..100 {
+        game.update(1);
+        spun = spun.max(body_state(&mut game).angular.angular_velocity.abs());
+        let twin = game
+            .world()
+            .resource::<CentreTwin>()
+            .body
+            .clone()
+            .expect("a twin");
+        assert_eq!(twin.stepper.state.angular.orientation, 0.0);
+        assert_eq!(twin.stepper.state.angular.angular_velocity, 0.0);
+    }
+    assert!(spun > 1.0, "the box spun at {spun} rad/s at most");
+}
+
+/// Chapter 4: "the same torque gives a box with twice the inertia half the angular
+/// acceleration", and "a larger box held at its corner is also held further from its centre,
+/// so the same band gives it more torque". The card's α = Στ / I for the same state and band,
+/// with the mass doubled, is half; with the side √2 times as long (I doubled too) it is more
+/// than half, by the longer arm.
+#[test]
+fn claim_4_twice_the_inertia_halves_alpha_for_the_same_torque_and_a_larger_box_gets_more() {
+    use rubber_band_box::game::learn::equations::Quantities;
+    use rubber_band_box::physics::{BandEnds, BodyState, EnergyLedger};
+    let params = SceneParams::tutorial();
+    let state = BodyState::default();
+    let alpha = |params: &SceneParams| {
+        let mass = params.mass_properties().unwrap();
+        let band = BandEnds::grabbing(&mass, &state, DVec2::new(300.0, -100.0));
+        let q = Quantities::of(
+            state,
+            &mass,
+            params,
+            Some(band),
+            EnergyLedger::starting_at(0.0),
+        );
+        (q.seed.torque, q.seed.torque / mass.inertia())
+    };
+    let (torque, base) = alpha(&params);
+    let (heavy_torque, heavy) = alpha(&SceneParams {
+        mass: 2.0 * params.mass,
+        ..params
+    });
+    assert_eq!(heavy_torque, torque);
+    assert!((heavy / base - 0.5).abs() < 1e-12, "{heavy} / {base}");
+    let (large_torque, large) = alpha(&SceneParams {
+        size: params.size * std::f64::consts::SQRT_2,
+        ..params
+    });
+    assert!(
+        large_torque > 1.3 * torque,
+        "{large_torque} against {torque}"
+    );
+    assert!(large / base > 0.6, "{large} / {base}: more than half");
+}
+
+/// Chapter 5: "The band is a spring of zero rest length between the pointer and the corner
+/// nearest it when pressed: its force is k times the stretch, toward the pointer."
+#[test]
+fn claim_5_the_band_takes_the_nearest_corner_and_pulls_k_times_the_stretch_toward_the_pointer() {
+    let mut game = Game::stepping();
+    chapter(&mut game, 4);
+    let k = game.world().resource::<SceneParams>().stiffness;
+    let pointer = DVec2::new(-200.0, 90.0);
+    game.press_at(pointer);
+    game.update(1);
+    let band = game.the_band();
+    let state = body_state(&mut game);
+    let corner = band.ends.attachment(&state);
+    let mass = *game
+        .world()
+        .query_filtered::<&MassProperties, With<RigidBox>>()
+        .single(game.world())
+        .unwrap();
+    for other in mass.corners() {
+        assert!(
+            corner.distance(band.ends.anchor)
+                <= state.local_to_world(other).distance(band.ends.anchor) + 1e-9
+        );
+    }
+    let force = band.ends.wrench(&state, k).force;
+    let stretch = band.ends.anchor - corner;
+    assert!((force - k * stretch).length() < 1e-9 * force.length());
+    // Zero rest length: no stretch, no force.
+    let mut slack = band.ends;
+    slack.anchor = corner;
+    assert_eq!(slack.wrench(&state, k).force, DVec2::ZERO);
+}
+
+/// Chapter 6: "They turn the band's work into heat, so the box always comes to rest." After a
+/// pull and a release, the box's energy never rises and falls to a millionth of its peak.
+#[test]
+fn claim_6_damping_always_brings_the_box_to_rest() {
+    let mut game = Game::stepping();
+    chapter(&mut game, 5);
+    game.press_at(DVec2::new(220.0, 160.0));
+    game.update(120);
+    game.mouse(ButtonState::Released);
+    game.update(1);
+    // Right after the latest step, by kind (no band: the kinetic energies).
+    let energy = |game: &mut Game| {
+        let e = game.world().resource::<EnergyBooks>().energies;
+        e.linear + e.rotational + e.band
+    };
+    let peak = energy(&mut game);
+    assert!(peak > 1.0);
+    let mut last = peak;
+    for second in 0..40 {
+        game.update(100);
+        let now = energy(&mut game);
+        assert!(
+            now <= last * (1.0 + 1e-12),
+            "second {second}: {now} after {last}"
+        );
+        last = now;
+    }
+    assert!(last < 1e-6 * peak, "{last} of {peak}");
+}
+
+/// Chapter 7: "The tutorial's own loop, run here by the seed integrator, its lines the seed's
+/// numbers for the next step: the angular damping first scales ω by e^(−c dt), 0.98 a step
+/// at 100 Hz ...". The card's lines are written from the seed's stages for the next step, and
+/// the step the game then takes with the seed ends, to the bit, where the card's last two lines
+/// say.
+#[test]
+fn claim_7_the_update_loops_lines_are_the_seed_integrators_next_step_to_the_bit() {
+    use rubber_band_box::game::learn::equations::Quantities;
+    let mut game = Game::stepping();
+    chapter(&mut game, 6);
+    assert_eq!(*game.world().resource::<Integrator>(), Integrator::Seed);
+    game.press_at(DVec2::new(200.0, 120.0));
+    game.update(30);
+    for _ in 0..5 {
+        let world = game.world();
+        let params = *world.resource::<SceneParams>();
+        let ledger = world.resource::<EnergyBooks>().ledger;
+        let (body, mass) = world
+            .query_filtered::<(Entity, &MassProperties), With<RigidBox>>()
+            .single(world)
+            .map(|(e, m)| (e, *m))
+            .unwrap();
+        let band = world
+            .query::<&Band>()
+            .iter(world)
+            .find(|band| band.body == body)
+            .map(|band| band.ends);
+        let state = body_state(&mut game);
+        let q = Quantities::of(state, &mass, &params, band, ledger);
+        assert!((q.seed.damping_factor - 0.98).abs() < 1e-15);
+        let lines = equations(&mut game);
+        let after = q.seed.after;
+        for shown in [
+            n(q.seed.damped_angular_velocity),
+            v(q.seed.acceleration),
+            n(q.seed.angular_acceleration),
+            n(after.angular.angular_velocity),
+            n(after.angular.orientation),
+            v(after.linear.velocity),
+            v(after.linear.position),
+        ] {
+            assert!(lines.contains(&shown), "{shown} not in\n{lines}");
+        }
+        game.update(1);
+        let stepped = body_state(&mut game);
+        assert_eq!(
+            stepped.to_array().map(f64::to_bits),
+            after.to_array().map(f64::to_bits)
+        );
+    }
 }

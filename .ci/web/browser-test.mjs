@@ -480,7 +480,7 @@ const boxAlwaysInView = async (p, snap, samples = 12, least = 0.6) => {
 // reached by its "next ▸", shows its title ("3 of 7 ...") and an equation of its own with
 // numbers in it, with every corner of the box in the viewport; "leave" ends the mode. An
 // equation of each chapter, as the card writes it (a line a text):
-const FIRST_EQUATIONS = ["ΣF = F_band + F_damp = (", "θ = ", "τ = r × F = (", "I = m (w² + h²) / 12 = ", "τ = r × F = (", "F_damp = −b v = −", "1  ΣF = ("];
+const FIRST_EQUATIONS = ["ΣF = F_band + F_damp = (", "θ = ", "τ = r × F = (", "I = m (w² + h²) / 12 = ", "τ = r × F = (", "F_damp = −b v = −", "1  ω ← e^(−c dt) ω = "];
 const walkChapters = async (p, where, pointer, snap) => {
   const entered = await openCard(p, "Controls", pointer) && await pressButton(p, "learn", pointer);
   const missing = [];

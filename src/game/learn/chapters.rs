@@ -124,7 +124,8 @@ pub const CHAPTERS: [Chapter; 7] = [
         text: "A force applied away from the centre still accelerates the centre by F\u{a0}/\u{a0}m, \
                and also turns the box: the torque is the perpendicular dot product of the arm \
                r, from the centre to the point, with the force. The outline below is a twin \
-               that the same band pulls at its centre: it moves alike and never turns.",
+               held at its centre by a band that follows the same pointer: r\u{a0}=\u{a0}0, so it \
+               never turns, however hard it is pulled.",
         equations: &[
             Equation::Arm,
             Equation::Torque,
@@ -144,7 +145,8 @@ pub const CHAPTERS: [Chapter; 7] = [
         text: "The moment of inertia is to turning what mass is to moving: the same torque \
                gives a box with twice the inertia half the angular acceleration. For a box it \
                grows with the mass and the square of its size: the Controls card's mass and \
-               size sliders change both here.",
+               size sliders change it here. A larger box held at its corner is also held \
+               further from its centre, so the same band gives it more torque.",
         equations: &[
             Equation::Inertia,
             Equation::Torque,
@@ -152,7 +154,7 @@ pub const CHAPTERS: [Chapter; 7] = [
         ],
         centre_twin: false,
         task: Task::DoubleTheInertia,
-        ask: "make the same pull turn the box half as fast: double I (mass ×2, or size ×1.41)",
+        ask: "double I (mass ×2): the same pull then turns the box half as fast",
     },
     Chapter {
         title: "The rubber band",
@@ -187,14 +189,16 @@ pub const CHAPTERS: [Chapter; 7] = [
     },
     Chapter {
         title: "The update loop",
-        sections: "§4.4, §5.2.4",
+        sections: "§5.2.4; appendix §8.1: RigidBody.update, AngularDamping",
         scene: "tutorial",
         integrator: Some("seed"),
-        text: "Each step sums the forces and torques, turns them into accelerations, then \
-               updates the velocities and from them the positions: the tutorial's own order, \
-               run here by its own integrator. Other integrators do the same sums more \
-               carefully: G shows them all beside the box and P plots their error against \
-               their cost, the way into the lab.",
+        text: "The tutorial's own loop, run here by the seed integrator, its lines the \
+               seed's numbers for the next step: the angular damping first scales ω by \
+               e^(−c\u{a0}dt), 0.98 a step at 100\u{a0}Hz; the band's force and the damping force \
+               give a, the band's torque α; then ω and θ, then v and x, each from the one just \
+               updated. Other integrators take the same forces at other points of the step: G \
+               shows them all beside the box and P plots their error against their cost, the \
+               way into the lab.",
         equations: &[Equation::Update],
         centre_twin: false,
         task: Task::StepFiveTimes,

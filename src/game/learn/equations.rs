@@ -7,6 +7,8 @@ use bevy::math::DVec2;
 use super::chapters::Equation;
 use super::twin::Twin;
 use crate::game::shared::readable;
+use crate::physics::forces::ForceModel;
+use crate::physics::integrators::seed::{SeedStages, tutorial_stages};
 use crate::physics::{BandEnds, BodyState, EnergyLedger, MassProperties, SceneParams};
 
 /// Everything a chapter's equations read, for one frame.
@@ -25,6 +27,8 @@ pub struct Quantities {
     pub dt: f64,
     /// The centre twin's state and its band's anchor while one pulls ([`super::twin`]).
     pub twin: Option<(BodyState, Option<DVec2>)>,
+    /// The `seed` integrator's stages for the next step from this state, its own numbers.
+    pub seed: SeedStages,
 }
 
 impl Quantities {
@@ -35,6 +39,15 @@ impl Quantities {
         band: Option<BandEnds>,
         ledger: EnergyLedger,
     ) -> Self {
+        // The forces as the fixed step sums them, and the tutorial's update from them.
+        let model = ForceModel {
+            mass: *mass,
+            band,
+            stiffness: params.stiffness,
+            linear_damping: params.linear_damping,
+            angular_damping: params.angular_damping,
+        };
+        let seed = tutorial_stages(&state, &model, model.forces(&state), params.dt());
         Self {
             mass: mass.mass(),
             size: mass.size(),
@@ -47,6 +60,7 @@ impl Quantities {
             ledger,
             dt: params.dt(),
             twin: None,
+            seed,
         }
     }
 
@@ -64,6 +78,13 @@ impl Quantities {
             Some((state, Some(anchor))) => -self.stiffness * (state.linear.position - anchor),
             _ => DVec2::ZERO,
         }
+    }
+
+    /// Returns the twin's damping force −b v.
+    fn twin_damping(&self) -> DVec2 {
+        self.twin.map_or(DVec2::ZERO, |(state, _)| {
+            -self.linear_damping * state.linear.velocity
+        })
     }
 
     /// Returns the arm r from the centre to the band's corner (zero without a band).
@@ -191,9 +212,10 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
         Equation::CentrePull => match q.twin {
             Some((twin, Some(_))) => vec![
                 format!(
-                    "twin: F = −k (x − q) = {}, a = F / m = {}",
+                    "twin: ΣF = −k (x − q) − b v = {} + {}, a = ΣF / m = {}",
                     v(q.twin_force()),
-                    v(q.twin_force() / q.mass)
+                    v(q.twin_damping()),
+                    v((q.twin_force() + q.twin_damping()) / q.mass)
                 ),
                 format!(
                     "twin: r = 0, τ = 0 × F = 0, θ = {} rad",
@@ -208,12 +230,20 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
             n(q.size.y),
             n(q.inertia)
         )],
-        Equation::AngularAcceleration => vec![format!(
-            "α = Στ / I = {} / {} = {} rad/s²",
-            f(torque),
-            n(q.inertia),
-            n(torque / q.inertia)
-        )],
+        Equation::AngularAcceleration => vec![
+            format!(
+                "Στ = τ_band + τ_damp = {} + {} = {}",
+                n(q.band_torque()),
+                f(q.damping_torque()),
+                n(torque)
+            ),
+            format!(
+                "α = Στ / I = {} / {} = {} rad/s²",
+                f(torque),
+                n(q.inertia),
+                n(torque / q.inertia)
+            ),
+        ],
         Equation::Spring => match q.band {
             Some((corner, anchor)) => vec![format!(
                 "F = −k (p − q) = −{} × ({} − {}) = {}",
@@ -264,15 +294,38 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
             n(q.ledger.initial + q.ledger.work_in - q.ledger.dissipated)
         )],
         Equation::Update => {
-            let a = sum / q.mass;
-            let alpha = torque / q.inertia;
+            // The `seed` integrator's own stages for the next step, in its order.
+            let s = &q.seed;
+            let after = s.after;
             vec![
-                format!("1  ΣF = {}", v(sum)),
-                format!("2  a = ΣF / m = {}", v(a)),
-                format!("3  Στ = Σ r × F = {}", n(torque)),
-                format!("4  α = Στ / I = {}", n(alpha)),
                 format!(
-                    "5  v += a dt, x += v dt, ω += α dt, θ += ω dt   (dt = {} s)",
+                    "1  ω ← e^(−c dt) ω = {} × {} = {}   (c = {} /s)",
+                    n(s.damping_factor),
+                    f(omega),
+                    n(s.damped_angular_velocity),
+                    n(q.angular_damping)
+                ),
+                format!(
+                    "2  a = (F_band + F_damp) / m = ({} + {}) / {m} = {}",
+                    v(s.band_force),
+                    v(s.damping_force),
+                    v(s.acceleration)
+                ),
+                format!(
+                    "3  α = τ_band / I = {} / {} = {}",
+                    f(s.torque),
+                    n(q.inertia),
+                    n(s.angular_acceleration)
+                ),
+                format!(
+                    "4  ω += α dt → {}   θ += ω dt → {}",
+                    n(after.angular.angular_velocity),
+                    n(after.angular.orientation)
+                ),
+                format!(
+                    "5  v += a dt → {}   x += v dt → {}   (dt = {} s)",
+                    v(after.linear.velocity),
+                    v(after.linear.position),
                     n(q.dt)
                 ),
             ]
