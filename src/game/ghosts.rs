@@ -3,11 +3,11 @@
 //! sees each method's distance from the converged answer follow their own hand. Each ghost is
 //! the core's [`Stepper`] with its own energy books; the live box never reads them.
 //!
-//! A ghost whose step leaves the bounds freezes there, with the step. The reference is the
-//! tightest Taylor series the core has, with a budget of substeps so that a stiff band cannot
-//! stall the frame; a step that exhausts it falls back to `implicit` and is counted as capped.
-//! Ghosts restart from the live box at a reset (and so at a scene or replay opened) and when
-//! they are switched on.
+//! A ghost whose step leaves the bounds freezes there, with the step. The reference is a
+//! Taylor series of order 24 at 1e-13 px a step, with a budget of substeps so that a stiff
+//! band cannot stall the frame; a step that exhausts it falls back to `implicit` and is
+//! counted as capped. Ghosts restart from the live box at a reset (and so at a scene or
+//! replay opened) and when they are switched on.
 
 use bevy::platform::time::Instant;
 use bevy::prelude::*;
@@ -166,7 +166,8 @@ impl Ghosts {
 
     /// Returns how far `ghost` is from the reference now (px).
     ///
-    /// The distance is the largest corner distance, so the orientation counts as the corner's 30·θ.
+    /// The distance is the largest corner distance, so the orientation counts as the corner's
+    /// 30√2·θ.
     pub fn distance_from_reference(&self, ghost: &Ghost) -> Option<f64> {
         let reference = self.reference()?;
         Some(

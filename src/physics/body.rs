@@ -86,7 +86,8 @@ impl BodyState {
     /// Measures how far this pose is from `other`, in px.
     ///
     /// The measure is the largest distance between corresponding corners of the box `mass`
-    /// describes. It weighs the orientation by the box's size, as the corner's 30·θ.
+    /// describes. It weighs the orientation by the box's size, as the corner's 30√2·θ for the
+    /// tutorial's 60 px box.
     pub fn pose_error(&self, other: &BodyState, mass: &MassProperties) -> f64 {
         mass.corners()
             .iter()

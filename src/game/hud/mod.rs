@@ -1,7 +1,7 @@
 //! The heads-up display: what the simulation is doing (integrator, step, parameters, time),
 //! where the energy is, how much of it the integrator got wrong (the ledger's residual), and
-//! the keys; the energy graph ([`graph`]) and the window title ([`title`]) say the same for a
-//! glance and for a hidden HUD.
+//! the keys; the energy graph (`screen::graph`) and the window title ([`title`]) say the same
+//! for a glance and for a hidden HUD.
 //!
 //! The numbers come from resources the physics keeps; this module only formats them, so its
 //! text, history and title run headless too (the text is plain `Text` components). The graph

@@ -43,7 +43,7 @@ pub enum Equation {
     Update,
 }
 
-/// What a chapter asks the player to do; the game checks it ([`super::check`]).
+/// What a chapter asks the player to do; learn mode checks it (`check_task`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Task {
     /// Move the box 40 px with a band while it turns less than 0.05 rad.
