@@ -3,9 +3,9 @@
 //! Two systems run before the fixed loop each frame, in [`GameSystems::Input`], so that a
 //! press is felt by the very next fixed step: [`read_pointer`] turns mouse, touch and focus
 //! input into [`PointerAction`]s in world coordinates (through the camera's frame,
-//! [`CameraFrame::anchor_at`]), and [`drive_band`]
-//! spawns, moves and despawns the band entity from them. Tests can drive either end. The
-//! plugin owns the grip (which device holds the band) and lets go on a reset.
+//! [`CameraFrame::anchor_at`]), and [`drive_band`] spawns, moves and despawns the band entity
+//! from them. Tests can drive either end. The plugin owns the grip (which device holds the
+//! band) and lets go on a reset.
 //!
 //! What happens at the edges:
 //! - press and release within one frame (a quick click or tap): the band acts for exactly one
