@@ -80,7 +80,7 @@ pub struct Ghost {
     pub last: StepInfo,
     /// Steps taken since the (re)start.
     pub steps: u64,
-    /// Steps that ran out of the substep budget (the reference only: see [`REFERENCE`]).
+    /// Steps that ran out of the substep budget (the reference only: see `REFERENCE`).
     pub capped: u64,
     /// Wall time of a step, averaged over the latest few dozen (ns).
     pub ns_per_step: f64,

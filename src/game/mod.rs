@@ -10,7 +10,7 @@
 //! - [`layout`]: the window's regions: the scene's viewport, the status and hint lines, the
 //!   dock of instrument cards;
 //! - [`simulation`]: the physics plugin that steps the core in `FixedUpdate`;
-//! - [`pointer`]: the mouse and the finger, which hold the band;
+//! - [`mod@pointer`]: the mouse and the finger, which hold the band;
 //! - [`camera`]: what the scene shows (home, following the box, zoomed and panned) and the
 //!   map between the window and the world;
 //! - [`replays`]: the game's side of replays and scenes: recording, playback, the scenes on

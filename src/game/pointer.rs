@@ -1,9 +1,9 @@
 //! The pointer plugin: the left mouse button, or one finger, holds the band.
 //!
 //! Two systems run before the fixed loop each frame, in [`GameSystems::Input`], so that a
-//! press is felt by the very next fixed step: [`read_pointer`] turns mouse, touch and focus
+//! press is felt by the very next fixed step: `read_pointer` turns mouse, touch and focus
 //! input into [`PointerAction`]s in world coordinates (through the camera's frame,
-//! [`CameraFrame::anchor_at`]), and [`drive_band`] spawns, moves and despawns the band entity
+//! [`CameraFrame::anchor_at`]), and `drive_band` spawns, moves and despawns the band entity
 //! from them. Tests can drive either end. The plugin owns the grip (which device holds the
 //! band) and lets go on a reset.
 //!

@@ -120,7 +120,7 @@ impl<W: Write> Output<W> {
     }
 }
 
-/// Runs a scene for `steps` steps, written to `out` (see [`Output`]); a diverged step stops it.
+/// Runs a scene for `steps` steps, written to `out` (see `Output`); a diverged step stops it.
 pub fn write_run(
     mut run: Run,
     steps: u64,

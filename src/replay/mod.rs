@@ -7,7 +7,7 @@
 //! an end record that counts the steps and hashes the states the game had. Reading checks
 //! every line and names the first bad one; nothing in a file can make it panic.
 //!
-//! [`format`] holds the format's types (the header, the records, the hash, a whole replay and
+//! [`mod@format`] holds the format's types (the header, the records, the hash, a whole replay and
 //! its writing), [`read`] reads and checks a file.
 
 pub mod format;

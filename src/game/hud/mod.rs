@@ -59,8 +59,8 @@ const WARNING_COLOUR: Color = colour::WARNING;
 
 /// One line of the HUD.
 ///
-/// Each is a `Text` entity whose content [`HudLine::text`] writes, in the region [`HudLine::slot`]
-/// names; the ghosts' table is a grid of cells of its own ([`ghost_table`]), its text the same
+/// Each is a `Text` entity whose content [`HudLine::text`] writes, in the region `HudLine::slot`
+/// names; the ghosts' table is a grid of cells of its own (`ghost_table`), its text the same
 /// cells a row a line.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 pub enum HudLine {

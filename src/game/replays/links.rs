@@ -1,5 +1,5 @@
 //! Links in the game (docs/links.md): a link opened puts its scene, settings, overlays and
-//! recorded game in place ([`open_link`]), and the share controls write the link of what is
+//! recorded game in place (`open_link`), and the share controls write the link of what is
 //! on screen ([`ShareLink`]): natively to the terminal and the status line, in the browser to
 //! the address bar, the clipboard and the status line. A link the game cannot take whole is
 //! taken in part, and what was left is named on the status line.

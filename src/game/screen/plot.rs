@@ -4,7 +4,7 @@
 //! the hand pulls. A diverged ghost is a cross at the right edge, at the cost it had, and
 //! says so. The chart fills the plot card's canvas (the chart camera draws it); its ticks'
 //! values, its captions and the names are UI text in the canvas, the names put by
-//! [`place_labels`] where no other text, no point and no name lies, tied to their point by a
+//! `place_labels` where no other text, no point and no name lies, tied to their point by a
 //! leader line when moved away from it. The points are [`plot_points`], which a test holds
 //! to the ghosts' own figures.
 

@@ -51,7 +51,7 @@ pub enum Integrator {
     Seed,
     /// Error-controlled Taylor-series steps within each step, within a budget.
     ///
-    /// It falls back to `implicit` where the budget binds (see [`super::auto`]). The game's
+    /// It falls back to `implicit` where the budget binds (see [`mod@auto`]). The game's
     /// default.
     #[default]
     Auto,
