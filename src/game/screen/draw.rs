@@ -10,7 +10,7 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
-use crate::game::camera::{CameraFrame, SceneCamera, shown_area, world_per_pixel};
+use crate::game::camera::{CameraFrame, shown_area, viewport_rect, world_per_pixel};
 use crate::game::ghosts::{Ghost, GhostKind, Ghosts};
 use crate::game::layout::SceneViewport;
 use crate::game::learn::Learning;
@@ -203,8 +203,9 @@ const TORQUE_RADIUS: f32 = 22.0;
 /// Draws learn mode's pictures of its equations, in their colours.
 ///
 /// It draws the arm r from the centre to the band's corner, the torque τ as an arc about the centre
-/// in its sense; with no band, the corner a press would take, nearest the pointer (the rubber
-/// band's chapter); the centre twin and its band.
+/// in its sense; with no band, the corner a press would take, nearest where the press would
+/// put the anchor (the pointer's own map, `CameraFrame::anchor_at`: the rubber band's chapter);
+/// the centre twin and its band.
 fn draw_learning(
     mut gizmos: Gizmos,
     (learning, params, fixed_time): (Res<Learning>, Res<SceneParams>, Res<Time<Fixed>>),
@@ -212,18 +213,18 @@ fn draw_learning(
     bodies: Query<(Entity, &RenderSnapshots, &MassProperties), With<RigidBox>>,
     bands: Query<&Band>,
     window: Option<Single<&Window>>,
-    camera: Option<Single<(&Camera, &GlobalTransform), With<SceneCamera>>>,
+    (frame, viewport): (Res<CameraFrame>, Res<SceneViewport>),
 ) {
     let Some(chapter) = learning.chapter.and_then(|index| CHAPTERS.get(index)) else {
         return;
     };
     let shows = |equation: Equation| chapter.equations.contains(&equation);
     if let Some(twin) = &twin.body {
-        let state = RenderSnapshots {
+        let snapshots = RenderSnapshots {
             previous: twin.previous,
             current: twin.stepper.state,
-        }
-        .interpolate(fixed_time.overstep_fraction_f64().clamp(0.0, 1.0));
+        };
+        let state = interpolated_state(&snapshots, &fixed_time);
         let centre = state.linear.position.as_vec2();
         let pose = Isometry2d::new(centre, Rot2::radians(state.angular.orientation as f32));
         gizmos.rect_2d(pose, twin.stepper.mass.size().as_vec2(), colour::TWIN);
@@ -253,14 +254,16 @@ fn draw_learning(
                 );
             }
         } else if shows(Equation::NearestCorner)
-            && let (Some(window), Some(camera)) = (window.as_deref(), camera.as_deref())
+            && let Some(window) = window.as_deref()
             && let Some(cursor) = window.cursor_position()
-            && let Ok(pointer) = camera.0.viewport_to_world_2d(camera.1, cursor)
         {
-            let nearest = mass.nearest_corner(&state, pointer.as_dvec2());
+            let area = viewport_rect(&viewport, window);
+            let span = mass.size().length() as f32;
+            let anchor = frame.anchor_at(area, span, cursor);
+            let nearest = mass.nearest_corner(&state, anchor);
             let corner = state.local_to_world(nearest).as_vec2();
             gizmos.circle_2d(corner, 6.0, colour::FORCE);
-            gizmos.line_2d(corner, pointer, colour::FORCE.with_alpha(0.4));
+            gizmos.line_2d(corner, anchor.as_vec2(), colour::FORCE.with_alpha(0.4));
         }
     }
 }
