@@ -29,7 +29,7 @@ use crate::game::theme::{self, colour, size, space};
 use crate::physics::stability::{Limit, Margin};
 use crate::physics::{Energies, EnergyLedger, Integrator, Scene, SceneParams};
 pub use history::EnergyHistory;
-use pace::{BEHIND, Pace, measure_pace};
+use pace::{Pace, behind, measure_pace};
 
 pub struct HudPlugin;
 
@@ -289,9 +289,8 @@ fn status_line(r: &HudReadings) -> String {
     );
     if r.paused {
         line += " · PAUSED";
-    } else if r.pace < BEHIND {
-        // The rate the clock really runs at, beside the one set ("time ×1").
-        line += &format!(" · behind: runs ×{:.2}", r.pace * r.time_scale);
+    } else if let Some(behind) = behind(r.pace, r.time_scale, r.paused) {
+        line += &format!(" · {behind}");
     }
     if let Some((diverged, step)) = r.divergence {
         line += &format!(" · {diverged} DIVERGED at step {step}");

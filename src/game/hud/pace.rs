@@ -4,7 +4,7 @@
 use bevy::prelude::*;
 
 /// The share of the set pace below which the status line says the game falls behind.
-pub const BEHIND: f64 = 0.95;
+const BEHIND: f64 = 0.95;
 
 /// The share of the set pace the game's clock has kept over about the last second.
 ///
@@ -19,6 +19,14 @@ impl Default for Pace {
     fn default() -> Self {
         Self(1.0)
     }
+}
+
+/// Returns what the status line and the window title say of the pace, if anything.
+///
+/// "behind: runs ×0.42" while the clock falls behind: the rate it really runs at, beside the
+/// one set (`time_scale`). Nothing while it keeps the pace or the game is paused.
+pub fn behind(pace: f64, time_scale: f64, paused: bool) -> Option<String> {
+    (!paused && pace < BEHIND).then(|| format!("behind: runs ×{:.2}", pace * time_scale))
 }
 
 /// Updates [`Pace`] from this frame's real and virtual time, with a memory of about a second.

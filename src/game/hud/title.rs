@@ -3,7 +3,7 @@
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 
-use crate::game::hud::pace::{BEHIND, Pace};
+use crate::game::hud::pace::{Pace, behind};
 use crate::game::input::controls::key_hint;
 use crate::game::simulation::{EnergyBooks, StepStats};
 use crate::physics::{Integrator, SceneParams};
@@ -38,11 +38,12 @@ pub fn show_state_in_title(
         params.step_rate_hz,
         virtual_time.relative_speed_f64()
     );
-    if !virtual_time.is_paused() && pace.0 < BEHIND {
-        title += &format!(
-            ", behind: runs ×{:.2}",
-            pace.0 * virtual_time.relative_speed_f64()
-        );
+    if let Some(behind) = behind(
+        pace.0,
+        virtual_time.relative_speed_f64(),
+        virtual_time.is_paused(),
+    ) {
+        title += &format!(", {behind}");
     }
     title += &format!(", energy error {:.1e}", books.residual);
     if virtual_time.is_paused() {
