@@ -18,7 +18,7 @@ use rubber_band_box::game::learn::{LINES, Learn, LearnText, Learning};
 use rubber_band_box::game::shared::{Overlays, SceneName, readable};
 use rubber_band_box::game::simulation::{Band, EnergyBooks, RigidBox};
 use rubber_band_box::physics::{
-    AngularState, Integrator, LinearState, MassProperties, SceneParams,
+    AngularState, BandEnds, BodyState, Integrator, LinearState, MassProperties, SceneParams,
 };
 
 /// The chapter's equations, a line each, as the card shows them.
@@ -54,11 +54,9 @@ fn v(value: DVec2) -> String {
     format!("({}, {})", n(value.x), n(value.y))
 }
 
-/// What the card must show now, recomputed from the components: each chapter's quantities.
-fn expected(game: &mut Game, index: usize) -> Vec<String> {
+/// The box's state, its mass properties and the band on it, read from the components.
+fn the_box(game: &mut Game) -> (BodyState, MassProperties, Option<BandEnds>) {
     let world = game.world();
-    let params = *world.resource::<SceneParams>();
-    let ledger = world.resource::<EnergyBooks>().ledger;
     let (body, linear, angular, mass) = world
         .query_filtered::<(Entity, &LinearState, &AngularState, &MassProperties), With<RigidBox>>()
         .single(world)
@@ -69,6 +67,15 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
         .iter(world)
         .find(|band| band.body == body)
         .map(|band| band.ends);
+    (BodyState { linear, angular }, mass, band)
+}
+
+/// What the card must show now, recomputed from the components: each chapter's quantities.
+fn expected(game: &mut Game, index: usize) -> Vec<String> {
+    let (BodyState { linear, angular }, mass, band) = the_box(game);
+    let world = game.world();
+    let params = *world.resource::<SceneParams>();
+    let ledger = world.resource::<EnergyBooks>().ledger;
     let m = params.mass;
     let (w, h) = (params.size.x, params.size.y);
     // The tutorial's moment of inertia of a box, from the parameters (§4.3.4).
@@ -414,9 +421,8 @@ fn leaving_learn_mode_puts_the_game_back_as_it_was() {
 // --- Each chapter's claims, as physics: one test a claim, on the chapter's own scene. ---
 
 /// The body's state now.
-fn body_state(game: &mut Game) -> rubber_band_box::physics::BodyState {
-    let (linear, angular) = game.state();
-    rubber_band_box::physics::BodyState { linear, angular }
+fn body_state(game: &mut Game) -> BodyState {
+    the_box(game).0
 }
 
 /// Chapter 1: "A force whose line passes through the centre of mass moves the box as if all
@@ -494,7 +500,7 @@ fn claim_3_a_force_at_a_corner_turns_the_box_and_never_the_twin_held_at_its_cent
 #[test]
 fn claim_4_twice_the_inertia_halves_alpha_for_the_same_torque_and_a_larger_box_gets_more() {
     use rubber_band_box::game::learn::equations::Quantities;
-    use rubber_band_box::physics::{BandEnds, BodyState, EnergyLedger};
+    use rubber_band_box::physics::EnergyLedger;
     let params = SceneParams::tutorial();
     let state = BodyState::default();
     let alpha = |params: &SceneParams| {
@@ -537,25 +543,20 @@ fn claim_5_the_band_takes_the_nearest_corner_and_pulls_k_times_the_stretch_towar
     let pointer = DVec2::new(-200.0, 90.0);
     game.press_at(pointer);
     game.update(1);
-    let band = game.the_band();
-    let state = body_state(&mut game);
-    let corner = band.ends.attachment(&state);
-    let mass = *game
-        .world()
-        .query_filtered::<&MassProperties, With<RigidBox>>()
-        .single(game.world())
-        .unwrap();
+    let (state, mass, band) = the_box(&mut game);
+    let band = band.expect("the press holds a band");
+    let corner = band.attachment(&state);
     for other in mass.corners() {
         assert!(
-            corner.distance(band.ends.anchor)
-                <= state.local_to_world(other).distance(band.ends.anchor) + 1e-9
+            corner.distance(band.anchor)
+                <= state.local_to_world(other).distance(band.anchor) + 1e-9
         );
     }
-    let force = band.ends.wrench(&state, k).force;
-    let stretch = band.ends.anchor - corner;
+    let force = band.wrench(&state, k).force;
+    let stretch = band.anchor - corner;
     assert!((force - k * stretch).length() < 1e-9 * force.length());
     // Zero rest length: no stretch, no force.
-    let mut slack = band.ends;
+    let mut slack = band;
     slack.anchor = corner;
     assert_eq!(slack.wrench(&state, k).force, DVec2::ZERO);
 }
@@ -604,20 +605,9 @@ fn claim_7_the_update_loops_lines_are_the_seed_integrators_next_step_to_the_bit(
     game.press_at(DVec2::new(200.0, 120.0));
     game.update(30);
     for _ in 0..5 {
-        let world = game.world();
-        let params = *world.resource::<SceneParams>();
-        let ledger = world.resource::<EnergyBooks>().ledger;
-        let (body, mass) = world
-            .query_filtered::<(Entity, &MassProperties), With<RigidBox>>()
-            .single(world)
-            .map(|(e, m)| (e, *m))
-            .unwrap();
-        let band = world
-            .query::<&Band>()
-            .iter(world)
-            .find(|band| band.body == body)
-            .map(|band| band.ends);
-        let state = body_state(&mut game);
+        let (state, mass, band) = the_box(&mut game);
+        let params = *game.world().resource::<SceneParams>();
+        let ledger = game.world().resource::<EnergyBooks>().ledger;
         let q = Quantities::of(state, &mass, &params, band, ledger);
         assert!((q.seed.damping_factor - 0.98).abs() < 1e-15);
         let lines = equations(&mut game);

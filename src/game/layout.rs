@@ -753,13 +753,12 @@ fn show_the_dock_scrollbar(
     let Some(node) = cards.iter().next() else {
         return;
     };
-    let overflows = tells_overflow(node);
+    let (track, thumb) = if tells_overflow(node) {
+        (colour::CARD, colour::DIM)
+    } else {
+        (Color::NONE, Color::NONE)
+    };
     for (thumbs, bar) in &bars {
-        let (track, thumb) = if overflows {
-            (colour::CARD, colour::DIM)
-        } else {
-            (Color::NONE, Color::NONE)
-        };
         if let Ok(mut background) = colours.get_mut(bar) {
             background.set_if_neq(BackgroundColor(track));
         }
@@ -772,7 +771,7 @@ fn show_the_dock_scrollbar(
 }
 
 /// Tells whether a scrolled node's content is taller than the node (by more than a pixel).
-pub fn tells_overflow(node: &ComputedNode) -> bool {
+fn tells_overflow(node: &ComputedNode) -> bool {
     let scale = node.inverse_scale_factor();
     (node.content_size().y - node.size().y) * scale > 1.0
 }
