@@ -2,24 +2,12 @@
 // (SwiftShader), the lab on (G, P, V, T keys; the tutorial's pull, key 1), then frames counted
 // with requestAnimationFrame over 10 s; A and B alternated twice.
 import { chromium } from "playwright-core";
-import http from "node:http";
-import fs from "node:fs";
 import path from "node:path";
-const serve = (site) => new Promise((resolve) => {
-  const types = { ".html": "text/html", ".js": "text/javascript", ".wasm": "application/wasm" };
-  const server = http.createServer((req, res) => {
-    let f = path.join(site, decodeURIComponent(new URL(req.url, "http://x").pathname));
-    if (f.endsWith("/")) f = path.join(f, "index.html");
-    if (!fs.existsSync(f)) { res.writeHead(404).end(); return; }
-    res.writeHead(200, { "content-type": types[path.extname(f)] ?? "application/octet-stream" });
-    fs.createReadStream(f).pipe(res);
-  });
-  server.listen(0, "127.0.0.1", () => resolve(`http://127.0.0.1:${server.address().port}/`));
-});
+import { serve } from "./serve.mjs";
 const browser = await chromium.launch({ executablePath: "/usr/bin/chromium", args: ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader", "--ignore-gpu-blocklist"] });
 const sites = process.argv.slice(2);
 const urls = [];
-for (const s of sites) urls.push(await serve(path.resolve(s)));
+for (const s of sites) urls.push((await serve(path.resolve(s))).url);
 for (let round = 0; round < 2; round++) {
   for (let i = 0; i < sites.length; i++) {
     const page = await browser.newPage({ viewport: { width: 960, height: 720 } });

@@ -6,21 +6,10 @@
 // at both ends, so the frame time, the fixed steps a frame and the pace (simulated over wall
 // time) come from one window. Prints one line a round and the medians.
 import { chromium } from "playwright-core";
-import http from "node:http";
-import fs from "node:fs";
 import path from "node:path";
+import { serve } from "./serve.mjs";
 
-const site = path.resolve(process.argv[2] ?? "site");
-const types = { ".html": "text/html", ".js": "text/javascript", ".wasm": "application/wasm" };
-const server = http.createServer((req, res) => {
-  let f = path.join(site, decodeURIComponent(new URL(req.url, "http://x").pathname));
-  if (f.endsWith("/")) f = path.join(f, "index.html");
-  if (!fs.existsSync(f)) { res.writeHead(404).end(); return; }
-  res.writeHead(200, { "content-type": types[path.extname(f)] ?? "application/octet-stream" });
-  fs.createReadStream(f).pipe(res);
-});
-await new Promise((resolve) => server.listen(0, "127.0.0.1", resolve));
-const base = `http://127.0.0.1:${server.address().port}/`;
+const { url: base, server } = await serve(path.resolve(process.argv[2] ?? "site"));
 const browser = await chromium.launch({
   executablePath: "/usr/bin/chromium",
   args: ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader", "--ignore-gpu-blocklist",
