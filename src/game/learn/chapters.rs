@@ -21,7 +21,7 @@ pub enum Equation {
     Arm,
     /// τ = r × F.
     Torque,
-    /// The centre twin: the same band held at its centre, r = 0, so it never turns.
+    /// The centre twin: the box's band force at its centre, r = 0, so it never turns.
     CentrePull,
     /// I = m (w² + h²) / 12.
     Inertia,
@@ -77,7 +77,7 @@ pub struct Chapter {
     /// A few sentences in the project's own words.
     pub text: &'static str,
     pub equations: &'static [Equation],
-    /// A twin of the box beside it, pulled by the same band at its centre ([`super::twin`]).
+    /// A twin of the box beside it, pushed at its centre by the box's band force ([`super::twin`]).
     pub centre_twin: bool,
     pub task: Task,
     /// The task, as the player reads it.
@@ -124,8 +124,8 @@ pub const CHAPTERS: [Chapter; 7] = [
         text: "A force applied away from the centre still accelerates the centre by F\u{a0}/\u{a0}m, \
                and also turns the box: the torque is the perpendicular dot product of the arm \
                r, from the centre to the point, with the force. The outline below is a twin \
-               held at its centre by a band that follows the same pointer: r\u{a0}=\u{a0}0, so it \
-               never turns, however hard it is pulled.",
+               that the box's own band force pushes at its centre, with the same damping: its \
+               centre moves exactly as the box's does, and with r\u{a0}=\u{a0}0 it never turns.",
         equations: &[
             Equation::Arm,
             Equation::Torque,

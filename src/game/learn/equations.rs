@@ -25,8 +25,8 @@ pub struct Quantities {
     pub band: Option<(DVec2, DVec2)>,
     pub ledger: EnergyLedger,
     pub dt: f64,
-    /// The centre twin's state and its band's anchor while one pulls ([`super::twin`]).
-    pub twin: Option<(BodyState, Option<DVec2>)>,
+    /// The centre twin's state, when a chapter shows one ([`super::twin`]).
+    pub twin: Option<BodyState>,
     /// The `seed` integrator's stages for the next step from this state, its own numbers.
     pub seed: SeedStages,
 }
@@ -67,22 +67,14 @@ impl Quantities {
     /// Adds the centre twin's numbers, when a chapter shows one.
     pub fn with_twin(self, twin: Option<&Twin>) -> Self {
         Self {
-            twin: twin.map(|twin| (twin.stepper.state, twin.anchor())),
+            twin: twin.map(|twin| twin.beside(&self.state)),
             ..self
-        }
-    }
-
-    /// Returns the twin's band force, −k (x − q) at its centre (zero without a band).
-    fn twin_force(&self) -> DVec2 {
-        match self.twin {
-            Some((state, Some(anchor))) => -self.stiffness * (state.linear.position - anchor),
-            _ => DVec2::ZERO,
         }
     }
 
     /// Returns the twin's damping force −b v.
     fn twin_damping(&self) -> DVec2 {
-        self.twin.map_or(DVec2::ZERO, |(state, _)| {
+        self.twin.map_or(DVec2::ZERO, |state| {
             -self.linear_damping * state.linear.velocity
         })
     }
@@ -209,20 +201,20 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
                 n(q.band_torque())
             )]
         }
-        Equation::CentrePull => match q.twin {
-            Some((twin, Some(_))) => vec![
+        Equation::CentrePull => match (q.twin, q.band) {
+            (Some(twin), Some(_)) => vec![
                 format!(
-                    "twin: ΣF = −k (x − q) − b v = {} + {}, a = ΣF / m = {}",
-                    v(q.twin_force()),
+                    "twin: ΣF = F_band + F_damp = {} + {}, a = ΣF / m = {}",
+                    v(q.band_force()),
                     v(q.twin_damping()),
-                    v((q.twin_force() + q.twin_damping()) / q.mass)
+                    v((q.band_force() + q.twin_damping()) / q.mass)
                 ),
                 format!(
                     "twin: r = 0, τ = 0 × F = 0, θ = {} rad",
                     n(twin.angular.orientation)
                 ),
             ],
-            _ => vec!["twin (below): pulled at its centre, r = 0 and τ = 0".to_owned()],
+            _ => vec!["twin (below): the box's band force at its centre, r = 0, τ = 0".to_owned()],
         },
         Equation::Inertia => vec![format!(
             "I = m (w² + h²) / 12 = {m} × ({}² + {}²) / 12 = {}",

@@ -38,7 +38,10 @@ impl Plugin for LearnPlugin {
             .add_observer(learn)
             .add_observer(twin::restart_on_reset)
             .add_systems(Startup, spawn_card)
-            .add_systems(FixedUpdate, twin::step_twin.in_set(PhysicsSystems::Observe))
+            .add_systems(
+                FixedUpdate,
+                twin::place_twin.in_set(PhysicsSystems::Observe),
+            )
             .add_systems(
                 RunFixedMainLoop,
                 check_task

@@ -1,14 +1,18 @@
-//! The centre twin of the chapter on a force at a point: a copy of the box, set beside it,
-//! that the same band pulls at its centre instead of a corner, so the player sees side by side
-//! that both centres accelerate by F / m and only the box pulled at a corner turns. It is the
-//! core's [`Stepper`] under the live band's anchor moved by the twin's offset; the live box
-//! never reads it.
+//! The centre twin of the chapter on a force at a point: a copy of the box, set beside it, that
+//! the box's own band force pushes at its centre, with the same damping. Its equations are the
+//! box's linear ones (x' = v, m v' = F_band − b v) with the same right-hand side, so its centre
+//! moves as the box's does, by the offset, and with r = 0 it never turns: the tutorial's "the
+//! linear response is the same as if the force acted on the centre of mass" (§4).
+//!
+//! Every integrator here updates x and v from the forces alone, so stepping the twin would
+//! repeat the box's linear step on the same numbers; it is read off the box instead.
+//! tests/learn.rs steps a twin on its own under the box's force and finds the same path.
 
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
-use crate::game::simulation::{Band, Bodies, ResetScene, acting_band};
-use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams, Stepper};
+use crate::game::simulation::{Bodies, ResetScene};
+use crate::physics::{AngularState, BodyState, LinearState};
 
 /// Where the twin sits from the box, in world px: below it.
 ///
@@ -24,27 +28,27 @@ pub struct CentreTwin {
     restart: bool,
 }
 
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Twin {
-    pub stepper: Stepper,
-    /// The state before the latest step, for drawing between the two.
-    pub previous: BodyState,
+    /// The orientation it started with, which nothing changes.
+    pub orientation: f64,
 }
 
 impl Twin {
-    /// Returns the band the twin takes for the box's `band`.
+    /// Returns the twin's state beside a box in `state`.
     ///
-    /// It has the same anchor moved by the offset, and is held at the twin's centre.
-    fn band_for(band: BandEnds) -> BandEnds {
-        BandEnds {
-            local_point: DVec2::ZERO,
-            anchor: band.anchor + TWIN_OFFSET,
+    /// The centre and its velocity are the box's, moved by the offset; the twin does not spin.
+    pub fn beside(&self, state: &BodyState) -> BodyState {
+        BodyState {
+            linear: LinearState {
+                position: state.linear.position + TWIN_OFFSET,
+                velocity: state.linear.velocity,
+            },
+            angular: AngularState {
+                orientation: self.orientation,
+                angular_velocity: 0.0,
+            },
         }
-    }
-
-    /// Returns the twin's band's anchor, while a band pulls it.
-    pub fn anchor(&self) -> Option<DVec2> {
-        self.stepper.band.map(|band| band.anchor)
     }
 }
 
@@ -52,60 +56,20 @@ pub fn restart_on_reset(_reset: On<ResetScene>, mut twin: ResMut<CentreTwin>) {
     twin.restart = true;
 }
 
-/// Steps the twin before the live box's step: the same step under the same band.
+/// Sets the twin beside the box when its chapter is shown or the scene starts over.
 ///
-/// The band is held at the twin's centre, and the step uses the settings in force. Out of its
-/// chapter the twin is dropped, to start again from the box, moved by the offset, when the
-/// chapter is shown.
-pub fn step_twin(
-    mut twin: ResMut<CentreTwin>,
-    time: Res<Time<Fixed>>,
-    (params, integrator, auto): (Res<SceneParams>, Res<Integrator>, Res<AutoSettings>),
-    boxes: Bodies,
-    bands: Query<&Band>,
-) {
+/// Out of its chapter the twin is dropped.
+pub fn place_twin(mut twin: ResMut<CentreTwin>, boxes: Bodies) {
     if !twin.wanted {
         if twin.body.is_some() {
             twin.body = None;
         }
         return;
     }
-    let Ok(body) = boxes.single() else {
-        return;
-    };
-    let mass = body.mass;
     let restart = std::mem::take(&mut twin.restart);
     if twin.body.is_none() || restart {
-        let mut start = body.state();
-        start.linear.position += TWIN_OFFSET;
-        twin.body = Some(Twin {
-            stepper: Stepper {
-                params: *params,
-                mass: *mass,
-                state: start,
-                band: None,
-                integrator: *integrator,
-                auto: *auto,
-            },
-            previous: start,
+        twin.body = boxes.single().ok().map(|body| Twin {
+            orientation: body.angular.orientation,
         });
-    }
-    let Some(twin) = twin.body.as_mut() else {
-        return;
-    };
-    let stepper = &mut twin.stepper;
-    stepper.params = *params;
-    stepper.mass = *mass;
-    stepper.integrator = *integrator;
-    stepper.auto = *auto;
-    stepper.band = acting_band(body.entity, &bands).map(Twin::band_for);
-    let before = stepper.state;
-    stepper.step(time.timestep().as_secs_f64());
-    if stepper.state.is_sane() {
-        twin.previous = before;
-    } else {
-        // A step that leaves the bounds is undone: the twin waits where it was.
-        stepper.state = before;
-        twin.previous = before;
     }
 }

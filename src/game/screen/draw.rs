@@ -205,7 +205,7 @@ const TORQUE_RADIUS: f32 = 22.0;
 /// It draws the arm r from the centre to the band's corner, the torque τ as an arc about the centre
 /// in its sense; with no band, the corner a press would take, nearest where the press would
 /// put the anchor (the pointer's own map, `CameraFrame::anchor_at`: the rubber band's chapter);
-/// the centre twin and its band.
+/// the centre twin with the band's force at its centre.
 fn draw_learning(
     mut gizmos: Gizmos,
     (learning, params, fixed_time): (Res<Learning>, Res<SceneParams>, Res<Time<Fixed>>),
@@ -219,20 +219,25 @@ fn draw_learning(
         return;
     };
     let shows = |equation: Equation| chapter.equations.contains(&equation);
-    if let Some(twin) = &twin.body {
-        let snapshots = RenderSnapshots {
-            previous: twin.previous,
-            current: twin.stepper.state,
+    for (body, snapshots, mass) in &bodies {
+        let Some(twin) = &twin.body else {
+            break;
         };
-        let state = interpolated_state(&snapshots, &fixed_time);
+        let state = twin.beside(&interpolated_state(snapshots, &fixed_time));
         let centre = state.linear.position.as_vec2();
         let pose = Isometry2d::new(centre, Rot2::radians(state.angular.orientation as f32));
-        gizmos.rect_2d(pose, twin.stepper.mass.size().as_vec2(), colour::TWIN);
+        gizmos.rect_2d(pose, mass.size().as_vec2(), colour::TWIN);
         gizmos.cross_2d(pose, 4.0, colour::TWIN);
-        if let Some(anchor) = twin.anchor() {
-            let anchor = anchor.as_vec2();
-            gizmos.line_2d(centre, anchor, band_colour(centre.distance(anchor).into()));
-            gizmos.circle_2d(anchor, PIN_RADIUS, colour::TWIN);
+        // The box's band force, the same arrow as at the box's corner, at the twin's centre.
+        if let Some(band) = bands.iter().find(|band| band.body == body) {
+            let at_box = interpolated_state(snapshots, &fixed_time);
+            let force = band.ends.wrench(&at_box, params.stiffness).force;
+            let arrow = force.normalize_or_zero() * force_arrow_length(force.length());
+            gizmos.arrow_2d(
+                centre,
+                (state.linear.position + arrow).as_vec2(),
+                FORCE_COLOUR,
+            );
         }
     }
     for (body, snapshots, mass) in &bodies {
