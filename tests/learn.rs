@@ -155,6 +155,18 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
             wanted.push(format!("= {}", n(inertia)));
             wanted.push(torque_parts);
             wanted.push(n(torques / inertia));
+            // I₀: the chapter's scene's box, by the tutorial's formula.
+            let start = rubber_band_box::physics::Scene::named(CHAPTERS[index].scene)
+                .unwrap()
+                .params;
+            let start = start.mass * (start.size.x.powi(2) + start.size.y.powi(2)) / 12.0;
+            wanted.push(format!("= {} rad/s²", n(torque / inertia)));
+            wanted.push(format!(
+                "with I₀ = {}: τ_band / I₀ = {}, and I₀ / I = {}",
+                n(start),
+                n(torque / start),
+                n(start / inertia)
+            ));
         }
         Task::ThreeCorners => {
             if let (Some(p), Some(q)) = (corner, anchor) {
@@ -547,45 +559,78 @@ fn claim_3_the_box_force_at_the_centre_moves_the_twin_as_the_box() {
     }
 }
 
-/// Chapter 4: "the same torque gives a box with twice the inertia half the angular
-/// acceleration", and "a larger box held at its corner is also held further from its centre,
-/// so the same band gives it more torque". The card's α = Στ / I for the same state and band,
-/// with the mass doubled, is half; with the side √2 times as long (I doubled too) it is more
-/// than half, by the longer arm.
+/// Chapter 4: "Change either while the band pulls: the band holds the same point, so the
+/// torque is the same and its part of α halves". The chapter's pull is paused, I doubled by the
+/// mass and, in another game, by the size: the band's torque stays to the bit and τ_band / I
+/// halves, on the box's components and on the card.
 #[test]
-fn claim_4_twice_the_inertia_halves_alpha_for_the_same_torque_and_a_larger_box_gets_more() {
-    use rubber_band_box::game::learn::equations::Quantities;
-    use rubber_band_box::physics::EnergyLedger;
+fn claim_4_twice_the_inertia_halves_alpha_for_the_same_torque_by_mass_or_by_size() {
+    use rubber_band_box::game::input::controls::Action;
+    let torque_and_inertia = |game: &mut Game| {
+        let (state, mass, band) = the_box(game);
+        let band = band.expect("the chapter's pull holds a band");
+        let k = game.world().resource::<SceneParams>().stiffness;
+        (band.wrench(&state, k).torque, mass.inertia(), state)
+    };
+    let index = 3;
+    let base = SceneParams::tutorial();
+    for (parameter, value) in [
+        (Parameter::Mass, 2.0 * base.mass),
+        (Parameter::Size, std::f64::consts::SQRT_2 * base.size.x),
+    ] {
+        let mut game = Game::stepping();
+        chapter(&mut game, index);
+        game.update(20);
+        game.tap_key(PAUSE);
+        game.update(1);
+        let (torque, inertia, state) = torque_and_inertia(&mut game);
+        assert!(torque.abs() > 1000.0, "the pull's torque {torque}");
+        game.world().write_message(Action::Set(parameter, value));
+        game.update(2);
+        let (now, doubled, still) = torque_and_inertia(&mut game);
+        assert_eq!(still, state, "paused, the box has not moved");
+        assert!(
+            (doubled / inertia - 2.0).abs() < 1e-12,
+            "{parameter:?}: I {doubled}"
+        );
+        assert_eq!(now, torque, "{parameter:?}: the band's torque is the same");
+        let halved = (now / doubled) / (torque / inertia);
+        assert!(
+            (halved - 0.5).abs() < 1e-12,
+            "{parameter:?}: τ_band / I × {halved}"
+        );
+        let shown = equations(&mut game);
+        assert!(
+            shown.contains(&format!("and I₀ / I = {}", n(0.5))),
+            "{shown}"
+        );
+        assert!(game.world().resource::<Learning>().done[index]);
+    }
+}
+
+/// Chapter 4: "A larger box grabbed afresh at its corner is held further from its centre, so
+/// the same stretch gives it more torque". The same press on a box √2 times as large takes a
+/// corner √2 times as far: more than 1.3 times the torque, so α is more than half.
+#[test]
+fn claim_4_a_larger_box_grabbed_at_its_corner_gets_more_torque() {
     let params = SceneParams::tutorial();
     let state = BodyState::default();
-    let alpha = |params: &SceneParams| {
+    let torque = |params: &SceneParams| {
         let mass = params.mass_properties().unwrap();
         let band = BandEnds::grabbing(&mass, &state, DVec2::new(300.0, -100.0));
-        let q = Quantities::of(
-            state,
-            &mass,
-            params,
-            Some(band),
-            EnergyLedger::starting_at(0.0),
-        );
-        (q.seed.torque, q.seed.torque / mass.inertia())
+        (band.wrench(&state, params.stiffness).torque, mass.inertia())
     };
-    let (torque, base) = alpha(&params);
-    let (heavy_torque, heavy) = alpha(&SceneParams {
-        mass: 2.0 * params.mass,
-        ..params
-    });
-    assert_eq!(heavy_torque, torque);
-    assert!((heavy / base - 0.5).abs() < 1e-12, "{heavy} / {base}");
-    let (large_torque, large) = alpha(&SceneParams {
+    let (base, inertia) = torque(&params);
+    let (large, larger) = torque(&SceneParams {
         size: params.size * std::f64::consts::SQRT_2,
         ..params
     });
+    assert!(large > 1.3 * base, "{large} against {base}");
+    assert!((larger / inertia - 2.0).abs() < 1e-12);
     assert!(
-        large_torque > 1.3 * torque,
-        "{large_torque} against {torque}"
+        (large / larger) / (base / inertia) > 0.6,
+        "more than half the α"
     );
-    assert!(large / base > 0.6, "{large} / {base}: more than half");
 }
 
 /// Chapter 5: "The band is a spring of zero rest length between the pointer and the corner

@@ -27,6 +27,8 @@ pub enum Equation {
     Inertia,
     /// α = Στ / I.
     AngularAcceleration,
+    /// The band's part of α, τ_band / I, against what it was with the chapter's first I.
+    BandShareOfAlpha,
     /// F = −k (p − q).
     Spring,
     /// The corner nearest the pointer.
@@ -144,17 +146,20 @@ pub const CHAPTERS: [Chapter; 7] = [
         integrator: None,
         text: "The moment of inertia is to turning what mass is to moving: the same torque \
                gives a box with twice the inertia half the angular acceleration. For a box it \
-               grows with the mass and the square of its size: the Controls card's mass and \
-               size sliders change it here. A larger box held at its corner is also held \
-               further from its centre, so the same band gives it more torque.",
+               grows with the mass and the square of its size (the Controls card's mass and \
+               size sliders). Change either while the band pulls: the band holds the same point, \
+               so the torque is the same and its part of α halves (damping's −c\u{a0}ω does not \
+               depend on I). A larger box grabbed afresh at its corner is held further from its \
+               centre, so the same stretch gives it more torque.",
         equations: &[
             Equation::Inertia,
             Equation::Torque,
             Equation::AngularAcceleration,
+            Equation::BandShareOfAlpha,
         ],
         centre_twin: false,
         task: Task::DoubleTheInertia,
-        ask: "double I (mass ×2): the same pull then turns the box half as fast",
+        ask: "double I while the band pulls (mass ×2 or size ×1.41): τ_band / I halves",
     },
     Chapter {
         title: "The rubber band",

@@ -27,6 +27,8 @@ pub struct Quantities {
     pub dt: f64,
     /// The centre twin's state, when a chapter shows one ([`super::twin`]).
     pub twin: Option<BodyState>,
+    /// The moment of inertia the chapter started with, I₀.
+    pub inertia_at_start: f64,
     /// The `seed` integrator's stages for the next step from this state, its own numbers.
     pub seed: SeedStages,
 }
@@ -60,6 +62,7 @@ impl Quantities {
             ledger,
             dt: params.dt(),
             twin: None,
+            inertia_at_start: mass.inertia(),
             seed,
         }
     }
@@ -68,6 +71,14 @@ impl Quantities {
     pub fn with_twin(self, twin: Option<&Twin>) -> Self {
         Self {
             twin: twin.map(|twin| twin.beside(&self.state)),
+            ..self
+        }
+    }
+
+    /// Adds the moment of inertia the chapter started with.
+    pub fn with_inertia_at_start(self, inertia_at_start: f64) -> Self {
+        Self {
+            inertia_at_start,
             ..self
         }
     }
@@ -236,6 +247,23 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
                 n(torque / q.inertia)
             ),
         ],
+        Equation::BandShareOfAlpha => {
+            let share = q.band_torque() / q.inertia;
+            vec![
+                format!(
+                    "τ_band / I = {} / {} = {} rad/s²",
+                    f(q.band_torque()),
+                    n(q.inertia),
+                    n(share)
+                ),
+                format!(
+                    "with I₀ = {}: τ_band / I₀ = {}, and I₀ / I = {}",
+                    n(q.inertia_at_start),
+                    n(q.band_torque() / q.inertia_at_start),
+                    n(q.inertia_at_start / q.inertia)
+                ),
+            ]
+        }
         Equation::Spring => match q.band {
             Some((corner, anchor)) => vec![format!(
                 "F = −k (p − q) = −{} × ({} − {}) = {}",

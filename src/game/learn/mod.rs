@@ -342,9 +342,10 @@ fn equation_colour(equation: Equation) -> Color {
         Equation::CentrePull => colour::TWIN,
         Equation::Motion => colour::VELOCITY,
         Equation::Arm => colour::ARM,
-        Equation::Torque | Equation::AngularAcceleration | Equation::AngularDamping => {
-            colour::TORQUE
-        }
+        Equation::Torque
+        | Equation::AngularAcceleration
+        | Equation::BandShareOfAlpha
+        | Equation::AngularDamping => colour::TORQUE,
         _ => colour::TEXT,
     }
 }
@@ -456,6 +457,7 @@ fn show_chapter(
             books.ledger,
         )
         .with_twin(twin.body.as_ref())
+        .with_inertia_at_start(learning.progress.inertia_at_start)
     });
     let Some(shown) = chapter_texts(&learning, quantities.as_ref()) else {
         return;
