@@ -354,3 +354,68 @@ fn the_tutorials_pull_and_a_scripted_far_pull_keep_the_box_in_view() {
         }
     }
 }
+
+/// Learn mode frames each chapter's picture: the box drawn at least 1.8 times as large as at
+/// home and across at least a sixth of the viewport's shorter side, at a desktop and a phone; for
+/// three seconds of the chapter's scene (its scripted pull), every corner of the box, and of
+/// the centre twin where the chapter has one, lies in the viewport. A pull to the window's
+/// corner, held until the box rests, keeps it in view as out of learn mode. Leaving comes home.
+#[test]
+fn learn_mode_frames_each_chapter_close_and_keeps_the_box_and_its_twin_in_view() {
+    use rubber_band_box::game::learn::Learn;
+    use rubber_band_box::game::learn::chapters::CHAPTERS;
+    use rubber_band_box::game::learn::twin::TWIN_OFFSET;
+    for size in [DESKTOP, PHONE] {
+        let mut game = game_at(size);
+        for (index, chapter) in CHAPTERS.iter().enumerate() {
+            game.world().trigger(Learn::Chapter(index));
+            game.update(2);
+            let viewport = viewport(&mut game);
+            let name = format!("{size}, chapter {}", index + 1);
+            let corners: Vec<Vec2> = game.drawn_corners();
+            let side = game
+                .on_window(corners[0])
+                .distance(game.on_window(corners[1]));
+            let at_home = SIDE / home_scale(viewport);
+            let share = side / viewport.size().min_element();
+
+            assert!(
+                side >= 1.8 * at_home,
+                "{name}: the box {side} px, at home {at_home}"
+            );
+            assert!(
+                share >= 1.0 / 6.0,
+                "{name}: the box {share} of the viewport"
+            );
+            for frame in 0..300 {
+                game.update(1);
+                let mut drawn = game.drawn_corners();
+                if chapter.centre_twin {
+                    let twin: Vec<Vec2> =
+                        drawn.iter().map(|c| *c + TWIN_OFFSET.as_vec2()).collect();
+                    drawn.extend(twin);
+                }
+                for corner in drawn {
+                    let at = game.on_window(corner);
+                    assert!(
+                        viewport.inflate(0.5).contains(at),
+                        "{name}, frame {frame}: a corner at {at}, out of {viewport:?}"
+                    );
+                }
+            }
+        }
+        let start = press_the_box(&mut game, Vec2::new(8.0, -8.0), "learn mode");
+        drag_mouse(
+            &mut game,
+            start,
+            Vec2::ZERO,
+            "learn mode, to the window's corner",
+        );
+        settle(&mut game, "learn mode, held at the window's corner");
+        game.mouse(ButtonState::Released);
+        run(&mut game, 300, "learn mode, let go");
+        game.world().trigger(Learn::Toggle);
+        game.update(300);
+        assert_home(&mut game, &format!("{size}, left learn mode"));
+    }
+}

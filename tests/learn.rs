@@ -273,7 +273,7 @@ fn task_done(index: usize, act: bool) -> bool {
             Task::MoveWithoutTurning => {
                 // Along the diagonal through the centre: no torque.
                 let x = game.state().0.position;
-                game.press_at(x + DVec2::new(150.0, 150.0));
+                game.press_at(x + DVec2::new(100.0, 100.0));
                 game.update(60);
                 game.mouse(ButtonState::Released);
             }
@@ -301,9 +301,9 @@ fn task_done(index: usize, act: bool) -> bool {
             }
             Task::ThreeCorners => {
                 for at in [
-                    DVec2::new(200.0, 200.0),
-                    DVec2::new(-200.0, 200.0),
-                    DVec2::new(-200.0, -200.0),
+                    DVec2::new(150.0, 90.0),
+                    DVec2::new(-150.0, 90.0),
+                    DVec2::new(-150.0, -90.0),
                 ] {
                     game.press_at(at);
                     game.update(2);
@@ -640,7 +640,7 @@ fn claim_5_the_band_takes_the_nearest_corner_and_pulls_k_times_the_stretch_towar
     let mut game = Game::stepping();
     chapter(&mut game, 4);
     let k = game.world().resource::<SceneParams>().stiffness;
-    let pointer = DVec2::new(-200.0, 90.0);
+    let pointer = DVec2::new(-150.0, 80.0);
     game.press_at(pointer);
     game.update(1);
     let (state, mass, band) = the_box(&mut game);

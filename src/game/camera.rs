@@ -15,6 +15,9 @@
 //! camera widened without end in a few frames (issue 40): here the anchor's bound does not
 //! depend on the view shown, so nothing feeds back.
 //!
+//! A mode may ask for a closer home ([`Stage`]): learn mode frames its chapter's picture. The
+//! reach stays the tutorial's screen.
+//!
 //! It runs headless too (the game without its screen): `screen::view` places the camera
 //! entity from the frame.
 
@@ -98,11 +101,13 @@ impl View {
 /// Where the player put it is the home: the tutorial's screen, or as zoomed and panned.
 #[derive(Resource, Debug, Clone, Copy, PartialEq)]
 pub struct CameraFrame {
-    /// The player's zoom about the home frame (1: the tutorial's screen fitted) and pan.
+    /// The player's zoom about the home frame (1: the stage fitted) and pan.
     pub zoom: f32,
     pub pan: Vec2,
     /// What the camera shows this frame (`None` until the first).
     pub shown: Option<View>,
+    /// What home frames: the tutorial's screen, or a closer area a mode asks for.
+    pub stage: Stage,
 }
 
 impl Default for CameraFrame {
@@ -111,11 +116,28 @@ impl Default for CameraFrame {
             zoom: 1.0,
             pan: Vec2::ZERO,
             shown: None,
+            stage: Stage::default(),
         }
     }
 }
 
-/// The room left around the tutorial's screen in the home frame, as a share of it.
+/// What the home view frames, as a mode sets it (learn mode: its chapter's picture).
+///
+/// A reset and `F` keep it; the band's reach stays the tutorial's screen either way.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Stage {
+    /// The world area home fits instead of the tutorial's screen.
+    pub close: Option<Rect>,
+    /// A copy of the box drawn this far from it (learn mode's centre twin), kept in view too.
+    pub copy_at: Option<Vec2>,
+}
+
+/// The tutorial's screen: the world the band reaches, and home unless a stage is closer.
+const SCREEN: Rect = Rect {
+    min: Vec2::new(-0.5 * SCENE_SIZE.x as f32, -0.5 * SCENE_SIZE.y as f32),
+    max: Vec2::new(0.5 * SCENE_SIZE.x as f32, 0.5 * SCENE_SIZE.y as f32),
+};
+/// The room left around the stage in the home frame, as a share of it.
 const HOME_MARGIN: f32 = 1.04;
 /// The share of the view a box that left home is brought back into.
 const INNER: f32 = 0.8;
@@ -134,10 +156,17 @@ impl CameraFrame {
     ///
     /// It fits the tutorial's screen, then applies the player's zoom and pan.
     pub fn home(&self, size: Vec2) -> View {
-        let screen = Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2() * HOME_MARGIN);
-        let fitted = View::fitting(screen, size);
+        self.fitted(self.stage.close.unwrap_or(SCREEN), size)
+    }
+
+    /// Returns `area`, with its margin, fitted to a viewport of `size`, then zoomed and panned.
+    fn fitted(&self, area: Rect, size: Vec2) -> View {
+        let fitted = View::fitting(
+            Rect::from_center_size(area.center(), area.size() * HOME_MARGIN),
+            size,
+        );
         View {
-            centre: self.pan,
+            centre: area.center() + self.pan,
             world_per_pixel: fitted.world_per_pixel * self.zoom,
         }
     }
@@ -153,7 +182,7 @@ impl CameraFrame {
     /// there by a corner lies in the home frame, so the view comes home. A frame narrower than
     /// two spans leaves its centre line.
     pub fn reach(&self, size: Vec2, span: f32) -> Rect {
-        let home = self.home(size).area(size);
+        let home = self.fitted(SCREEN, size).area(size);
         let half = (home.half_size() - Vec2::splat(span)).max(Vec2::ZERO);
         Rect::from_center_half_size(home.center(), half)
     }
@@ -263,7 +292,10 @@ fn go_home(_home: On<HomeView>, mut frame: ResMut<CameraFrame>) {
 
 /// Starts the view over on a reset too.
 fn go_home_on_reset(_reset: On<ResetScene>, mut frame: ResMut<CameraFrame>) {
-    *frame = CameraFrame::default();
+    *frame = CameraFrame {
+        stage: frame.stage,
+        ..default()
+    };
 }
 
 /// Zooms and pans the view with the wheel, the right button and two fingers.
@@ -299,7 +331,8 @@ fn zoom_and_pan(
         let zoom = (frame.zoom * factor).clamp(ZOOM_RANGE.0, ZOOM_RANGE.1);
         let applied = zoom / frame.zoom;
         let world_at = shown.to_world(at, area);
-        frame.pan = world_at + (frame.pan - world_at) * applied;
+        let centre = frame.home(area.size()).centre;
+        frame.pan += world_at + (centre - world_at) * applied - centre;
         frame.zoom = zoom;
     };
     for event in wheel.read() {
@@ -364,10 +397,15 @@ fn follow_the_box(
     let resized = std::mem::replace(&mut *last_size, size) != size;
     // Every box's corners as drawn; never the band's anchor (the module's doc says why).
     let mut keep = Rect::EMPTY;
+    let copy = frame.stage.copy_at;
     for (snapshots, mass) in &boxes {
         let state = interpolated_state(snapshots, &fixed_time);
         for corner in mass.corners() {
-            keep = keep.union_point(state.local_to_world(corner).as_vec2());
+            let corner = state.local_to_world(corner).as_vec2();
+            keep = keep.union_point(corner);
+            if let Some(offset) = copy {
+                keep = keep.union_point(corner + offset);
+            }
         }
     }
     let home = frame.home(size);

@@ -79,6 +79,11 @@ pub struct Chapter {
     /// A few sentences in the project's own words.
     pub text: &'static str,
     pub equations: &'static [Equation],
+    /// The world area the camera frames, in px (left, bottom, right, top).
+    ///
+    /// It is what the chapter is about (its box, its pull, its twin), so that the box and its
+    /// arrows read large; the band still reaches the whole tutorial screen.
+    pub frame: [f32; 4],
     /// A twin of the box beside it, pushed at its centre by the box's band force ([`super::twin`]).
     pub centre_twin: bool,
     pub task: Task,
@@ -97,6 +102,7 @@ pub const CHAPTERS: [Chapter; 7] = [
                its mass sat there: F\u{a0}=\u{a0}m\u{a0}a, and the box does not turn. Here the band pulls \
                along the diagonal, through the centre.",
         equations: &[Equation::ForceSum, Equation::Acceleration, Equation::Motion],
+        frame: [-70.0, -70.0, 230.0, 230.0],
         centre_twin: false,
         task: Task::MoveWithoutTurning,
         ask: "pull along a diagonal so that the box moves 40 px without turning",
@@ -114,6 +120,7 @@ pub const CHAPTERS: [Chapter; 7] = [
             Equation::AngularDecay,
             Equation::Inertia,
         ],
+        frame: [-130.0, -100.0, 130.0, 100.0],
         centre_twin: false,
         task: Task::SpinWithoutDamping,
         ask: "set the angular damping to 0 while it spins: ω stops falling",
@@ -135,6 +142,7 @@ pub const CHAPTERS: [Chapter; 7] = [
             Equation::AngularAcceleration,
             Equation::CentrePull,
         ],
+        frame: [-70.0, -180.0, 270.0, 190.0],
         centre_twin: true,
         task: Task::SpinClockwise,
         ask: "pull so that the box spins clockwise",
@@ -157,6 +165,7 @@ pub const CHAPTERS: [Chapter; 7] = [
             Equation::AngularAcceleration,
             Equation::BandShareOfAlpha,
         ],
+        frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
         task: Task::DoubleTheInertia,
         ask: "double I while the band pulls (mass ×2 or size ×1.41): τ_band / I halves",
@@ -169,6 +178,7 @@ pub const CHAPTERS: [Chapter; 7] = [
         text: "The band is a spring of zero rest length between the pointer and the corner \
                nearest it when pressed: its force is k times the stretch, toward the pointer.",
         equations: &[Equation::NearestCorner, Equation::Spring, Equation::Torque],
+        frame: [-130.0, -100.0, 130.0, 100.0],
         centre_twin: false,
         task: Task::ThreeCorners,
         ask: "press near three different corners: the band takes the nearest each time",
@@ -188,6 +198,7 @@ pub const CHAPTERS: [Chapter; 7] = [
             Equation::Energy,
             Equation::Ledger,
         ],
+        frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
         task: Task::ComeToRest,
         ask: "pull, let go, and watch the energy leave until the box rests",
@@ -205,6 +216,7 @@ pub const CHAPTERS: [Chapter; 7] = [
                shows them all beside the box and P plots their error against their cost, the \
                way into the lab.",
         equations: &[Equation::Update],
+        frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
         task: Task::StepFiveTimes,
         ask: "pause (Space) and step (N) five times, reading each line",

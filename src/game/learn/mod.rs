@@ -12,7 +12,8 @@ use bevy::prelude::*;
 
 use self::chapters::{CHAPTERS, Equation, Task};
 use self::equations::Quantities;
-use self::twin::CentreTwin;
+use self::twin::{CentreTwin, TWIN_OFFSET};
+use crate::game::camera::{CameraFrame, Stage};
 use crate::game::layout::{Card, Cards, Slot};
 use crate::game::pointer::Grip;
 use crate::game::replays::playback::Playback;
@@ -169,6 +170,11 @@ fn go_to(world: &mut World, index: usize) {
     overlays.hud_hidden = false;
     world.resource_mut::<Cards>().set(Card::Learn, true);
     world.resource_mut::<CentreTwin>().wanted = chapter.centre_twin;
+    let [left, bottom, right, top] = chapter.frame;
+    world.resource_mut::<CameraFrame>().stage = Stage {
+        close: Some(Rect::new(left, bottom, right, top)),
+        copy_at: chapter.centre_twin.then_some(TWIN_OFFSET.as_vec2()),
+    };
     let inertia = world
         .resource::<SceneParams>()
         .mass_properties()
@@ -189,6 +195,7 @@ fn leave(world: &mut World) {
         learning.saved.take()
     };
     world.resource_mut::<CentreTwin>().wanted = false;
+    world.resource_mut::<CameraFrame>().stage = Stage::default();
     let Some(saved) = saved else {
         return;
     };

@@ -17,7 +17,7 @@ use crate::physics::{AngularState, BodyState, LinearState};
 /// Where the twin sits from the box, in world px: below it.
 ///
 /// The tutorial's pull up and to the right then keeps both in the scene.
-pub const TWIN_OFFSET: DVec2 = DVec2::new(0.0, -160.0);
+pub const TWIN_OFFSET: DVec2 = DVec2::new(0.0, -130.0);
 
 /// The twin, while a chapter shows it.
 #[derive(Resource, Debug, Default)]
