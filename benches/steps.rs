@@ -1,5 +1,5 @@
 //! Criterion benchmarks: one core step per integrator; `auto` on the stiff pulls the report
-//! sets against the peers; one headless `App` fixed step with the
+//! sets against the peers; the Taylor engine alone, as compiled for any processor and as run; one headless `App` fixed step with the
 //! box and its band beside an empty `App` (the ECS floor); N boxes each with a band; and a
 //! scene's step with the ghosts on and off.
 //!
@@ -71,6 +71,42 @@ fn stiff_auto(c: &mut Criterion) {
                 }
                 black_box(run.stepper.state)
             })
+        });
+    }
+    group.finish();
+}
+
+/// The Taylor engine alone, one fixed step of `auto`'s settings from a state half way through
+/// the stiff case's run (k = 20: the tutorial's pull), compiled for any processor and, on an
+/// x86-64 with AVX, for its four-lane registers: the two side by side in one run.
+fn taylor_lanes(c: &mut Criterion) {
+    use rubber_band_box::physics::AutoSettings;
+    use rubber_band_box::physics::integrators::taylor::{self, TaylorSettings};
+    let mut group = c.benchmark_group("taylor_lanes");
+    for (k, rate) in [
+        (20.0, 100.0),
+        (1e6, 100.0),
+        (1e6, 64.0),
+        (1e7, 100.0),
+        (1e7, 64.0),
+    ] {
+        let case = StiffCase::new(k, rate);
+        let dt = 1.0 / rate;
+        let mut run = Run::of(&case.scene, Integrator::Auto, dt).expect("valid");
+        run.advance_by(case.ticks / 2).expect("stable");
+        let (state, model) = (run.stepper.state, run.stepper.model());
+        let auto = AutoSettings::default();
+        let settings = TaylorSettings {
+            order: auto.order,
+            tolerance: auto.tolerance,
+            max_steps: auto.max_substeps,
+        };
+        let label = format!("k{k:e}/{rate}Hz");
+        group.bench_function(format!("{label}/portable"), |b| {
+            b.iter(|| taylor::integrate_portable(black_box(&state), &model, dt, &settings))
+        });
+        group.bench_function(format!("{label}/as_run"), |b| {
+            b.iter(|| taylor::integrate(black_box(&state), &model, dt, &settings))
         });
     }
     group.finish();
@@ -208,5 +244,13 @@ fn circle_the_anchor(mut bands: Query<&mut Band>, mut step: Local<u32>) {
     }
 }
 
-criterion_group!(benches, core_step, stiff_auto, app_tick, many_boxes, ghosts);
+criterion_group!(
+    benches,
+    core_step,
+    stiff_auto,
+    taylor_lanes,
+    app_tick,
+    many_boxes,
+    ghosts
+);
 criterion_main!(benches);

@@ -221,6 +221,35 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(cases(4_000))]
+
+    /// The Taylor engine as the machine runs it (on an x86-64 with AVX, compiled for its wide
+    /// registers) and as compiled for any processor (what the browser runs) agree to the bit:
+    /// the replays' hashes rest on it.
+    #[test]
+    fn the_engine_gives_the_same_bits_however_it_is_compiled(
+        params in scene(),
+        initial in state(),
+        anchor in point(1e3),
+        order in 2usize..=24,
+        tolerance in log_uniform(1e-15, 1e-6),
+    ) {
+        use rubber_band_box::physics::integrators::taylor::{self, TaylorSettings};
+        let mut stepper = Stepper::new(params).unwrap();
+        stepper.state = initial;
+        stepper.grab(anchor);
+        let model = stepper.model();
+        let settings = TaylorSettings { order, tolerance, max_steps: 200 };
+        let bits = |done: Option<taylor::Integrated>| {
+            done.map(|d| (d.state.to_array().map(f64::to_bits), d.steps, d.orders, d.dissipated.to_bits()))
+        };
+        let run = bits(taylor::integrate(&initial, &model, 0.01, &settings));
+        let portable = bits(taylor::integrate_portable(&initial, &model, 0.01, &settings));
+        prop_assert_eq!(run, portable);
+    }
+}
+
 /// One thing a player, a window system or a clock can do between two frames.
 #[derive(Clone, Debug)]
 enum Input {
