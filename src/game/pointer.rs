@@ -26,7 +26,7 @@ use bevy::window::{PrimaryWindow, WindowFocused};
 
 use crate::game::camera::{CameraFrame, viewport_rect};
 use crate::game::layout::SceneViewport;
-use crate::game::schedule::GameSystems;
+use crate::game::schedule::{GameSystems, PhysicsSystems};
 use crate::game::simulation::{Band, Bodies, ResetScene, Tap};
 use crate::physics::BandEnds;
 
@@ -43,7 +43,17 @@ impl Plugin for PointerPlugin {
                     read_pointer.in_set(GameSystems::ReadPointer),
                     drive_band.in_set(GameSystems::Input),
                 ),
-            );
+            )
+            .add_systems(FixedUpdate, remove_taps.in_set(PhysicsSystems::AfterStep));
+    }
+}
+
+/// Removes a tap's band after the one step it acts for.
+///
+/// The removal is applied when the fixed step's schedule ends, before the next step.
+fn remove_taps(mut commands: Commands, taps: Query<Entity, (With<Band>, With<Tap>)>) {
+    for band in &taps {
+        commands.entity(band).despawn();
     }
 }
 

@@ -80,7 +80,8 @@ pub struct Band {
 
 /// A band that was pressed and released within one frame.
 ///
-/// It acts for exactly one fixed step, so that a quick click is never lost, and is then removed.
+/// It acts for exactly one fixed step, so that a quick click is never lost, and is then removed
+/// (by the pointer, which makes it: the step itself has no deferred work).
 #[derive(Component, Debug, Default)]
 pub struct Tap;
 
@@ -356,20 +357,10 @@ struct StepRecords<'w> {
 ///
 /// It is one system because each system a step costs Bevy about as much again as the box's physics
 /// (docs/peers.md).
-fn step(
-    mut commands: Commands,
-    settings: StepSettings,
-    bands: Query<&Band>,
-    taps: Query<Entity, (With<Band>, With<Tap>)>,
-    mut bodies: Moving,
-    mut records: StepRecords,
-) {
+fn step(settings: StepSettings, bands: Query<&Band>, mut bodies: Moving, mut records: StepRecords) {
     accumulate(&settings.params, &bands, &mut bodies, &mut records.books);
     integrate(&settings, &mut bodies, &mut records);
     publish(&settings.params, &bands, &bodies, &mut records);
-    for band in &taps {
-        commands.entity(band).despawn();
-    }
 }
 
 /// Books the hand's work since the last step, then puts the band's force on each body.
