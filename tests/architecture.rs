@@ -507,3 +507,114 @@ fn holds() {}
         ]
     );
 }
+
+/// The most parameters a function of the game takes; past it, a `SystemParam` says what they
+/// are.
+const MOST_PARAMETERS: usize = 8;
+
+/// Splits `list` at its commas outside brackets, dropping empty parts.
+fn top_level_parts(list: &str) -> Vec<&str> {
+    let (mut parts, mut depth, mut start) = (Vec::new(), 0i32, 0);
+    for (at, c) in list.char_indices() {
+        match c {
+            '(' | '[' | '{' | '<' => depth += 1,
+            ')' | ']' | '}' | '>' => depth -= 1,
+            ',' if depth == 0 => {
+                parts.push(&list[start..at]);
+                start = at + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&list[start..]);
+    parts
+        .into_iter()
+        .map(str::trim)
+        .filter(|part| !part.is_empty())
+        .collect()
+}
+
+/// Returns each function of `source` with more than [`MOST_PARAMETERS`], as "name: count".
+///
+/// A parameter whose type is a tuple counts as its parts: a tuple groups parameters without
+/// saying what they are.
+fn long_signatures(source: &str) -> Vec<String> {
+    let mut found = Vec::new();
+    let mut rest = source;
+    while let Some(at) = rest.find("fn ") {
+        let after = &rest[at + 3..];
+        rest = after;
+        let name: String = after
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        let Some(open) = after.find('(') else {
+            break;
+        };
+        // Only a declaration: `fn name(` or `fn name<...>(`.
+        let between = after[name.len()..open].trim();
+        if name.is_empty() || !(between.is_empty() || between.starts_with('<')) {
+            continue;
+        }
+        let mut depth = 0i32;
+        let Some(close) = after[open..].char_indices().find_map(|(at, c)| {
+            match c {
+                '(' => depth += 1,
+                ')' => depth -= 1,
+                _ => {}
+            }
+            (depth == 0).then_some(open + at)
+        }) else {
+            break;
+        };
+        let count: usize = top_level_parts(&after[open + 1..close])
+            .iter()
+            .map(|parameter| match parameter.split_once(':') {
+                Some((_, kind)) if kind.trim().starts_with('(') => {
+                    let kind = kind.trim();
+                    top_level_parts(&kind[1..kind.len() - 1]).len()
+                }
+                _ => 1,
+            })
+            .sum();
+        if count > MOST_PARAMETERS {
+            found.push(format!("{name}: {count} parameters"));
+        }
+    }
+    found
+}
+
+#[test]
+fn no_function_of_the_game_takes_more_than_eight_parameters() {
+    let mut long = Vec::new();
+    let mut functions = 0;
+    for (relative, source) in source_files() {
+        if !relative.starts_with("game") {
+            continue;
+        }
+        functions += source.matches("fn ").count();
+        for problem in long_signatures(&source) {
+            long.push(format!("src/{}: {problem}", relative.display()));
+        }
+    }
+    assert!(functions > 200, "only {functions} functions read");
+    assert!(
+        long.is_empty(),
+        "group these with a SystemParam that says what they are:\n{}",
+        long.join("\n")
+    );
+}
+
+#[test]
+fn the_parameter_check_counts_a_tuples_parts() {
+    let source = "\
+fn nine(a: A, b: B, c: C, d: D, e: E, f: F, g: G, h: H, i: Query<(&A, &B), With<C>>) {}
+fn eight((a, b, c): (Res<A>, Res<B>, Res<C>), d: D, e: E, f: F, g: G, h: H) {}
+fn tupled(a: A, (b, c, d, e, f): (B, C, D, E, F), g: G, h: H, i: I) {}
+let f = |x: fn(A, B, C, D, E, F, G, H, I)| x;
+";
+    assert_eq!(
+        long_signatures(source),
+        ["nine: 9 parameters", "tupled: 9 parameters"]
+    );
+}

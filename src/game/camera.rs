@@ -21,6 +21,7 @@
 //! It runs headless too (the game without its screen): `screen::view` places the camera
 //! entity from the frame.
 
+use bevy::ecs::system::SystemParam;
 use bevy::input::mouse::{MouseScrollUnit, MouseWheel};
 use bevy::math::DVec2;
 use bevy::prelude::*;
@@ -265,6 +266,24 @@ fn eased_view(shown: View, wanted: View, ease: f32, home: View, size: Vec2, keep
     bounded(View::fitting(grown, size), home, size, keep)
 }
 
+/// How the scene shows the world on the window, which the pointer and the drawing map through.
+///
+/// It is the window, the viewport the layout gave the scene, and the camera's frame.
+#[derive(SystemParam)]
+pub struct SceneView<'w, 's> {
+    pub window: Option<Single<'w, 's, &'static Window, With<PrimaryWindow>>>,
+    pub viewport: Res<'w, SceneViewport>,
+    pub frame: Res<'w, CameraFrame>,
+}
+
+/// What moves the view by hand: the wheel, the mouse's buttons and the fingers on the screen.
+#[derive(SystemParam)]
+struct ViewControls<'w, 's> {
+    wheel: MessageReader<'w, 's, MouseWheel>,
+    buttons: Res<'w, ButtonInput<MouseButton>>,
+    touches: Res<'w, Touches>,
+}
+
 /// Returns the viewport's rectangle now, in logical pixels: the layout's, or the whole window.
 pub fn viewport_rect(viewport: &SceneViewport, window: &Window) -> Rect {
     viewport
@@ -303,11 +322,8 @@ fn go_home_on_reset(_reset: On<ResetScene>, mut frame: ResMut<CameraFrame>) {
 /// The wheel zooms about the pointer, the right button drags the view, two fingers pinch and
 /// pan: all on the scene's viewport only (the wheel over the dock scrolls it). While a band is
 /// held two fingers do not pinch: a second finger beside the one that holds does nothing.
-#[allow(clippy::too_many_arguments)]
 fn zoom_and_pan(
-    mut wheel: MessageReader<MouseWheel>,
-    buttons: Res<ButtonInput<MouseButton>>,
-    touches: Res<Touches>,
+    controls: ViewControls,
     bands: Query<(), With<Band>>,
     window: Option<Single<&Window, With<PrimaryWindow>>>,
     viewport: Res<SceneViewport>,
@@ -315,6 +331,11 @@ fn zoom_and_pan(
     mut last_cursor: Local<Option<Vec2>>,
     mut last_pinch: Local<Option<(f32, Vec2)>>,
 ) {
+    let ViewControls {
+        mut wheel,
+        buttons,
+        touches,
+    } = controls;
     let Some(window) = window else {
         wheel.clear();
         return;

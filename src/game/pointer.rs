@@ -9,7 +9,7 @@
 //!
 //! What happens at the edges:
 //! - press and release within one frame (a quick click or tap): the band acts for exactly one
-//!   fixed step, then is removed, so no click is lost;
+//!   fixed step, then is removed (by `remove_taps`), so no click is lost;
 //! - the pointer leaves the scene while held (over the dock, the status line, the bottom
 //!   sheet): the anchor stops at the viewport's edge, and never goes past the camera's reach,
 //!   so the box held still stays in the home frame;
@@ -19,13 +19,14 @@
 //! - a second press while a band exists (a missed release, or the mouse taking over from a
 //!   finger): the old band goes and a new one attaches at the corner nearest the new press;
 //!   a second finger while the first holds the band is ignored. There is never more than one band.
+//!
+//! [`CameraFrame::anchor_at`]: crate::game::camera::CameraFrame::anchor_at
 
 use bevy::math::DVec2;
 use bevy::prelude::*;
-use bevy::window::{PrimaryWindow, WindowFocused};
+use bevy::window::WindowFocused;
 
-use crate::game::camera::{CameraFrame, viewport_rect};
-use crate::game::layout::SceneViewport;
+use crate::game::camera::{SceneView, viewport_rect};
 use crate::game::schedule::{GameSystems, PhysicsSystems};
 use crate::game::simulation::{Band, Bodies, ResetScene, Tap};
 use crate::physics::BandEnds;
@@ -83,18 +84,19 @@ pub enum PointerSource {
 /// A press grabs only on the scene's viewport (the dock and its controls lie outside it); a
 /// held band follows anywhere, its anchor clamped to the viewport and the camera's reach.
 fn read_pointer(
-    (buttons, touches, viewport, frame): (
-        Res<ButtonInput<MouseButton>>,
-        Res<Touches>,
-        Res<SceneViewport>,
-        Res<CameraFrame>,
-    ),
+    buttons: Res<ButtonInput<MouseButton>>,
+    touches: Res<Touches>,
+    view: SceneView,
     mut focus: MessageReader<WindowFocused>,
-    window: Option<Single<&Window, With<PrimaryWindow>>>,
     boxes: Bodies,
     mut grip: ResMut<Grip>,
     mut actions: MessageWriter<PointerAction>,
 ) {
+    let SceneView {
+        window,
+        viewport,
+        frame,
+    } = view;
     // The box's diagonal: how far past its corner a box held still may lie.
     let span = boxes
         .iter()

@@ -6,6 +6,7 @@
 //! are buttons too, and fold their cards. It lies outside the scene's viewport, so a press on
 //! it never grabs the box.
 
+use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 use bevy::ui::UiGlobalTransform;
 use bevy::ui_widgets::{
@@ -484,22 +485,34 @@ fn move_slider(
     }
 }
 
+/// What the panel shows: the settings, the overlays and the clocks.
+#[derive(SystemParam)]
+struct Shown<'w> {
+    params: Res<'w, SceneParams>,
+    integrator: Res<'w, Integrator>,
+    scene: Res<'w, SceneName>,
+    overlays: Res<'w, Overlays>,
+    virtual_time: Res<'w, Time<Virtual>>,
+    fixed_time: Res<'w, Time<Fixed>>,
+}
+
 /// Shows what the resources say: the panel open or folded, which buttons are lit, the values.
-#[allow(clippy::too_many_arguments)]
 fn show_state(
     mut commands: Commands,
-    (params, integrator, scene, overlays): (
-        Res<SceneParams>,
-        Res<Integrator>,
-        Res<SceneName>,
-        Res<Overlays>,
-    ),
-    (virtual_time, fixed_time): (Res<Time<Virtual>>, Res<Time<Fixed>>),
+    shown: Shown,
     mut buttons: Query<(&PanelButton, &mut BackgroundColor, &Children)>,
     mut texts: Query<&mut Text>,
     mut readouts: Query<(&Readout, Entity)>,
     sliders: Query<(Entity, &PanelSlider, &SliderValue)>,
 ) {
+    let Shown {
+        params,
+        integrator,
+        scene,
+        overlays,
+        virtual_time,
+        fixed_time,
+    } = shown;
     let paused = virtual_time.is_paused();
     for (button, mut background, children) in &mut buttons {
         let (lit, label) = match *button {

@@ -238,7 +238,6 @@ fn leave(world: &mut World) {
 }
 
 /// Checks the chapter's task, after the frame's steps, against what the steps did.
-#[allow(clippy::too_many_arguments)]
 fn check_task(
     mut learning: ResMut<Learning>,
     params: Res<SceneParams>,

@@ -10,9 +10,8 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
-use crate::game::camera::{CameraFrame, shown_area, viewport_rect, world_per_pixel};
+use crate::game::camera::{SceneView, shown_area, viewport_rect, world_per_pixel};
 use crate::game::ghosts::{Ghost, GhostKind, Ghosts};
-use crate::game::layout::SceneViewport;
 use crate::game::learn::Learning;
 use crate::game::learn::chapters::{CHAPTERS, Equation};
 use crate::game::learn::twin::CentreTwin;
@@ -208,13 +207,18 @@ const TORQUE_RADIUS: f32 = 22.0;
 /// the centre twin with the band's force at its centre.
 fn draw_learning(
     mut gizmos: Gizmos,
-    (learning, params, fixed_time): (Res<Learning>, Res<SceneParams>, Res<Time<Fixed>>),
+    learning: Res<Learning>,
+    (params, fixed_time): (Res<SceneParams>, Res<Time<Fixed>>),
     twin: Res<CentreTwin>,
     bodies: Query<(Entity, &RenderSnapshots, &MassProperties), With<RigidBox>>,
     bands: Query<&Band>,
-    window: Option<Single<&Window>>,
-    (frame, viewport): (Res<CameraFrame>, Res<SceneViewport>),
+    view: SceneView,
 ) {
+    let SceneView {
+        window,
+        viewport,
+        frame,
+    } = view;
     let Some(chapter) = learning.chapter.and_then(|index| CHAPTERS.get(index)) else {
         return;
     };
@@ -401,16 +405,13 @@ fn label_column(
 /// A ghost is drawn between its last two steps as the live box is; a diverged one is crossed out
 /// where it froze, with the step. The ghost of the live box's own integrator is not drawn (it lies
 /// under the box).
-#[allow(clippy::too_many_arguments)]
 fn draw_ghosts(
     mut commands: Commands,
     mut gizmos: Gizmos,
     fixed_time: Res<Time<Fixed>>,
     ghosts: Res<Ghosts>,
     integrator: Res<Integrator>,
-    frame: Res<CameraFrame>,
-    viewport: Res<SceneViewport>,
-    windows: Query<&Window, With<bevy::window::PrimaryWindow>>,
+    view: SceneView,
     mut labels: Query<(
         Entity,
         &GhostLabel,
@@ -420,6 +421,11 @@ fn draw_ghosts(
         &mut Visibility,
     )>,
 ) {
+    let SceneView {
+        window,
+        viewport,
+        frame,
+    } = view;
     let alpha = fixed_time.overstep_fraction_f64().clamp(0.0, 1.0);
     // Each ghost's name, in the list's order, written once a frame.
     let names: Vec<String> = ghosts
@@ -433,9 +439,8 @@ fn draw_ghosts(
     // However far the camera widens, the names keep their size on screen.
     let font_size = GHOST_LABEL_SIZE.max(GHOST_LABEL_PIXELS * world_per_pixel(&frame));
     let line = font_size * 1.2;
-    let shown = windows
-        .iter()
-        .next()
+    let shown = window
+        .as_deref()
         .and_then(|window| shown_area(&frame, &viewport, window))
         .unwrap_or(Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2()));
     let widest = names.iter().map(String::len).max().unwrap_or(0) as f32 * font_size * 0.6;

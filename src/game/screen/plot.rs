@@ -8,6 +8,7 @@
 //! leader line when moved away from it. The points are [`plot_points`], which a test holds
 //! to the ghosts' own figures.
 
+use bevy::ecs::system::SystemParam;
 use bevy::picking::Pickable;
 use bevy::prelude::*;
 use bevy::ui::UiGlobalTransform;
@@ -311,23 +312,53 @@ fn put(node: &mut Node, rect: Option<Rect>) {
     }
 }
 
-#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+/// What the plot plots: the ghosts' figures, the scene's step, the live integrator.
+#[derive(SystemParam)]
+struct Plotted<'w> {
+    overlays: Res<'w, Overlays>,
+    ghosts: Res<'w, Ghosts>,
+    params: Res<'w, SceneParams>,
+    integrator: Res<'w, Integrator>,
+}
+
+/// The plot's text nodes: the axes' texts, the ghosts' labels and the reference's note.
+#[derive(SystemParam)]
+#[allow(clippy::type_complexity)]
+struct PlotTexts<'w, 's> {
+    texts: Query<'w, 's, (&'static PlotText, &'static mut Node), Without<PlotLabel>>,
+    labels: Query<
+        'w,
+        's,
+        (&'static PlotLabel, &'static mut Text, &'static mut Node),
+        Without<PlotText>,
+    >,
+    notes: Query<
+        'w,
+        's,
+        (&'static mut Text, &'static mut Node),
+        (With<ReferenceNote>, Without<PlotLabel>, Without<PlotText>),
+    >,
+}
+
 fn draw_plot(
     mut gizmos: Gizmos<ChartGizmos>,
     window: Option<Single<&Window, With<PrimaryWindow>>>,
     ui_scale: Res<UiScale>,
-    overlays: Res<Overlays>,
-    ghosts: Res<Ghosts>,
-    params: Res<SceneParams>,
-    integrator: Res<Integrator>,
+    plotted: Plotted,
     canvases: Query<(&ComputedNode, &UiGlobalTransform), With<PlotCanvas>>,
-    mut texts: Query<(&PlotText, &mut Node), Without<PlotLabel>>,
-    mut labels: Query<(&PlotLabel, &mut Text, &mut Node), Without<PlotText>>,
-    mut notes: Query<
-        (&mut Text, &mut Node),
-        (With<ReferenceNote>, Without<PlotLabel>, Without<PlotText>),
-    >,
+    plot_texts: PlotTexts,
 ) {
+    let Plotted {
+        overlays,
+        ghosts,
+        params,
+        integrator,
+    } = plotted;
+    let PlotTexts {
+        mut texts,
+        mut labels,
+        mut notes,
+    } = plot_texts;
     // A folded card's canvas has no size.
     let canvas = canvases
         .iter()
