@@ -5,6 +5,7 @@
 mod common;
 
 use rubber_band_box::measure::peers::avian::Avian;
+use rubber_band_box::measure::peers::empty::Empty;
 use rubber_band_box::measure::peers::ours::Ours;
 use rubber_band_box::measure::peers::rapier::Rapier;
 use rubber_band_box::measure::peers::{Contender, PeerRun, unwrap_angle};
@@ -21,6 +22,23 @@ fn our_contender_steps_exactly_as_the_core() {
         core.advance().unwrap();
     }
     assert_eq!(app.state(), core.stepper.state);
+}
+
+/// The floor the plugin's cost is measured against goes through the same calls as ours: the
+/// scene's pulls put and take its band entity, and with no physics its box never moves.
+#[test]
+fn the_empty_app_holds_the_band_and_never_moves_the_box() {
+    use rubber_band_box::game::simulation::Band;
+    let scene = Scene::named("tutorial").unwrap();
+    let mut run = PeerRun::<Empty>::of(&scene, 100.0);
+    let bands = |run: &mut PeerRun<Empty>| {
+        let world = run.contender.app().world_mut();
+        world.query::<&Band>().iter(world).count()
+    };
+    assert_eq!(bands(&mut run), 1, "the tutorial pulls from its first step");
+    run.advance_by(250);
+    assert_eq!(bands(&mut run), 0, "released after 2 s");
+    assert_eq!(run.state(), scene.initial);
 }
 
 /// A box at rest with no band stays at rest, and a pulled one moves toward the anchor and

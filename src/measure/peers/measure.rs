@@ -10,9 +10,10 @@
 use std::time::{Duration, Instant};
 
 use super::avian::Avian;
+use super::empty::Empty;
 use super::ours::Ours;
 use super::rapier::Rapier;
-use super::{Contender, PeerRun, headless_app, start};
+use super::{Contender, PeerRun};
 use crate::measure::references::{StiffCase, WorkScene, work_reference, work_scenes};
 use crate::measure::timing::{Spread, median};
 use crate::physics::{BodyState, Scene};
@@ -244,20 +245,6 @@ pub fn stiffness(cases: &[StiffCase], quick: bool) -> Vec<PeerStiffPoint> {
         .collect()
 }
 
-/// Times the floor under every contender's tick: an `App` with no physics at all.
-///
-/// The `App` has the same plugins and clock as theirs and is timed as they are.
-fn empty_app_round_ns(rate: f64) -> f64 {
-    let mut app = headless_app(rate);
-    start(&mut app);
-    app.update();
-    let begin = Instant::now();
-    for _ in 0..TIMED_TICKS {
-        app.update();
-    }
-    begin.elapsed().as_nanos() as f64 / TIMED_TICKS as f64
-}
-
 /// Measures our plugin's own cost: the tutorial scene's tick against an empty `App`'s.
 ///
 /// The two are timed interleaved, in rounds. Returns the empty `App`'s median tick and the
@@ -271,12 +258,12 @@ pub fn tutorial_over_empty_app(rate: f64, quick: bool) -> (f64, Spread) {
     let timed = ((work.horizon * rate).round() as u64)
         .saturating_sub(1)
         .max(1);
+    // Both through the same call: a scripted run's step, state read and pull check.
     let tick = || round_ns::<Ours>(&work.scene, rate, timed);
+    let empty = || round_ns::<Empty>(&work.scene, rate, timed);
     tick();
-    empty_app_round_ns(rate);
-    let rounds: Vec<[f64; 2]> = (0..rounds(quick))
-        .map(|_| [empty_app_round_ns(rate), tick()])
-        .collect();
+    empty();
+    let rounds: Vec<[f64; 2]> = (0..rounds(quick)).map(|_| [empty(), tick()]).collect();
     (
         median(rounds.iter().map(|r| r[0]).collect()),
         Spread::of(rounds.iter().map(|r| r[1] / r[0]).collect()),

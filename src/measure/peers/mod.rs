@@ -5,6 +5,7 @@
 //! Compiled only with the `peers` feature: the game, the tests and CI never build these crates.
 
 pub mod avian;
+pub mod empty;
 pub mod measure;
 pub mod ours;
 pub mod rapier;
