@@ -191,17 +191,22 @@ impl Game {
         self.mouse(ButtonState::Pressed);
     }
 
+    /// Returns the scene's viewport on the window: the layout's, or without it the whole window.
+    pub fn viewport(&mut self) -> Rect {
+        let window = self.window;
+        let world = self.world();
+        let whole = Rect::from_corners(Vec2::ZERO, world.get::<Window>(window).unwrap().size());
+        world
+            .resource::<rubber_band_box::game::layout::SceneViewport>()
+            .0
+            .unwrap_or(whole)
+    }
+
     /// Returns where the camera's frame shows a world point on the window, as the pointer maps.
     pub fn window_point(&mut self, world: DVec2) -> Vec2 {
         use rubber_band_box::game::camera::CameraFrame;
-        let window = self.window;
-        let world_ = self.world();
-        let whole = Rect::from_corners(Vec2::ZERO, world_.get::<Window>(window).unwrap().size());
-        let viewport = world_
-            .resource::<rubber_band_box::game::layout::SceneViewport>()
-            .0
-            .unwrap_or(whole);
-        let frame = world_.resource::<CameraFrame>();
+        let viewport = self.viewport();
+        let frame = self.world().resource::<CameraFrame>();
         if frame.shown.is_none() && frame.stage == Default::default() {
             return world_to_screen(world);
         }
@@ -454,14 +459,8 @@ impl Game {
     /// Returns where the scene camera puts a world point on the window: its transform and its
     /// projection's scale, in the viewport Bevy's layout gave it.
     pub fn on_window(&mut self, world_point: Vec2) -> Vec2 {
-        let window = self.window;
+        let viewport = self.viewport();
         let world = self.world();
-        let whole = Rect::from_corners(Vec2::ZERO, world.get::<Window>(window).unwrap().size());
-        // Without the layout the scene fills the window.
-        let viewport = world
-            .resource::<rubber_band_box::game::layout::SceneViewport>()
-            .0
-            .unwrap_or(whole);
         let mut cameras = world.query_filtered::<(&Transform, &Projection), With<SceneCamera>>();
         let (transform, projection) = cameras.single(world).unwrap();
         let Projection::Orthographic(orthographic) = projection else {

@@ -4,8 +4,7 @@
 
 use bevy::prelude::*;
 
-use super::{Contender, headless_app, start};
-use crate::game::simulation::{Band, body_state};
+use super::{Contender, headless_app, place_band, start, state_of};
 use crate::physics::{BandEnds, BodyState, SceneParams};
 
 pub struct Empty {
@@ -32,26 +31,11 @@ impl Contender for Empty {
     }
 
     fn set_band(&mut self, ends: Option<BandEnds>) {
-        let world = self.app.world_mut();
-        if let Some(band) = self.band.take() {
-            world.despawn(band);
-        }
-        self.band = ends.map(|ends| {
-            world
-                .spawn(Band {
-                    body: self.body,
-                    ends,
-                })
-                .id()
-        });
+        place_band(self.app.world_mut(), self.body, &mut self.band, ends);
     }
 
     fn state(&mut self) -> BodyState {
-        let entity = self.app.world().entity(self.body);
-        body_state(
-            entity.get().expect("a body has a linear state"),
-            entity.get().expect("a body has an angular state"),
-        )
+        state_of(&self.app, self.body)
     }
 
     fn app(&mut self) -> &mut App {

@@ -16,7 +16,7 @@ use std::time::Duration;
 use bevy::prelude::*;
 use bevy::time::TimeUpdateStrategy;
 
-use crate::game::simulation::run_single_threaded;
+use crate::game::simulation::{Band, body_state, run_single_threaded};
 use crate::physics::scenes::{BandChange, PullSchedule};
 use crate::physics::{BandEnds, BodyState, MassProperties, Scene, SceneParams};
 
@@ -61,6 +61,30 @@ pub fn start(app: &mut App) {
     app.cleanup();
     app.update();
     run_single_threaded(app);
+}
+
+/// Returns the box's state as an `App` of ours holds it: its two state components.
+fn state_of(app: &App, body: Entity) -> BodyState {
+    let entity = app.world().entity(body);
+    body_state(
+        entity.get().expect("a body has a linear state"),
+        entity.get().expect("a body has an angular state"),
+    )
+}
+
+/// Puts the band `ends` on `body` (or takes it off), keeping one band entity in `band`.
+fn place_band(world: &mut World, body: Entity, band: &mut Option<Entity>, ends: Option<BandEnds>) {
+    match (*band, ends) {
+        (Some(entity), Some(ends)) => {
+            world.entity_mut(entity).insert(Band { body, ends });
+        }
+        (None, Some(ends)) => *band = Some(world.spawn(Band { body, ends }).id()),
+        (Some(entity), None) => {
+            world.despawn(entity);
+            *band = None;
+        }
+        (None, None) => {}
+    }
 }
 
 /// A scripted run of a scene on a contender.

@@ -3,8 +3,8 @@
 
 use bevy::prelude::*;
 
-use super::{Contender, headless_app, start};
-use crate::game::simulation::{Band, RigidBox, SimulationPlugin, body_state, rigid_box};
+use super::{Contender, headless_app, place_band, start, state_of};
+use crate::game::simulation::{RigidBox, SimulationPlugin, rigid_box};
 use crate::physics::{BandEnds, BodyState, SceneParams};
 
 pub struct Ours {
@@ -39,38 +39,11 @@ impl Contender for Ours {
     }
 
     fn set_band(&mut self, ends: Option<BandEnds>) {
-        let world = self.app.world_mut();
-        match (self.band, ends) {
-            (Some(band), Some(ends)) => {
-                world.entity_mut(band).insert(Band {
-                    body: self.body,
-                    ends,
-                });
-            }
-            (None, Some(ends)) => {
-                self.band = Some(
-                    world
-                        .spawn(Band {
-                            body: self.body,
-                            ends,
-                        })
-                        .id(),
-                );
-            }
-            (Some(band), None) => {
-                world.despawn(band);
-                self.band = None;
-            }
-            (None, None) => {}
-        }
+        place_band(self.app.world_mut(), self.body, &mut self.band, ends);
     }
 
     fn state(&mut self) -> BodyState {
-        let entity = self.app.world().entity(self.body);
-        body_state(
-            entity.get().expect("a body has a linear state"),
-            entity.get().expect("a body has an angular state"),
-        )
+        state_of(&self.app, self.body)
     }
 
     fn app(&mut self) -> &mut App {
