@@ -252,7 +252,7 @@ fn resizing_hiding_the_dock_and_framing_while_holding_keep_the_box_in_view() {
     // The dock hidden (H): the scene takes the window, the pointer now over it.
     game.tap_key(KeyCode::KeyH);
     run(&mut game, 150, "the dock hidden");
-    assert!(game.world().resource::<Overlays>().hud_hidden);
+    assert!(game.world().resource::<Overlays>().dock_hidden);
     game.tap_key(KeyCode::KeyH);
     run(&mut game, 150, "the dock shown");
     // The window resized under the held band, larger and then a phone's.

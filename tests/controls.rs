@@ -187,17 +187,17 @@ fn ghosts_plot_and_hud_toggle() {
     // The plot brings the ghosts; hiding it leaves them.
     let plotted = after(&mut game, KeyCode::KeyP);
     assert!(
-        plotted.plot && plotted.ghosts && !plotted.hud_hidden,
+        plotted.plot && plotted.ghosts && !plotted.dock_hidden,
         "{plotted:?}"
     );
     let unplotted = after(&mut game, KeyCode::KeyP);
     assert!(!unplotted.plot && unplotted.ghosts, "{unplotted:?}");
     let hidden = after(&mut game, KeyCode::KeyH);
     assert!(
-        hidden.hud_hidden && hidden.ghosts && !hidden.plot,
+        hidden.dock_hidden && hidden.ghosts && !hidden.plot,
         "{hidden:?}"
     );
-    assert!(!after(&mut game, KeyCode::KeyH).hud_hidden);
+    assert!(!after(&mut game, KeyCode::KeyH).dock_hidden);
 }
 
 /// The keys are listed once (`CONTROLS`): README's table, the help line and the title hint

@@ -138,10 +138,10 @@ fn at_six_sizes_nothing_meets_and_the_scene_is_the_largest_region() {
             );
         }
         // Hidden (H): the scene takes the whole window but its two lines.
-        game.world().resource_mut::<Overlays>().hud_hidden = true;
+        game.world().resource_mut::<Overlays>().dock_hidden = true;
         let hidden = check(&mut game, size, &format!("{size}, the dock hidden"));
         assert!(hidden > 0.85, "{size}: hidden, the scene has {hidden:.2}");
-        game.world().resource_mut::<Overlays>().hud_hidden = false;
+        game.world().resource_mut::<Overlays>().dock_hidden = false;
     }
 }
 

@@ -450,14 +450,14 @@ fn the_lit_buttons_say_what_is_on() {
     let mut expected = vec![
         PanelButton::Send(Action::Integrator(Integrator::Auto)),
         PanelButton::Send(Action::Scene(0)),
-        PanelButton::Send(Action::ToggleHud),
+        PanelButton::Send(Action::ToggleDock),
     ];
     expected.sort_by_key(|b| format!("{b:?}"));
     assert_eq!(on, expected, "auto, the tutorial and the HUD at the start");
 
     *game.world().resource_mut::<Integrator>() = Integrator::Rk4;
     game.world().resource_mut::<SceneName>().0 = "stiff".to_owned();
-    game.world().resource_mut::<Overlays>().hud_hidden = true;
+    game.world().resource_mut::<Overlays>().dock_hidden = true;
     game.world().resource_mut::<Overlays>().ghosts = true;
     game.update(1);
     let on = lit(&mut game);
@@ -471,7 +471,7 @@ fn the_lit_buttons_say_what_is_on() {
     for button in [
         PanelButton::Send(Action::Integrator(Integrator::Auto)),
         PanelButton::Send(Action::Scene(0)),
-        PanelButton::Send(Action::ToggleHud),
+        PanelButton::Send(Action::ToggleDock),
     ] {
         assert!(!on.contains(&button), "{button:?} not lit: {on:?}");
     }

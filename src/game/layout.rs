@@ -597,7 +597,7 @@ fn arrange(
         .map_or(WINDOW_SIZE.as_vec2(), Window::size);
     let shape = Shape::of(window);
     let scale = ui_scale_for(window);
-    let dock_hidden = overlays.hud_hidden;
+    let dock_hidden = overlays.dock_hidden;
     let any_open = Card::ALL
         .into_iter()
         .any(|card| cards.body_shows(card, shape, &overlays));

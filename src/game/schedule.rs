@@ -9,7 +9,7 @@
 //! 2. `FixedUpdate`, zero or more times, [`PhysicsSystems`]: a playback's recorded inputs,
 //!    the observers of the step's inputs (the recorder, the ghosts, learn mode's twin), the
 //!    step (accumulate,
-//!    integrate, publish), then the readers of the step's results (the recorder, the HUD's
+//!    integrate, settle), then the readers of the step's results (the recorder, the HUD's
 //!    history);
 //! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
 //!    interpolated between the last two steps, the end of a playback said, learn mode's task

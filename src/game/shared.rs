@@ -40,8 +40,8 @@ pub struct Overlays {
     pub ghosts: bool,
     /// The ghosts' speed against their error, live (`screen::plot`).
     pub plot: bool,
-    /// The dock of instruments shows unless hidden (H).
-    pub hud_hidden: bool,
+    /// The dock of cards shows unless hidden (H).
+    pub dock_hidden: bool,
     /// Learn mode's card shows (`learn`).
     pub learn: bool,
 }

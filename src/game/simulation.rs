@@ -1,8 +1,8 @@
 //! The physics plugin: the box's state as components, the band as an entity, and the fixed
 //! step as one system in the frame's `schedule::PhysicsSystems::Step`: the hand's work booked,
 //! forces and torques accumulated, the integration (and what damping took out booked), then
-//! the results published (render snapshots, the energy books settled, taps ended, the step
-//! counted). It owns the body, the energy books and the step statistics, and puts them back on
+//! the results settled (render snapshots, the energy books settled, the step counted).
+//! A tap's band is the pointer's to remove after its step. It owns the body, the energy books and the step statistics, and puts them back on
 //! [`ResetScene`].
 //!
 //! Headless, and usable alone (the benchmarks and the side-by-side with the peers run it
@@ -353,14 +353,14 @@ struct StepRecords<'w> {
     count: ResMut<'w, StepCount>,
 }
 
-/// Takes the fixed step in three phases: [`accumulate`], [`integrate`], [`publish`].
+/// Takes the fixed step in three phases: [`accumulate`], [`integrate`], [`settle`].
 ///
 /// It is one system because each system a step costs Bevy about as much again as the box's physics
 /// (docs/peers.md).
 fn step(settings: StepSettings, bands: Query<&Band>, mut bodies: Moving, mut records: StepRecords) {
     accumulate(&settings.params, &bands, &mut bodies, &mut records.books);
     integrate(&settings, &mut bodies, &mut records);
-    publish(&settings.params, &bands, &bodies, &mut records);
+    settle(&settings.params, &bands, &bodies, &mut records);
 }
 
 /// Books the hand's work since the last step, then puts the band's force on each body.
@@ -443,7 +443,7 @@ fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRec
 }
 
 /// Settles the energy books (the energies now, the ledger's residual) and counts the step.
-fn publish(params: &SceneParams, bands: &Query<&Band>, bodies: &Moving, records: &mut StepRecords) {
+fn settle(params: &SceneParams, bands: &Query<&Band>, bodies: &Moving, records: &mut StepRecords) {
     let books = &mut *records.books;
     let energies = mechanical_energies(params, &bodies.as_readonly(), bands);
     books.energies = energies;

@@ -102,7 +102,7 @@ pub enum Action {
     ToggleTrail,
     ToggleGhosts,
     TogglePlot,
-    ToggleHud,
+    ToggleDock,
     /// The camera back to the tutorial's 640 x 480 frame at once.
     HomeView,
     Save,
@@ -274,7 +274,7 @@ pub const CONTROLS: [Control; 19] = [
     },
     Control {
         keys: &[HUD],
-        actions: &[Action::ToggleHud],
+        actions: &[Action::ToggleDock],
         label: "H",
         name: "dock",
         effect: "hide / show the dock of instruments (the scene takes the window)",
@@ -420,7 +420,7 @@ fn apply_actions(
                 // Its points are the ghosts.
                 c.overlays.ghosts |= c.overlays.plot;
             }
-            Action::ToggleHud => c.overlays.hud_hidden = !c.overlays.hud_hidden,
+            Action::ToggleDock => c.overlays.dock_hidden = !c.overlays.dock_hidden,
             // The view puts its camera back ([`HomeView`]).
             Action::HomeView => commands.trigger(HomeView),
             // The recorder saves and says where ([`crate::game::replays::recording`]).

@@ -75,7 +75,7 @@ pub struct SliderEnd(pub Parameter);
 
 /// A text showing a value the panel controls.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
-enum Readout {
+enum ValueText {
     Parameter(Parameter),
     StepRate,
     TimeScale,
@@ -232,7 +232,7 @@ fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
             &mut commands,
             status,
             "instruments",
-            PanelButton::Send(Action::ToggleHud),
+            PanelButton::Send(Action::ToggleDock),
         );
     }
     let Some((card, _)) = slots
@@ -285,7 +285,7 @@ fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
         spawn_slider(&mut commands, row, parameter);
         commands.spawn((
             text(""),
-            Readout::Parameter(parameter),
+            ValueText::Parameter(parameter),
             Node {
                 margin: UiRect::left(px(8)),
                 ..default()
@@ -296,11 +296,11 @@ fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     for (title, readout, slower, faster) in [
         (
             "rate",
-            Readout::StepRate,
+            ValueText::StepRate,
             Action::FewerSteps,
             Action::MoreSteps,
         ),
-        ("time", Readout::TimeScale, Action::Slower, Action::Faster),
+        ("time", ValueText::TimeScale, Action::Slower, Action::Faster),
     ] {
         let row = spawn_row(&mut commands, body, title);
         spawn_button(&mut commands, row, "/2", PanelButton::Send(slower));
@@ -502,7 +502,7 @@ fn show_state(
     shown: Shown,
     mut buttons: Query<(&PanelButton, &mut BackgroundColor, &Children)>,
     mut texts: Query<&mut Text>,
-    mut readouts: Query<(&Readout, Entity)>,
+    mut readouts: Query<(&ValueText, Entity)>,
     sliders: Query<(Entity, &PanelSlider, &SliderValue)>,
 ) {
     let Shown {
@@ -528,7 +528,7 @@ fn show_state(
             PanelButton::Send(Action::TogglePlot) => (overlays.plot, None),
             PanelButton::Send(Action::ToggleVectors) => (overlays.vectors, None),
             PanelButton::Send(Action::ToggleTrail) => (overlays.trail, None),
-            PanelButton::Send(Action::ToggleHud) => (!overlays.hud_hidden, None),
+            PanelButton::Send(Action::ToggleDock) => (!overlays.dock_hidden, None),
             PanelButton::Send(Action::Learn) => (overlays.learn, None),
             PanelButton::Send(_) => (false, None),
         };
@@ -543,9 +543,9 @@ fn show_state(
     }
     for (readout, entity) in &mut readouts {
         let shown = match readout {
-            Readout::Parameter(parameter) => parameter_readout(*parameter, &params),
-            Readout::StepRate => format!("{:.0} Hz", 1.0 / fixed_time.timestep().as_secs_f64()),
-            Readout::TimeScale => format!("x{}", virtual_time.relative_speed_f64()),
+            ValueText::Parameter(parameter) => parameter_readout(*parameter, &params),
+            ValueText::StepRate => format!("{:.0} Hz", 1.0 / fixed_time.timestep().as_secs_f64()),
+            ValueText::TimeScale => format!("x{}", virtual_time.relative_speed_f64()),
         };
         if let Ok(mut text) = texts.get_mut(entity)
             && text.0 != shown

@@ -167,7 +167,7 @@ fn go_to(world: &mut World, index: usize) {
     overlays.learn = true;
     // The arrows of force and velocity are the chapters' pictures.
     overlays.vectors = true;
-    overlays.hud_hidden = false;
+    overlays.dock_hidden = false;
     world.resource_mut::<Cards>().set(Card::Learn, true);
     world.resource_mut::<CentreTwin>().wanted = chapter.centre_twin;
     let [left, bottom, right, top] = chapter.frame;

@@ -119,7 +119,7 @@ fn open_link(world: &mut World, link: Link) -> Vec<String> {
     set(&mut overlays.plot, shown.plot);
     set(&mut overlays.vectors, shown.vectors);
     set(&mut overlays.trail, shown.trail);
-    overlays.hud_hidden = shown.dock.map_or(overlays.hud_hidden, |on| !on);
+    overlays.dock_hidden = shown.dock.map_or(overlays.dock_hidden, |on| !on);
     // The plot's points are the ghosts.
     overlays.ghosts |= overlays.plot;
     problems
@@ -147,7 +147,7 @@ pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
             plot: on(overlays.plot),
             vectors: on(overlays.vectors),
             trail: on(overlays.trail),
-            dock: overlays.hud_hidden.then_some(false),
+            dock: overlays.dock_hidden.then_some(false),
         },
         ..default()
     };
