@@ -155,7 +155,8 @@ pub const MAX_WIDEN: f32 = 4.0;
 impl CameraFrame {
     /// Returns the home view in a viewport of `size`.
     ///
-    /// It fits the tutorial's screen, then applies the player's zoom and pan.
+    /// It fits the stage (the tutorial's screen unless a mode set a closer one), then applies
+    /// the player's zoom and pan.
     pub fn home(&self, size: Vec2) -> View {
         self.fitted(self.stage.close.unwrap_or(SCREEN), size)
     }

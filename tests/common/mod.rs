@@ -207,9 +207,6 @@ impl Game {
         use rubber_band_box::game::camera::CameraFrame;
         let viewport = self.viewport();
         let frame = self.world().resource::<CameraFrame>();
-        if frame.shown.is_none() && frame.stage == Default::default() {
-            return world_to_screen(world);
-        }
         frame
             .view(viewport.size())
             .to_window(world.as_vec2(), viewport)

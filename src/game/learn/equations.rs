@@ -83,13 +83,6 @@ impl Quantities {
         }
     }
 
-    /// Returns the twin's damping force −b v.
-    fn twin_damping(&self) -> DVec2 {
-        self.twin.map_or(DVec2::ZERO, |state| {
-            -self.linear_damping * state.linear.velocity
-        })
-    }
-
     /// Returns the arm r from the centre to the band's corner (zero without a band).
     fn arm(&self) -> DVec2 {
         self.band.map_or(DVec2::ZERO, |(corner, _)| {
@@ -217,8 +210,9 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
                 format!(
                     "twin: ΣF = F_band + F_damp = {} + {}, a = ΣF / m = {}",
                     v(q.band_force()),
-                    v(q.twin_damping()),
-                    v((q.band_force() + q.twin_damping()) / q.mass)
+                    // Its velocity is the box's, so its damping is too.
+                    v(q.damping_force()),
+                    v((q.band_force() + q.damping_force()) / q.mass)
                 ),
                 format!(
                     "twin: r = 0, τ = 0 × F = 0, θ = {} rad",

@@ -169,6 +169,11 @@ fn force_arrow_length(force: f64) -> f64 {
     (30.0 * (1.0 + force / 10.0).log10()).min(300.0)
 }
 
+/// Returns the arrow drawn for `force`: along it, [`force_arrow_length`] long.
+fn force_arrow(force: DVec2) -> DVec2 {
+    force.normalize_or_zero() * force_arrow_length(force.length())
+}
+
 /// Draws the velocity at the centre and the band's force at its corner.
 fn draw_vectors(
     mut gizmos: Gizmos,
@@ -189,8 +194,7 @@ fn draw_vectors(
         };
         let state = interpolated_state(snapshots, &fixed_time);
         let corner = band.ends.attachment(&state);
-        let force = band.ends.wrench(&state, params.stiffness).force;
-        let arrow = force.normalize_or_zero() * force_arrow_length(force.length());
+        let arrow = force_arrow(band.ends.wrench(&state, params.stiffness).force);
         gizmos.arrow_2d(corner.as_vec2(), (corner + arrow).as_vec2(), FORCE_COLOUR);
     }
 }
@@ -224,30 +228,21 @@ fn draw_learning(
     };
     let shows = |equation: Equation| chapter.equations.contains(&equation);
     for (body, snapshots, mass) in &bodies {
-        let Some(twin) = &twin.body else {
-            break;
-        };
-        let state = twin.beside(&interpolated_state(snapshots, &fixed_time));
-        let centre = state.linear.position.as_vec2();
-        let pose = Isometry2d::new(centre, Rot2::radians(state.angular.orientation as f32));
-        gizmos.rect_2d(pose, mass.size().as_vec2(), colour::TWIN);
-        gizmos.cross_2d(pose, 4.0, colour::TWIN);
-        // The box's band force, the same arrow as at the box's corner, at the twin's centre.
-        if let Some(band) = bands.iter().find(|band| band.body == body) {
-            let at_box = interpolated_state(snapshots, &fixed_time);
-            let force = band.ends.wrench(&at_box, params.stiffness).force;
-            let arrow = force.normalize_or_zero() * force_arrow_length(force.length());
-            gizmos.arrow_2d(
-                centre,
-                (state.linear.position + arrow).as_vec2(),
-                FORCE_COLOUR,
-            );
-        }
-    }
-    for (body, snapshots, mass) in &bodies {
         let state = interpolated_state(snapshots, &fixed_time);
         let centre = state.linear.position.as_vec2();
         let band = bands.iter().find(|band| band.body == body);
+        if let Some(twin) = &twin.body {
+            let beside = twin.beside(&state).linear.position;
+            let angle = Rot2::radians(twin.orientation as f32);
+            let pose = Isometry2d::new(beside.as_vec2(), angle);
+            gizmos.rect_2d(pose, mass.size().as_vec2(), colour::TWIN);
+            gizmos.cross_2d(pose, 4.0, colour::TWIN);
+            // The box's band force, the same arrow as at the box's corner, at the twin's centre.
+            if let Some(band) = band {
+                let arrow = force_arrow(band.ends.wrench(&state, params.stiffness).force);
+                gizmos.arrow_2d(beside.as_vec2(), (beside + arrow).as_vec2(), FORCE_COLOUR);
+            }
+        }
         if let Some(band) = band {
             let corner = band.ends.attachment(&state).as_vec2();
             if shows(Equation::Arm) || shows(Equation::Torque) {
