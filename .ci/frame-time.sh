@@ -5,12 +5,8 @@
 # the median after the first 10 s is printed. Needs xvfb, mesa-vulkan-drivers and xdotool.
 # Run: bash .ci/frame-time.sh OLD_BINARY NEW_BINARY (docs/screen.md)
 set -euo pipefail
-display=:98
-Xvfb "$display" -screen 0 1400x1000x24 >/dev/null 2>&1 &
-xvfb=$!
-trap 'kill "$xvfb" 2>/dev/null || true' EXIT
-export DISPLAY="$display"
-sleep 2
+source "$(dirname "$0")/xvfb.sh"
+start_xvfb :98
 measure() {
     local binary=$1 csv
     csv=$(mktemp --suffix .csv)

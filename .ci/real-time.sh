@@ -15,20 +15,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/rubber-band-box/target}"
 
-as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
-if ! command -v Xvfb >/dev/null || ! command -v xdotool >/dev/null; then
-    as_root apt-get update -q
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q xvfb mesa-vulkan-drivers xdotool
-fi
+source .ci/xvfb.sh
+install_missing Xvfb:xvfb xdotool:xdotool
 cargo build --quiet --bin rubber_band_box
 game="$CARGO_TARGET_DIR/debug/rubber_band_box"
 
-display=:96
-Xvfb "$display" -screen 0 1400x1000x24 >/dev/null 2>&1 &
-xvfb=$!
-trap 'kill "$xvfb" 2>/dev/null || true' EXIT
-export DISPLAY="$display"
-sleep 2
+start_xvfb :96
 
 native() {
     local mode=$1 link=$2 csv titles

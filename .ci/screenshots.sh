@@ -11,22 +11,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/rubber-band-box/target}"
 
-as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
-if ! command -v Xvfb >/dev/null || ! command -v xdotool >/dev/null || ! command -v import >/dev/null; then
-    as_root apt-get update -q
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q \
-        xvfb mesa-vulkan-drivers xdotool imagemagick
-fi
+source .ci/xvfb.sh
+install_missing Xvfb:xvfb xdotool:xdotool import:imagemagick
 
 cargo build --quiet --bin rubber_band_box
 game="$CARGO_TARGET_DIR/debug/rubber_band_box"
 
-display=:97
-Xvfb "$display" -screen 0 1400x1000x24 >/dev/null 2>&1 &
-xvfb=$!
-trap 'kill "$xvfb" 2>/dev/null || true' EXIT
-export DISPLAY="$display"
-sleep 2
+start_xvfb :97
 
 # Plays the game at a window size, opens the energy card where a wide window shows its title
 # (the cards start folded), starts the tutorial's scripted pull (1) with the plot (P), and
