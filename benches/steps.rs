@@ -165,7 +165,51 @@ fn app_tick(c: &mut Criterion) {
             b.iter(|| scene.update())
         });
     }
+    // The plugin's machinery without its physics, a part at a time: what an empty `App` pays
+    // for one system in the fixed schedule, and for the settings check before the fixed loop.
+    for (name, part) in [
+        ("one_empty_fixed_system", Machinery::FixedSystem),
+        ("settings_check", Machinery::SettingsCheck),
+    ] {
+        let mut app = machinery_app(part);
+        group.bench_function(format!("{name}/single_threaded"), |b| {
+            b.iter(|| app.update())
+        });
+    }
     group.finish();
+}
+
+/// A part of the plugin's machinery, alone in an otherwise empty `App`.
+#[derive(Clone, Copy)]
+enum Machinery {
+    /// A system in `FixedUpdate` that does nothing.
+    FixedSystem,
+    /// A system before the fixed loop that runs only when `SceneParams` changes (never here).
+    SettingsCheck,
+}
+
+fn machinery_app(part: Machinery) -> App {
+    fn nothing() {}
+    let mut app = App::new();
+    app.add_plugins(MinimalPlugins)
+        .insert_resource(Time::<Fixed>::from_hz(100.0))
+        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
+            10,
+        )))
+        .init_resource::<SceneParams>();
+    match part {
+        Machinery::FixedSystem => app.add_systems(FixedUpdate, nothing),
+        Machinery::SettingsCheck => app.add_systems(
+            RunFixedMainLoop,
+            nothing.run_if(resource_changed::<SceneParams>),
+        ),
+    };
+    app.finish();
+    app.cleanup();
+    app.update();
+    run_single_threaded(&mut app);
+    app.update();
+    app
 }
 
 fn many_boxes(c: &mut Criterion) {
