@@ -520,8 +520,11 @@ fn the_clock_and_the_live_ghost_come_from_the_game() {
     let offered = |game: &mut Game| {
         let world = game.world();
         let overlays = *world.resource::<rubber_band_box::game::shared::Overlays>();
+        let mode = *world
+            .resource::<State<rubber_band_box::game::shared::Mode>>()
+            .get();
         (
-            Card::Ghosts.offered(&overlays),
+            Card::Ghosts.offered(&overlays, mode),
             world.resource::<Cards>().is_open(Card::Ghosts),
         )
     };

@@ -14,8 +14,8 @@ use rubber_band_box::game::input::controls::Parameter;
 use rubber_band_box::game::input::controls::{LEARN, PAUSE, SINGLE_STEP};
 use rubber_band_box::game::learn::chapters::{CHAPTERS, Task};
 use rubber_band_box::game::learn::twin::{CentreTwin, TWIN_OFFSET};
-use rubber_band_box::game::learn::{LINES, Learn, LearnText, Learning};
-use rubber_band_box::game::shared::{Overlays, SceneName, readable};
+use rubber_band_box::game::learn::{LINES, Learn, LearnText, Learning, chapter_shown};
+use rubber_band_box::game::shared::{Mode, Overlays, SceneName, readable};
 use rubber_band_box::game::simulation::{Band, EnergyBooks, RigidBox};
 use rubber_band_box::physics::{
     AngularState, BandEnds, BodyState, Integrator, LinearState, MassProperties, SceneParams,
@@ -42,7 +42,7 @@ fn card(game: &mut Game, which: LearnText) -> String {
 fn chapter(game: &mut Game, index: usize) {
     game.world().trigger(Learn::Chapter(index));
     game.update(1);
-    assert_eq!(game.world().resource::<Learning>().chapter, Some(index));
+    assert_eq!(chapter_shown(game.world()), Some(index));
 }
 
 /// A number as the card prints it (the HUD's format, a true minus sign).
@@ -233,7 +233,7 @@ fn every_chapters_values_are_the_components_recomputed() {
     game.update(2);
     game.tap_key(LEARN);
     game.update(1);
-    assert_eq!(game.world().resource::<Learning>().chapter, Some(0));
+    assert_eq!(chapter_shown(game.world()), Some(0));
     for (index, shown) in CHAPTERS.iter().enumerate() {
         chapter(&mut game, index);
         let title = card(&mut game, LearnText::Title);
@@ -408,11 +408,11 @@ fn leaving_learn_mode_puts_the_game_back_as_it_was() {
         game.world().trigger(Learn::Next);
         game.update(20);
     }
-    assert!(game.world().resource::<Overlays>().learn);
+    assert_eq!(*game.world().resource::<State<Mode>>().get(), Mode::Learn);
     game.tap_key(LEARN);
     game.update(1);
     let world = game.world();
-    assert_eq!(world.resource::<Learning>().chapter, None);
+    assert_eq!(chapter_shown(world), None);
     let after = (
         *world.resource::<SceneParams>(),
         *world.resource::<Integrator>(),
@@ -425,6 +425,53 @@ fn leaving_learn_mode_puts_the_game_back_as_it_was() {
     // The box where it was, moving as it was (one step on, as the frame steps it).
     let (linear, _) = game.state();
     assert!(linear.position.distance(state.0.position) < 1.0 + 0.01 * state.0.velocity.length());
+}
+
+/// Learn mode is the state `Mode::Learn`: whatever sets it (here the state itself, as a plugin
+/// of the game might) enters at the chapter asked and saves the game, and whatever leaves it
+/// puts the game back. Save and restore live on the state's enter and exit, not in the control.
+#[test]
+fn the_mode_state_saves_on_enter_and_restores_on_exit_whoever_sets_it() {
+    let mut game = Game::stepping();
+    game.update(2);
+    game.tap_key(rubber_band_box::game::input::controls::STIFFER);
+    game.tap_key(KeyCode::KeyP);
+    game.update(2);
+    let settings = |game: &mut Game| {
+        let world = game.world();
+        (
+            *world.resource::<SceneParams>(),
+            *world.resource::<Integrator>(),
+            *world.resource::<Overlays>(),
+            world.resource::<SceneName>().clone(),
+        )
+    };
+    let before = settings(&mut game);
+    game.world().resource_mut::<Learning>().chapter = 2;
+    game.world()
+        .resource_mut::<NextState<Mode>>()
+        .set(Mode::Learn);
+    game.update(2);
+    assert_eq!(chapter_shown(game.world()), Some(2));
+    assert_eq!(game.world().resource::<SceneName>().0, CHAPTERS[2].scene);
+    assert_ne!(
+        settings(&mut game),
+        before,
+        "the chapter's scene is in place"
+    );
+    game.world()
+        .resource_mut::<NextState<Mode>>()
+        .set(Mode::Play);
+    game.update(1);
+    assert_eq!(chapter_shown(game.world()), None);
+    assert_eq!(settings(&mut game), before);
+    // The control enters at the first chapter and leaves the same way.
+    game.tap_key(LEARN);
+    game.update(1);
+    assert_eq!(chapter_shown(game.world()), Some(0));
+    game.tap_key(LEARN);
+    game.update(1);
+    assert_eq!(settings(&mut game), before);
 }
 
 // --- Each chapter's claims, as physics: one test a claim, on the chapter's own scene. ---

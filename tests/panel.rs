@@ -135,14 +135,16 @@ fn a_click_or_a_tap_on_a_button_does_what_its_key_does() {
 /// between chapters, `leave` ends it and folds the card away.
 #[test]
 fn the_learn_buttons_walk_the_chapters() {
-    use rubber_band_box::game::learn::Learning;
+    use rubber_band_box::game::learn::chapter_shown;
+    use rubber_band_box::game::shared::Mode;
     let mut game = Game::stepping();
-    let chapter = |game: &mut Game| game.world().resource::<Learning>().chapter;
+    let chapter = |game: &mut Game| chapter_shown(game.world());
+    let mode = |game: &mut Game| *game.world().resource::<State<Mode>>().get();
     let learn = button(&mut game, PanelButton::Send(Action::Learn));
     click(&mut game, learn, PointerId::Mouse);
     assert_eq!(chapter(&mut game), Some(0));
     assert!(open(&mut game, Card::Learn));
-    assert!(game.world().resource::<Overlays>().learn);
+    assert_eq!(mode(&mut game), Mode::Learn);
     let next = button(&mut game, PanelButton::Send(Action::NextChapter));
     for wanted in [1, 2, 2] {
         if wanted == 2 && chapter(&mut game) == Some(2) {
@@ -155,7 +157,7 @@ fn the_learn_buttons_walk_the_chapters() {
     }
     click(&mut game, learn, PointerId::Mouse);
     assert_eq!(chapter(&mut game), None);
-    assert!(!game.world().resource::<Overlays>().learn);
+    assert_eq!(mode(&mut game), Mode::Play);
 }
 
 /// Every action a key sends has a button, but for the digits' scenes (each has one) and the

@@ -21,7 +21,7 @@ use bevy::ui_widgets::{
 use bevy::window::PrimaryWindow;
 
 use crate::game::schedule::{AfterBevySystems, ScreenSystems};
-use crate::game::shared::{Overlays, window_rect};
+use crate::game::shared::{Mode, Overlays, window_rect};
 use crate::game::theme::{self, colour, size, space};
 
 pub struct LayoutPlugin;
@@ -214,10 +214,11 @@ impl Card {
 
     /// Tells whether the card is in the dock now.
     ///
-    /// The ghosts' table and the plot are there only while their overlay is on.
-    pub fn offered(self, overlays: &Overlays) -> bool {
+    /// The ghosts' table and the plot are there only while their overlay is on, the *Learn*
+    /// card only in learn mode.
+    pub fn offered(self, overlays: &Overlays, mode: Mode) -> bool {
         match self {
-            Card::Learn => overlays.learn,
+            Card::Learn => mode == Mode::Learn,
             Card::Ghosts => overlays.ghosts,
             Card::Plot => overlays.plot,
             _ => true,
@@ -255,17 +256,17 @@ impl Cards {
     }
 
     /// Returns the card a tall window shows: the first open one the dock offers.
-    fn shown_alone(&self, overlays: &Overlays) -> Option<Card> {
+    fn shown_alone(&self, overlays: &Overlays, mode: Mode) -> Option<Card> {
         Card::ALL
             .into_iter()
-            .find(|&card| self.is_open(card) && card.offered(overlays))
+            .find(|&card| self.is_open(card) && card.offered(overlays, mode))
     }
 
     /// Tells whether the card's body shows.
-    fn body_shows(&self, card: Card, shape: Shape, overlays: &Overlays) -> bool {
+    fn body_shows(&self, card: Card, shape: Shape, overlays: &Overlays, mode: Mode) -> bool {
         match shape {
-            Shape::Wide => self.is_open(card) && card.offered(overlays),
-            Shape::Tall => self.shown_alone(overlays) == Some(card),
+            Shape::Wide => self.is_open(card) && card.offered(overlays, mode),
+            Shape::Tall => self.shown_alone(overlays, mode) == Some(card),
         }
     }
 }
@@ -581,6 +582,7 @@ fn arrange(
     windows: Query<&Window, With<PrimaryWindow>>,
     cards: Res<Cards>,
     overlays: Res<Overlays>,
+    mode: Res<State<Mode>>,
     mut nodes: ParamSet<(
         Query<&mut Node, With<Regions>>,
         Query<&mut Node, With<Dock>>,
@@ -596,11 +598,12 @@ fn arrange(
         .next()
         .map_or(WINDOW_SIZE.as_vec2(), Window::size);
     let shape = Shape::of(window);
+    let mode = *mode.get();
     let scale = ui_scale_for(window);
     let dock_hidden = overlays.dock_hidden;
     let any_open = Card::ALL
         .into_iter()
-        .any(|card| cards.body_shows(card, shape, &overlays));
+        .any(|card| cards.body_shows(card, shape, &overlays, mode));
     let set = |node: &mut Mut<Node>, wanted: &dyn Fn(&mut Node)| {
         let mut next = (**node).clone();
         wanted(&mut next);
@@ -651,15 +654,15 @@ fn arrange(
         });
     }
     for (CardFrame(card), mut node) in &mut nodes.p3() {
-        let shown = card.offered(&overlays)
-            && (shape == Shape::Wide || cards.body_shows(*card, shape, &overlays));
+        let shown = card.offered(&overlays, mode)
+            && (shape == Shape::Wide || cards.body_shows(*card, shape, &overlays, mode));
         set(&mut node, &|n| {
             n.display = if shown { Display::Flex } else { Display::None };
         });
     }
     for (slot, mut node) in &mut nodes.p4() {
         if let Slot::Card(card) = slot {
-            let shows = cards.body_shows(*card, shape, &overlays);
+            let shows = cards.body_shows(*card, shape, &overlays, mode);
             set(&mut node, &|n| {
                 n.display = if shows { Display::Flex } else { Display::None };
             });
@@ -668,11 +671,11 @@ fn arrange(
     for (CardButton(card), parent, mut background, mut node) in &mut nodes.p5() {
         let in_tabs = tabs.contains(parent.parent());
         // A tall window's card shows under its tab, without its own title.
-        let shown = card.offered(&overlays) && (in_tabs || shape == Shape::Wide);
+        let shown = card.offered(&overlays, mode) && (in_tabs || shape == Shape::Wide);
         set(&mut node, &|n| {
             n.display = if shown { Display::Flex } else { Display::None };
         });
-        let lit = cards.body_shows(*card, shape, &overlays);
+        let lit = cards.body_shows(*card, shape, &overlays, mode);
         background.set_if_neq(BackgroundColor(if lit {
             colour::LIT
         } else {

@@ -5,7 +5,8 @@
 //! A frame, in order:
 //! 1. `RunFixedMainLoop`, before the fixed loop, [`GameSystems`] in this order, so that all
 //!    of it acts on the very next step: the pointer read, the input acted on, the controls
-//!    applied, the settings' consequences derived;
+//!    applied, the settings' consequences derived (a learn control runs Bevy's
+//!    `StateTransition` at once, so learn mode's `OnEnter` and `OnExit` act there too);
 //! 2. `FixedUpdate`, zero or more times, [`PhysicsSystems`]: a playback's recorded inputs,
 //!    the observers of the step's inputs (the recorder, the ghosts, learn mode's twin), the
 //!    step (accumulate,

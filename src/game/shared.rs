@@ -1,20 +1,39 @@
 //! The resources several plugins of the game read, each initialised once, here
-//! ([`SharedPlugin`], added first by the game): the scene's name, the status line and what
-//! shows. A leaf: it imports no plugin, so none of its readers imports another for them.
+//! ([`SharedPlugin`], added first by the game): the scene's name, the status line, what
+//! shows and the game's [`Mode`]. A leaf: it imports no plugin, so none of its readers
+//! imports another for them.
 
 use bevy::prelude::*;
+use bevy::state::app::StatesPlugin;
 
-/// Initialises the shared resources.
+/// Initialises the shared resources and the game's mode.
 ///
 /// A replay given to `play` may have put `SceneName` in place already: it is kept.
 pub struct SharedPlugin;
 
 impl Plugin for SharedPlugin {
     fn build(&self, app: &mut App) {
+        // `DefaultPlugins` bring it with the state feature; the headless game adds it.
+        if !app.is_plugin_added::<StatesPlugin>() {
+            app.add_plugins(StatesPlugin);
+        }
         app.init_resource::<SceneName>()
             .init_resource::<StatusMessage>()
-            .init_resource::<Overlays>();
+            .init_resource::<Overlays>()
+            .init_state::<Mode>();
     }
+}
+
+/// What the game is doing: played freely, or walking the tutorial's chapters.
+///
+/// Learn mode (`learn`) saves the game as it enters and puts it back as it leaves, on this
+/// state's `OnEnter` and `OnExit`; everything else asks `in_state(Mode::Learn)`.
+#[derive(States, Debug, Default, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Mode {
+    #[default]
+    Play,
+    /// The tutorial's chapters, one at a time, in the dock's *Learn* card.
+    Learn,
 }
 
 /// The scene the game plays, which a recording's header names.
@@ -42,8 +61,6 @@ pub struct Overlays {
     pub plot: bool,
     /// The dock of cards shows unless hidden (H).
     pub dock_hidden: bool,
-    /// Learn mode's card shows (`learn`).
-    pub learn: bool,
 }
 
 /// The latest thing the game has to tell the player.

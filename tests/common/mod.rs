@@ -143,6 +143,14 @@ impl Game {
                 });
             });
         }
+        // Bevy's state transitions run each state's exclusive enter and exit systems unordered
+        // among themselves (`StateTransition`: Bevy's, and only learn mode's `Mode` is ours).
+        app.edit_schedule(StateTransition, |schedule| {
+            schedule.set_build_settings(ScheduleBuildSettings {
+                hierarchy_detection: LogLevel::Error,
+                ..default()
+            });
+        });
         app.finish();
         app.cleanup();
         // The first update only starts the clock: it runs Startup and no fixed step.

@@ -20,7 +20,9 @@ use crate::game::learn::ChapterButtons;
 #[cfg(target_arch = "wasm32")]
 use crate::game::schedule::AfterBevySystems;
 use crate::game::schedule::{GameSystems, ScreenSystems};
-use crate::game::shared::{Overlays, SceneName, linear_damping_readout, readable, window_rect};
+use crate::game::shared::{
+    Mode, Overlays, SceneName, linear_damping_readout, readable, window_rect,
+};
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{
     ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, SIZE_RANGE,
@@ -485,13 +487,14 @@ fn move_slider(
     }
 }
 
-/// What the panel shows: the settings, the overlays and the clocks.
+/// What the panel shows: the settings, the overlays, the mode and the clocks.
 #[derive(SystemParam)]
 struct Shown<'w> {
     params: Res<'w, SceneParams>,
     integrator: Res<'w, Integrator>,
     scene: Res<'w, SceneName>,
     overlays: Res<'w, Overlays>,
+    mode: Res<'w, State<Mode>>,
     virtual_time: Res<'w, Time<Virtual>>,
     fixed_time: Res<'w, Time<Fixed>>,
 }
@@ -510,6 +513,7 @@ fn show_state(
         integrator,
         scene,
         overlays,
+        mode,
         virtual_time,
         fixed_time,
     } = shown;
@@ -529,7 +533,7 @@ fn show_state(
             PanelButton::Send(Action::ToggleVectors) => (overlays.vectors, None),
             PanelButton::Send(Action::ToggleTrail) => (overlays.trail, None),
             PanelButton::Send(Action::ToggleDock) => (!overlays.dock_hidden, None),
-            PanelButton::Send(Action::Learn) => (overlays.learn, None),
+            PanelButton::Send(Action::Learn) => (*mode.get() == Mode::Learn, None),
             PanelButton::Send(_) => (false, None),
         };
         background.set_if_neq(BackgroundColor(if lit { LIT } else { BUTTON }));

@@ -1,8 +1,9 @@
 //! Learn mode (`L`, the panel's `learn`): the tutorial's chapters ([`chapters::CHAPTERS`]),
 //! each on a scene of the core's table, its equations written with this frame's numbers
-//! ([`equations`]) in the dock's *Learn* card, and a task the game checks. Leaving puts the
-//! game back as it was when the mode was entered: the scene, the settings, the overlays, the
-//! clock and the box.
+//! ([`equations`]) in the dock's *Learn* card, and a task the game checks. The mode is the
+//! state [`Mode::Learn`]: entering saves the game (`save_the_game`, on `OnEnter`), leaving
+//! puts it back as it was (`restore_the_game`, on `OnExit`): the scene, the settings, the
+//! overlays, the clock and the box.
 
 pub mod chapters;
 pub mod equations;
@@ -20,7 +21,7 @@ use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
-use crate::game::shared::{Overlays, SceneName};
+use crate::game::shared::{Mode, Overlays, SceneName};
 use crate::game::simulation::{
     Band, Bodies, EnergyBooks, ResetScene, RigidBodyQueryReadOnly, RigidBox, StepCount,
     acting_band, rigid_box, set_fixed_step,
@@ -39,17 +40,21 @@ impl Plugin for LearnPlugin {
             .add_observer(learn)
             .add_observer(twin::restart_on_reset)
             .add_systems(Startup, spawn_card)
-            .add_systems(
-                FixedUpdate,
-                twin::place_twin.in_set(PhysicsSystems::Observe),
-            )
+            .add_systems(OnEnter(Mode::Learn), save_the_game)
+            .add_systems(OnExit(Mode::Learn), restore_the_game)
+            .add_systems(FixedUpdate, keep_the_twin.in_set(PhysicsSystems::Observe))
             .add_systems(
                 RunFixedMainLoop,
                 check_task
-                    .run_if(|learning: Res<Learning>| learning.chapter.is_some())
+                    .run_if(in_state(Mode::Learn))
                     .in_set(AfterStepsSystems::Conclude),
             )
-            .add_systems(Update, show_chapter.in_set(ScreenSystems::Learn));
+            .add_systems(
+                Update,
+                show_chapter
+                    .run_if(in_state(Mode::Learn))
+                    .in_set(ScreenSystems::Learn),
+            );
     }
 }
 
@@ -64,11 +69,13 @@ pub enum Learn {
     Chapter(usize),
 }
 
-/// Learn mode's state: the chapter shown, what each task has seen, and the game to go back to.
+/// Learn mode's chapters: the one shown, what each task has seen, and the game to go back to.
+///
+/// Whether the mode is on is the state [`Mode`], asked nowhere else.
 #[derive(Resource, Debug, Default)]
 pub struct Learning {
-    /// The chapter shown, while in learn mode.
-    pub chapter: Option<usize>,
+    /// The chapter shown in learn mode (the one it shows next when entered).
+    pub chapter: usize,
     /// Each chapter's task done.
     pub done: [bool; CHAPTERS.len()],
     progress: Progress,
@@ -105,26 +112,56 @@ struct Saved {
     body: Option<(BodyState, MassProperties)>,
 }
 
-impl Learning {
-    pub fn is_on(&self) -> bool {
-        self.chapter.is_some()
-    }
+/// Places the twin while learn mode shows a chapter that has one, and drops it otherwise.
+fn keep_the_twin(
+    mode: Res<State<Mode>>,
+    learning: Res<Learning>,
+    mut twin: ResMut<CentreTwin>,
+    boxes: Bodies,
+) {
+    let wanted = *mode.get() == Mode::Learn
+        && CHAPTERS
+            .get(learning.chapter)
+            .is_some_and(|chapter| chapter.centre_twin);
+    twin::place_twin(&mut twin, wanted, &boxes);
 }
 
+/// Returns the chapter learn mode shows, or None out of learn mode.
+pub fn chapter_shown(world: &World) -> Option<usize> {
+    let learning = *world.resource::<State<Mode>>().get() == Mode::Learn;
+    learning.then(|| world.resource::<Learning>().chapter)
+}
+
+/// Acts on a learn control at once, within the frame that sent it.
+///
+/// Entering and leaving change [`Mode`] and run the state's transition there and then, so the
+/// chapter is in place before the frame's steps, as every other control is.
 fn learn(learn: On<Learn>, mut commands: Commands) {
     let asked = *learn;
     commands.queue(move |world: &mut World| {
-        let chapter = world.resource::<Learning>().chapter;
         let last = CHAPTERS.len() - 1;
-        match (asked, chapter) {
-            (Learn::Toggle, Some(_)) => leave(world),
-            (Learn::Toggle, None) => go_to(world, 0),
+        match (asked, chapter_shown(world)) {
+            (Learn::Toggle, Some(_)) => switch_to(world, Mode::Play),
+            (Learn::Toggle, None) => enter_at(world, 0),
             (Learn::Next, Some(index)) => go_to(world, (index + 1).min(last)),
             (Learn::Previous, Some(index)) => go_to(world, index.saturating_sub(1)),
-            (Learn::Chapter(index), _) if index <= last => go_to(world, index),
+            (Learn::Chapter(index), Some(_)) if index <= last => go_to(world, index),
+            (Learn::Chapter(index), None) if index <= last => enter_at(world, index),
             _ => {}
         }
     });
+}
+
+/// Enters learn mode at chapter `index`.
+fn enter_at(world: &mut World, index: usize) {
+    world.resource_mut::<Learning>().chapter = index;
+    switch_to(world, Mode::Learn);
+}
+
+/// Sets the mode and runs the state's transition now, `OnExit` and `OnEnter` included.
+fn switch_to(world: &mut World, mode: Mode) {
+    world.resource_mut::<NextState<Mode>>().set(mode);
+    world.run_schedule(StateTransition);
 }
 
 /// Returns the box's state and mass, if there is one.
@@ -136,7 +173,26 @@ fn the_body(world: &mut World) -> Option<(BodyState, MassProperties)> {
         .map(|body| (body.state(), *body.mass))
 }
 
-/// Shows chapter `index`, saving the game first if the mode is being entered.
+/// Saves the game as learn mode is entered, then shows the chapter asked.
+fn save_the_game(world: &mut World) {
+    let time = world.resource::<Time<Virtual>>();
+    let saved = Saved {
+        params: *world.resource::<SceneParams>(),
+        integrator: *world.resource::<Integrator>(),
+        auto: *world.resource::<AutoSettings>(),
+        scene: world.resource::<SceneName>().clone(),
+        overlays: *world.resource::<Overlays>(),
+        cards: world.resource::<Cards>().clone(),
+        speed: time.relative_speed_f64(),
+        paused: time.is_paused(),
+        body: the_body(world),
+    };
+    world.resource_mut::<Learning>().saved = Some(Box::new(saved));
+    let index = world.resource::<Learning>().chapter;
+    go_to(world, index);
+}
+
+/// Shows chapter `index` in learn mode.
 ///
 /// The chapter's scene is loaded (its scripted pull plays until the player presses), its
 /// integrator put in place, its task started over, the *Learn* card open.
@@ -144,32 +200,15 @@ fn go_to(world: &mut World, index: usize) {
     let Some(chapter) = CHAPTERS.get(index) else {
         return;
     };
-    if world.resource::<Learning>().saved.is_none() {
-        let time = world.resource::<Time<Virtual>>();
-        let saved = Saved {
-            params: *world.resource::<SceneParams>(),
-            integrator: *world.resource::<Integrator>(),
-            auto: *world.resource::<AutoSettings>(),
-            scene: world.resource::<SceneName>().clone(),
-            overlays: *world.resource::<Overlays>(),
-            cards: world.resource::<Cards>().clone(),
-            speed: time.relative_speed_f64(),
-            paused: time.is_paused(),
-            body: the_body(world),
-        };
-        world.resource_mut::<Learning>().saved = Some(Box::new(saved));
-    }
     if let Some(integrator) = chapter.integrator.and_then(|name| name.parse().ok()) {
         world.insert_resource::<Integrator>(integrator);
     }
     load_scene(world, chapter.scene);
     let mut overlays = world.resource_mut::<Overlays>();
-    overlays.learn = true;
     // The arrows of force and velocity are the chapters' pictures.
     overlays.vectors = true;
     overlays.dock_hidden = false;
     world.resource_mut::<Cards>().set(Card::Learn, true);
-    world.resource_mut::<CentreTwin>().wanted = chapter.centre_twin;
     let [left, bottom, right, top] = chapter.frame;
     world.resource_mut::<CameraFrame>().stage = Stage {
         close: Some(Rect::new(left, bottom, right, top)),
@@ -180,21 +219,16 @@ fn go_to(world: &mut World, index: usize) {
         .mass_properties()
         .map_or(0.0, |mass| mass.inertia());
     let mut learning = world.resource_mut::<Learning>();
-    learning.chapter = Some(index);
+    learning.chapter = index;
     learning.progress = Progress {
         inertia_at_start: inertia,
         ..default()
     };
 }
 
-/// Leaves learn mode, putting the game back as it was entered.
-fn leave(world: &mut World) {
-    let saved = {
-        let mut learning = world.resource_mut::<Learning>();
-        learning.chapter = None;
-        learning.saved.take()
-    };
-    world.resource_mut::<CentreTwin>().wanted = false;
+/// Puts the game back as learn mode was entered, as the mode is left.
+fn restore_the_game(world: &mut World) {
+    let saved = world.resource_mut::<Learning>().saved.take();
     world.resource_mut::<CameraFrame>().stage = Stage::default();
     let Some(saved) = saved else {
         return;
@@ -247,9 +281,7 @@ fn check_task(
     boxes: Bodies,
     bands: Query<&Band>,
 ) {
-    let Some(index) = learning.chapter else {
-        return;
-    };
+    let index = learning.chapter;
     let Ok(body) = boxes.single() else {
         return;
     };
@@ -406,8 +438,8 @@ fn chapter_texts(
     learning: &Learning,
     quantities: Option<&Quantities>,
 ) -> Option<Vec<(LearnText, String, Color)>> {
-    let index = learning.chapter?;
-    let chapter = &CHAPTERS[index];
+    let index = learning.chapter;
+    let chapter = CHAPTERS.get(index)?;
     let title = format!(
         "{} of {}  {}  ({})",
         index + 1,

@@ -22,8 +22,6 @@ pub const TWIN_OFFSET: DVec2 = DVec2::new(0.0, -130.0);
 /// The twin, while a chapter shows it.
 #[derive(Resource, Debug, Default)]
 pub struct CentreTwin {
-    /// Whether the chapter shown has a twin (learn mode sets it as it shows a chapter).
-    pub wanted: bool,
     pub body: Option<Twin>,
     restart: bool,
 }
@@ -56,11 +54,11 @@ pub fn restart_on_reset(_reset: On<ResetScene>, mut twin: ResMut<CentreTwin>) {
     twin.restart = true;
 }
 
-/// Sets the twin beside the box when its chapter is shown or the scene starts over.
+/// Sets the twin beside the box when its chapter is shown (`wanted`) or the scene starts over.
 ///
 /// Out of its chapter the twin is dropped.
-pub fn place_twin(mut twin: ResMut<CentreTwin>, boxes: Bodies) {
-    if !twin.wanted {
+pub fn place_twin(twin: &mut CentreTwin, wanted: bool, boxes: &Bodies) {
+    if !wanted {
         if twin.body.is_some() {
             twin.body = None;
         }

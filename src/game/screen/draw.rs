@@ -16,7 +16,7 @@ use crate::game::learn::Learning;
 use crate::game::learn::chapters::{CHAPTERS, Equation};
 use crate::game::learn::twin::CentreTwin;
 use crate::game::schedule::ScreenSystems;
-use crate::game::shared::Overlays;
+use crate::game::shared::{Mode, Overlays};
 use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox, interpolated_state};
 use crate::game::theme::colour;
 use crate::physics::{Integrator, MassProperties, SCENE_SIZE, SceneParams};
@@ -46,7 +46,7 @@ impl Plugin for DrawPlugin {
                     draw_boxes,
                     draw_bands,
                     draw_vectors.run_if(|overlays: Res<Overlays>| overlays.vectors),
-                    draw_learning.run_if(|learning: Res<Learning>| learning.is_on()),
+                    draw_learning.run_if(in_state(Mode::Learn)),
                     (record_trail, draw_trail).chain(),
                     draw_ghosts,
                 )
@@ -223,7 +223,7 @@ fn draw_learning(
         viewport,
         frame,
     } = view;
-    let Some(chapter) = learning.chapter.and_then(|index| CHAPTERS.get(index)) else {
+    let Some(chapter) = CHAPTERS.get(learning.chapter) else {
         return;
     };
     let shows = |equation: Equation| chapter.equations.contains(&equation);
