@@ -280,7 +280,7 @@ fn a_finger_dragged_onto_the_sheet_with_a_second_finger_keeps_the_box_in_view() 
     let mut game = game_at(PHONE);
     // The energy card open: the sheet takes the lower part of the window.
     let mut cards = Cards::default();
-    cards.set(Card::Energy, true);
+    cards.set(Card::ENERGY, true);
     *game.world().resource_mut::<Cards>() = cards;
     game.update(2);
     let viewport = viewport(&mut game);

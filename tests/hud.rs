@@ -516,7 +516,7 @@ fn the_clock_and_the_live_ghost_come_from_the_game() {
     let clock = game.hud(HudLine::Clock);
     assert!(clock.starts_with("step 10.00 ms (100 Hz)"), "{clock}");
     // The ghosts' card is in the dock only while they are on, and opens when they come on.
-    use rubber_band_box::game::layout::{Card, Cards};
+    use rubber_band_box::game::layout::{Card, CardRegistry, Cards};
     let offered = |game: &mut Game| {
         let world = game.world();
         let overlays = *world.resource::<rubber_band_box::game::shared::Overlays>();
@@ -524,8 +524,10 @@ fn the_clock_and_the_live_ghost_come_from_the_game() {
             .resource::<State<rubber_band_box::game::shared::Mode>>()
             .get();
         (
-            Card::Ghosts.offered(&overlays, mode),
-            world.resource::<Cards>().is_open(Card::Ghosts),
+            world
+                .resource::<CardRegistry>()
+                .offers(Card::GHOSTS, &overlays, mode),
+            world.resource::<Cards>().is_open(Card::GHOSTS),
         )
     };
     assert_eq!(offered(&mut game), (false, false));

@@ -9,7 +9,9 @@ mod common;
 use bevy::ecs::system::RunSystemOnce;
 use bevy::ui::{CalculatedClip, UiGlobalTransform};
 use common::*;
-use rubber_band_box::game::layout::{Card, Cards, SceneViewport, Shape, shown_texts, visible_rect};
+use rubber_band_box::game::layout::{
+    Card, CardRegistry, Cards, SceneViewport, Shape, shown_texts, visible_rect,
+};
 use rubber_band_box::game::pointer::PointerAction;
 use rubber_band_box::game::shared::Overlays;
 
@@ -112,9 +114,10 @@ fn at_six_sizes_nothing_meets_and_the_scene_is_the_largest_region() {
         *game.world().resource_mut::<Cards>() = Cards::default();
         let folded = check(&mut game, size, &format!("{size} folded"));
         // Open: on the side every card at once; on a tall window each in turn.
+        let all: Vec<Card> = game.world().resource::<CardRegistry>().cards().collect();
         let opened: Vec<Vec<Card>> = match shape {
-            Shape::Wide => vec![Card::ALL.to_vec()],
-            Shape::Tall => Card::ALL.iter().map(|card| vec![*card]).collect(),
+            Shape::Wide => vec![all],
+            Shape::Tall => all.into_iter().map(|card| vec![card]).collect(),
         };
         for cards in opened {
             let mut state = Cards::default();
@@ -186,8 +189,11 @@ fn learn_modes_card_lays_out_at_six_sizes() {
             game.resize(size);
             let mut state = Cards::default();
             match Shape::of(size.as_vec2()) {
-                Shape::Wide => Card::ALL.iter().for_each(|card| state.set(*card, true)),
-                Shape::Tall => state.set(Card::Learn, true),
+                Shape::Wide => {
+                    let registry = game.world().resource::<CardRegistry>();
+                    registry.cards().for_each(|card| state.set(card, true));
+                }
+                Shape::Tall => state.set(Card::LEARN, true),
             }
             *game.world().resource_mut::<Cards>() = state;
             let name = format!("{size}, chapter {}", chapter + 1);
@@ -242,7 +248,7 @@ fn a_dock_that_overflows_shows_its_scrollbar() {
     game.tap_key(KeyCode::KeyG);
     game.tap_key(KeyCode::KeyP);
     let mut open = Cards::default();
-    for card in [Card::Energy, Card::Ghosts, Card::Plot] {
+    for card in [Card::ENERGY, Card::GHOSTS, Card::PLOT] {
         open.set(card, true);
     }
     *game.world().resource_mut::<Cards>() = open;
@@ -274,7 +280,7 @@ fn a_dock_that_overflows_shows_its_scrollbar() {
     assert!(!painted && !shown, "folded cards need no scrollbar");
     game.resize(UVec2::new(390, 844));
     let mut readouts = Cards::default();
-    readouts.set(Card::Readouts, true);
+    readouts.set(Card::READOUTS, true);
     *game.world().resource_mut::<Cards>() = readouts;
     game.update(4);
     let ((track, painted), (_, shown)) = dock_scrollbar(&mut game);

@@ -89,9 +89,9 @@ fn click(game: &mut Game, entity: Entity, pointer: PointerId) {
 #[test]
 fn a_click_or_a_tap_on_a_button_does_what_its_key_does() {
     let mut game = Game::stepping();
-    let fold = title(&mut game, Card::Controls);
+    let fold = title(&mut game, Card::CONTROLS);
     click(&mut game, fold, PointerId::Mouse);
-    assert!(open(&mut game, Card::Controls));
+    assert!(open(&mut game, Card::CONTROLS));
 
     let pause = button(&mut game, PanelButton::Send(Action::TogglePause));
     click(&mut game, pause, PointerId::Mouse);
@@ -128,7 +128,7 @@ fn a_click_or_a_tap_on_a_button_does_what_its_key_does() {
     assert_eq!(game.world().resource::<SceneParams>().step_rate_hz, 200.0);
 
     click(&mut game, fold, PointerId::Mouse);
-    assert!(!open(&mut game, Card::Controls));
+    assert!(!open(&mut game, Card::CONTROLS));
 }
 
 /// Learn mode by the panel: `learn` enters it and opens its card, `next ▸` and `◂ back` move
@@ -143,7 +143,7 @@ fn the_learn_buttons_walk_the_chapters() {
     let learn = button(&mut game, PanelButton::Send(Action::Learn));
     click(&mut game, learn, PointerId::Mouse);
     assert_eq!(chapter(&mut game), Some(0));
-    assert!(open(&mut game, Card::Learn));
+    assert!(open(&mut game, Card::LEARN));
     assert_eq!(mode(&mut game), Mode::Learn);
     let next = button(&mut game, PanelButton::Send(Action::NextChapter));
     for wanted in [1, 2, 2] {
@@ -381,7 +381,7 @@ fn laid_out(game: &mut Game, does: PanelButton) -> Rect {
 #[test]
 fn a_finger_taps_a_laid_out_button_and_never_grabs_the_box() {
     let mut game = laid_out_game();
-    let fold = title(&mut game, Card::Controls);
+    let fold = title(&mut game, Card::CONTROLS);
     let fold = rect_of(&mut game, fold);
     assert!(
         fold.width() > 20.0 && fold.height() >= 28.0,
@@ -398,15 +398,15 @@ fn a_finger_taps_a_laid_out_button_and_never_grabs_the_box() {
         game.update(2);
         grabbed
     };
-    assert!(!open(&mut game, Card::Controls));
+    assert!(!open(&mut game, Card::CONTROLS));
     // Folded, the body's buttons have no size: a tap elsewhere reaches none of them.
     tap(&mut game, 5, Vec2::new(300.0, 300.0));
-    assert!(!open(&mut game, Card::Controls));
+    assert!(!open(&mut game, Card::CONTROLS));
     assert!(!game.world().resource::<Time<Virtual>>().is_paused());
     assert_eq!(*game.world().resource::<Integrator>(), Integrator::Auto);
     assert_eq!(*game.world().resource::<Overlays>(), Overlays::default());
     assert!(!tap(&mut game, 1, fold.center()), "the tap grabbed the box");
-    assert!(open(&mut game, Card::Controls), "the tap unfolded it");
+    assert!(open(&mut game, Card::CONTROLS), "the tap unfolded it");
 
     let pause = laid_out(&mut game, PanelButton::Send(Action::TogglePause));
     assert!(pause.width() > 20.0, "unfolded, the pause button has room");

@@ -34,6 +34,7 @@ impl Plugin for LayoutPlugin {
         }
         // The panel's sliders read it too (the UI plugin has it; the headless game does not).
         app.init_resource::<UiScale>()
+            .init_resource::<CardRegistry>()
             .init_resource::<Cards>()
             .init_resource::<SceneViewport>()
             .add_systems(PreStartup, spawn_regions)
@@ -166,63 +167,90 @@ fn publish_texts(
 /// The game's window when it opens, in logical pixels.
 pub const WINDOW_SIZE: UVec2 = UVec2::new(960, 720);
 
-/// An instrument card of the dock, in the dock's order.
-#[derive(Component, Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Card {
-    /// Learn mode's chapter (while in learn mode): first, so that a tall window shows it.
-    Learn,
-    /// The panel: every control a key has.
-    Controls,
-    /// The scene, the integrator, the clock, the parameters, the replay.
-    Readouts,
-    /// The energies, the ledger and the energy graph.
-    Energy,
-    /// The ghosts' table (with the ghosts on).
-    Ghosts,
-    /// Speed against error (with the plot on).
-    Plot,
-    /// The live integrator's distance from instability.
-    Stability,
+/// An instrument card of the dock, named by the plugin that fills it.
+///
+/// Each card's own module names it (`Card::STABILITY` in `stability/`) and registers it with
+/// the dock ([`RegisterCard::register_card`]); the dock keeps no list of its own.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Card(pub &'static str);
+
+/// A card as its plugin registers it: its name, its title, its place and when it is offered.
+#[derive(Debug, Clone, Copy)]
+pub struct CardSpec {
+    pub card: Card,
+    /// The title on its fold button and its tab.
+    pub title: &'static str,
+    /// Its place in the dock, top to bottom (a tall window's tabs, left to right).
+    pub place: u8,
+    /// Tells whether the card is in the dock now (the ghosts' table only with the ghosts on).
+    pub offered: fn(&Overlays, Mode) -> bool,
 }
 
-impl Card {
-    pub const ALL: [Card; 7] = [
-        Card::Learn,
-        Card::Controls,
-        Card::Readouts,
-        Card::Energy,
-        Card::Ghosts,
-        Card::Plot,
-        Card::Stability,
-    ];
-
-    fn title(self) -> &'static str {
-        match self {
-            Card::Learn => "Learn",
-            Card::Controls => "Controls",
-            Card::Readouts => "Readouts",
-            Card::Energy => "Energy",
-            Card::Ghosts => "Ghosts",
-            Card::Plot => "Speed against error",
-            Card::Stability => "Stability",
+impl CardSpec {
+    /// Returns a card that is always in the dock.
+    pub const fn always(card: Card, title: &'static str, place: u8) -> Self {
+        Self {
+            card,
+            title,
+            place,
+            offered: |_, _| true,
         }
     }
+}
 
-    fn index(self) -> usize {
-        Card::ALL.iter().position(|&card| card == self).unwrap_or(0)
+/// Every card of the dock in its order: what the plugins registered.
+///
+/// The dock spawns a frame, a title and a body ([`Slot::Card`]) for each at start-up.
+#[derive(Resource, Debug, Default)]
+pub struct CardRegistry(Vec<CardSpec>);
+
+impl CardRegistry {
+    /// Returns the cards in the dock's order.
+    pub fn cards(&self) -> impl Iterator<Item = Card> + '_ {
+        self.0.iter().map(|spec| spec.card)
     }
 
-    /// Tells whether the card is in the dock now.
-    ///
-    /// The ghosts' table and the plot are there only while their overlay is on, the *Learn*
-    /// card only in learn mode.
-    pub fn offered(self, overlays: &Overlays, mode: Mode) -> bool {
-        match self {
-            Card::Learn => mode == Mode::Learn,
-            Card::Ghosts => overlays.ghosts,
-            Card::Plot => overlays.plot,
-            _ => true,
+    /// Tells whether `card` is in the dock now; an unregistered card never is.
+    pub fn offers(&self, card: Card, overlays: &Overlays, mode: Mode) -> bool {
+        self.0
+            .iter()
+            .any(|spec| spec.card == card && (spec.offered)(overlays, mode))
+    }
+}
+
+/// Registers cards with the dock.
+pub trait RegisterCard {
+    /// Registers a card, in the place it asks; a second registration of a name is ignored.
+    fn register_card(&mut self, spec: CardSpec) -> &mut Self;
+}
+
+impl RegisterCard for App {
+    fn register_card(&mut self, spec: CardSpec) -> &mut Self {
+        let mut registry = self.world_mut().get_resource_or_init::<CardRegistry>();
+        if registry.0.iter().any(|known| known.card == spec.card) {
+            warn!(
+                "the card {:?} is registered twice: the second ignored",
+                spec.card
+            );
+        } else {
+            registry.0.push(spec);
+            registry.0.sort_by_key(|known| known.place);
         }
+        self
+    }
+}
+
+/// What decides which cards the dock offers now: the cards, the overlays and the mode.
+#[derive(Clone, Copy)]
+struct Offers<'a> {
+    registry: &'a CardRegistry,
+    overlays: &'a Overlays,
+    mode: Mode,
+}
+
+impl Offers<'_> {
+    fn offers(&self, card: Card) -> bool {
+        self.registry.offers(card, self.overlays, self.mode)
     }
 }
 
@@ -231,16 +259,20 @@ impl Card {
 /// A tall window shows one at a time (the first open one).
 #[derive(Resource, Debug, Clone, PartialEq, Eq, Default)]
 pub struct Cards {
-    open: [bool; Card::ALL.len()],
+    open: std::collections::BTreeSet<Card>,
 }
 
 impl Cards {
     pub fn is_open(&self, card: Card) -> bool {
-        self.open[card.index()]
+        self.open.contains(&card)
     }
 
     pub fn set(&mut self, card: Card, open: bool) {
-        self.open[card.index()] = open;
+        if open {
+            self.open.insert(card);
+        } else {
+            self.open.remove(&card);
+        }
     }
 
     /// Folds or unfolds `card`, as a press on its title does.
@@ -250,23 +282,24 @@ impl Cards {
     pub fn toggle(&mut self, card: Card, shape: Shape) {
         let open = !self.is_open(card);
         if shape == Shape::Tall && open {
-            self.open = Default::default();
+            self.open.clear();
         }
         self.set(card, open);
     }
 
     /// Returns the card a tall window shows: the first open one the dock offers.
-    fn shown_alone(&self, overlays: &Overlays, mode: Mode) -> Option<Card> {
-        Card::ALL
-            .into_iter()
-            .find(|&card| self.is_open(card) && card.offered(overlays, mode))
+    fn shown_alone(&self, offers: &Offers) -> Option<Card> {
+        offers
+            .registry
+            .cards()
+            .find(|&card| self.is_open(card) && offers.offers(card))
     }
 
     /// Tells whether the card's body shows.
-    fn body_shows(&self, card: Card, shape: Shape, overlays: &Overlays, mode: Mode) -> bool {
+    fn body_shows(&self, card: Card, shape: Shape, offers: &Offers) -> bool {
         match shape {
-            Shape::Wide => self.is_open(card) && card.offered(overlays, mode),
-            Shape::Tall => self.shown_alone(overlays, mode) == Some(card),
+            Shape::Wide => self.is_open(card) && offers.offers(card),
+            Shape::Tall => self.shown_alone(offers) == Some(card),
         }
     }
 }
@@ -359,9 +392,9 @@ struct Tabs;
 pub struct SceneViewport(pub Option<Rect>);
 
 /// Builds a card's title button: the same widget in the side column and as a tab.
-fn title_button(card: Card) -> impl Bundle {
+fn title_button(card: Card, title: &'static str) -> impl Bundle {
     (
-        Name::new(format!("Card title {}", card.title())),
+        Name::new(format!("Card title {title}")),
         Button,
         ActivateOnPress,
         CardButton(card),
@@ -373,7 +406,7 @@ fn title_button(card: Card) -> impl Bundle {
         },
         BackgroundColor(colour::CARD_TITLE),
         children![(
-            Text::new(card.title()),
+            Text::new(title),
             theme::text_font(size::TITLE),
             TextColor(colour::TEXT),
             Pickable::IGNORE,
@@ -381,7 +414,7 @@ fn title_button(card: Card) -> impl Bundle {
     )
 }
 
-fn spawn_regions(mut commands: Commands) {
+fn spawn_regions(mut commands: Commands, registry: Res<CardRegistry>) {
     let root = commands
         .spawn((
             Name::new("Regions"),
@@ -534,13 +567,13 @@ fn spawn_regions(mut commands: Commands) {
             ChildOf(dock),
         ))
         .id();
-    for card in Card::ALL {
-        commands.spawn((title_button(card), ChildOf(tabs)));
+    for &CardSpec { card, title, .. } in &registry.0 {
+        commands.spawn((title_button(card, title), ChildOf(tabs)));
         // The card has no background of its own: a chart in it is drawn under the UI, seen
         // where no node of the card paints.
         let frame = commands
             .spawn((
-                Name::new(format!("Card {}", card.title())),
+                Name::new(format!("Card {title}")),
                 CardFrame(card),
                 Node {
                     flex_direction: FlexDirection::Column,
@@ -550,9 +583,9 @@ fn spawn_regions(mut commands: Commands) {
                 ChildOf(dock),
             ))
             .id();
-        commands.spawn((title_button(card), ChildOf(frame)));
+        commands.spawn((title_button(card, title), ChildOf(frame)));
         commands.spawn((
-            Name::new(format!("Card body {}", card.title())),
+            Name::new(format!("Card body {title}")),
             Slot::Card(card),
             Node {
                 display: Display::None,
@@ -581,6 +614,7 @@ fn scale_ui_to_window(windows: Query<&Window, With<PrimaryWindow>>, mut scale: R
 fn arrange(
     windows: Query<&Window, With<PrimaryWindow>>,
     cards: Res<Cards>,
+    registry: Res<CardRegistry>,
     overlays: Res<Overlays>,
     mode: Res<State<Mode>>,
     mut nodes: ParamSet<(
@@ -598,12 +632,16 @@ fn arrange(
         .next()
         .map_or(WINDOW_SIZE.as_vec2(), Window::size);
     let shape = Shape::of(window);
-    let mode = *mode.get();
+    let offers = Offers {
+        registry: &registry,
+        overlays: &overlays,
+        mode: *mode.get(),
+    };
     let scale = ui_scale_for(window);
     let dock_hidden = overlays.dock_hidden;
-    let any_open = Card::ALL
-        .into_iter()
-        .any(|card| cards.body_shows(card, shape, &overlays, mode));
+    let any_open = registry
+        .cards()
+        .any(|card| cards.body_shows(card, shape, &offers));
     let set = |node: &mut Mut<Node>, wanted: &dyn Fn(&mut Node)| {
         let mut next = (**node).clone();
         wanted(&mut next);
@@ -654,15 +692,15 @@ fn arrange(
         });
     }
     for (CardFrame(card), mut node) in &mut nodes.p3() {
-        let shown = card.offered(&overlays, mode)
-            && (shape == Shape::Wide || cards.body_shows(*card, shape, &overlays, mode));
+        let shown = offers.offers(*card)
+            && (shape == Shape::Wide || cards.body_shows(*card, shape, &offers));
         set(&mut node, &|n| {
             n.display = if shown { Display::Flex } else { Display::None };
         });
     }
     for (slot, mut node) in &mut nodes.p4() {
         if let Slot::Card(card) = slot {
-            let shows = cards.body_shows(*card, shape, &overlays, mode);
+            let shows = cards.body_shows(*card, shape, &offers);
             set(&mut node, &|n| {
                 n.display = if shows { Display::Flex } else { Display::None };
             });
@@ -671,11 +709,11 @@ fn arrange(
     for (CardButton(card), parent, mut background, mut node) in &mut nodes.p5() {
         let in_tabs = tabs.contains(parent.parent());
         // A tall window's card shows under its tab, without its own title.
-        let shown = card.offered(&overlays, mode) && (in_tabs || shape == Shape::Wide);
+        let shown = offers.offers(*card) && (in_tabs || shape == Shape::Wide);
         set(&mut node, &|n| {
             n.display = if shown { Display::Flex } else { Display::None };
         });
-        let lit = cards.body_shows(*card, shape, &overlays, mode);
+        let lit = cards.body_shows(*card, shape, &offers);
         background.set_if_neq(BackgroundColor(if lit {
             colour::LIT
         } else {
@@ -684,31 +722,39 @@ fn arrange(
     }
 }
 
-/// Opens the card of an overlay switched on (the ghosts' table with G, the plot with P).
+/// Opens a card that comes into the dock.
 ///
-/// It opens as a tall window shows it: alone.
+/// The ghosts' table comes with G, the plot with P, learn mode's card with the mode. It opens as a tall window shows it: alone. Before the first frame the dock offers what it
+/// offers in play with no overlay on, so a game that starts with one on opens its card.
 fn open_cards_switched_on(
+    registry: Res<CardRegistry>,
     overlays: Res<Overlays>,
+    mode: Res<State<Mode>>,
     windows: Query<&Window, With<PrimaryWindow>>,
     mut cards: ResMut<Cards>,
-    mut before: Local<Overlays>,
+    mut before: Local<Option<Vec<Card>>>,
 ) {
-    if *overlays == *before {
+    let offered = |overlays: &Overlays, mode: Mode| -> Vec<Card> {
+        registry
+            .cards()
+            .filter(|&card| registry.offers(card, overlays, mode))
+            .collect()
+    };
+    let now = offered(&overlays, *mode.get());
+    let before = before.get_or_insert_with(|| offered(&Overlays::default(), Mode::Play));
+    if now == *before {
         return;
     }
     let shape = windows
         .iter()
         .next()
         .map_or(Shape::Wide, |window| Shape::of(window.size()));
-    for (card, on, was) in [
-        (Card::Ghosts, overlays.ghosts, before.ghosts),
-        (Card::Plot, overlays.plot, before.plot),
-    ] {
-        if on && !was && !cards.is_open(card) {
+    for &card in &now {
+        if !before.contains(&card) && !cards.is_open(card) {
             cards.toggle(card, shape);
         }
     }
-    *before = *overlays;
+    *before = now;
 }
 
 /// Scrolls the dock with the wheel over it or a finger's drag that starts on it.

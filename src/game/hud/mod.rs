@@ -18,7 +18,7 @@ use bevy::prelude::*;
 
 use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::input::controls::help_line;
-use crate::game::layout::{Card, Slot};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slot};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::schedule::ScreenSystems;
@@ -38,7 +38,16 @@ impl Plugin for HudPlugin {
         if !app.is_plugin_added::<FrameTimeDiagnosticsPlugin>() {
             app.add_plugins(FrameTimeDiagnosticsPlugin::default());
         }
-        app.add_plugins(history::EnergyHistoryPlugin)
+        app.register_card(CardSpec::always(Card::READOUTS, "Readouts", 30))
+            .register_card(CardSpec::always(Card::ENERGY, "Energy", 40))
+            .register_card(CardSpec {
+                card: Card::GHOSTS,
+                title: "Ghosts",
+                place: 50,
+                offered: |overlays, _| overlays.ghosts,
+            })
+            .register_card(CardSpec::always(Card::STABILITY, "Stability", 70))
+            .add_plugins(history::EnergyHistoryPlugin)
             .init_resource::<Pace>()
             .add_systems(Startup, spawn_hud)
             .add_systems(
@@ -48,6 +57,17 @@ impl Plugin for HudPlugin {
                     .in_set(ScreenSystems::Hud),
             );
     }
+}
+
+impl Card {
+    /// The scene, the integrator, the clock, the parameters, the replay.
+    pub const READOUTS: Card = Card("readouts");
+    /// The energies, the ledger and the energy graph.
+    pub const ENERGY: Card = Card("energy");
+    /// The ghosts' table (with the ghosts on).
+    pub const GHOSTS: Card = Card("ghosts");
+    /// The live integrator's distance from instability.
+    pub const STABILITY: Card = Card("stability");
 }
 
 pub const KINETIC_COLOUR: Color = colour::KINETIC;
@@ -117,17 +137,17 @@ impl HudLine {
             | HudLine::Integrator
             | HudLine::Clock
             | HudLine::Parameters
-            | HudLine::Replay => Slot::Card(Card::Readouts),
-            HudLine::Stability => Slot::Card(Card::Stability),
-            HudLine::Ghosts => Slot::Card(Card::Ghosts),
-            HudLine::Help => Slot::Card(Card::Controls),
+            | HudLine::Replay => Slot::Card(Card::READOUTS),
+            HudLine::Stability => Slot::Card(Card::STABILITY),
+            HudLine::Ghosts => Slot::Card(Card::GHOSTS),
+            HudLine::Help => Slot::Card(Card::CONTROLS),
             HudLine::EnergyHeading
             | HudLine::KineticLinear
             | HudLine::KineticRotational
             | HudLine::BandPotential
             | HudLine::Total
             | HudLine::Ledger
-            | HudLine::Residual => Slot::Card(Card::Energy),
+            | HudLine::Residual => Slot::Card(Card::ENERGY),
         }
     }
 
@@ -625,7 +645,7 @@ fn spawn_hud(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
         ));
     }
     // The ghosts' table: a grid, so that its columns line up in any face.
-    let Some(card) = slot(Slot::Card(Card::Ghosts)) else {
+    let Some(card) = slot(Slot::Card(Card::GHOSTS)) else {
         return;
     };
     let grid = commands

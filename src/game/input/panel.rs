@@ -2,7 +2,7 @@
 //! own widgets (`bevy_ui_widgets`: buttons and sliders, reached through picking). Each button
 //! sends the same [`Action`] its key sends and each slider an [`Action::Set`], so the panel
 //! holds no state of its own beyond whether it is open: what it shows is read back from the
-//! resources every frame. It is the dock's first card ([`Card::Controls`]); the cards' titles
+//! resources every frame. It is the dock's first card ([`Card::CONTROLS`]); the cards' titles
 //! are buttons too, and fold their cards. It lies outside the scene's viewport, so a press on
 //! it never grabs the box.
 
@@ -15,7 +15,7 @@ use bevy::ui_widgets::{
 };
 
 use crate::game::input::controls::{Action, Parameter};
-use crate::game::layout::{Card, CardButton, Cards, Shape, Slot};
+use crate::game::layout::{Card, CardButton, CardSpec, Cards, RegisterCard, Shape, Slot};
 use crate::game::learn::ChapterButtons;
 #[cfg(target_arch = "wasm32")]
 use crate::game::schedule::AfterBevySystems;
@@ -31,6 +31,11 @@ use crate::physics::{
 
 pub struct PanelPlugin;
 
+impl Card {
+    /// The panel: every control a key has.
+    pub const CONTROLS: Card = Card("controls");
+}
+
 impl Plugin for PanelPlugin {
     fn build(&self, app: &mut App) {
         // `DefaultPlugins` bring them with the widgets feature; the headless game adds them.
@@ -40,7 +45,8 @@ impl Plugin for PanelPlugin {
         if !app.is_plugin_added::<SliderPlugin>() {
             app.add_plugins(SliderPlugin);
         }
-        app.add_observer(press_button)
+        app.register_card(CardSpec::always(Card::CONTROLS, "Controls", 20))
+            .add_observer(press_button)
             .add_observer(move_slider)
             .add_systems(Startup, spawn_panel)
             .add_systems(PostStartup, spawn_chapter_buttons)
@@ -239,7 +245,7 @@ fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     }
     let Some((card, _)) = slots
         .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::Controls))
+        .find(|(_, slot)| **slot == Slot::Card(Card::CONTROLS))
     else {
         return;
     };

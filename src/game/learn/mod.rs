@@ -15,7 +15,7 @@ use self::chapters::{CHAPTERS, Equation, Task};
 use self::equations::Quantities;
 use self::twin::{CentreTwin, TWIN_OFFSET};
 use crate::game::camera::{CameraFrame, Stage};
-use crate::game::layout::{Card, Cards, Slot};
+use crate::game::layout::{Card, CardSpec, Cards, RegisterCard, Slot};
 use crate::game::pointer::Grip;
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
@@ -35,27 +35,39 @@ pub struct LearnPlugin;
 
 impl Plugin for LearnPlugin {
     fn build(&self, app: &mut App) {
-        app.init_resource::<Learning>()
-            .init_resource::<CentreTwin>()
-            .add_observer(learn)
-            .add_observer(twin::restart_on_reset)
-            .add_systems(Startup, spawn_card)
-            .add_systems(OnEnter(Mode::Learn), save_the_game)
-            .add_systems(OnExit(Mode::Learn), restore_the_game)
-            .add_systems(FixedUpdate, keep_the_twin.in_set(PhysicsSystems::Observe))
-            .add_systems(
-                RunFixedMainLoop,
-                check_task
-                    .run_if(in_state(Mode::Learn))
-                    .in_set(AfterStepsSystems::Conclude),
-            )
-            .add_systems(
-                Update,
-                show_chapter
-                    .run_if(in_state(Mode::Learn))
-                    .in_set(ScreenSystems::Learn),
-            );
+        app.register_card(CardSpec {
+            card: Card::LEARN,
+            title: "Learn",
+            // First, so that a tall window shows it.
+            place: 10,
+            offered: |_, mode| mode == Mode::Learn,
+        })
+        .init_resource::<Learning>()
+        .init_resource::<CentreTwin>()
+        .add_observer(learn)
+        .add_observer(twin::restart_on_reset)
+        .add_systems(Startup, spawn_card)
+        .add_systems(OnEnter(Mode::Learn), save_the_game)
+        .add_systems(OnExit(Mode::Learn), restore_the_game)
+        .add_systems(FixedUpdate, keep_the_twin.in_set(PhysicsSystems::Observe))
+        .add_systems(
+            RunFixedMainLoop,
+            check_task
+                .run_if(in_state(Mode::Learn))
+                .in_set(AfterStepsSystems::Conclude),
+        )
+        .add_systems(
+            Update,
+            show_chapter
+                .run_if(in_state(Mode::Learn))
+                .in_set(ScreenSystems::Learn),
+        );
     }
+}
+
+impl Card {
+    /// Learn mode's chapter (while in learn mode).
+    pub const LEARN: Card = Card("learn");
 }
 
 /// What the learn controls ask.
@@ -208,7 +220,7 @@ fn go_to(world: &mut World, index: usize) {
     // The arrows of force and velocity are the chapters' pictures.
     overlays.vectors = true;
     overlays.dock_hidden = false;
-    world.resource_mut::<Cards>().set(Card::Learn, true);
+    world.resource_mut::<Cards>().set(Card::LEARN, true);
     let [left, bottom, right, top] = chapter.frame;
     world.resource_mut::<CameraFrame>().stage = Stage {
         close: Some(Rect::new(left, bottom, right, top)),
@@ -397,7 +409,7 @@ pub struct ChapterButtons;
 fn spawn_card(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     let Some((card, _)) = slots
         .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::Learn))
+        .find(|(_, slot)| **slot == Slot::Card(Card::LEARN))
     else {
         return;
     };

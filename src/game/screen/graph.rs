@@ -37,7 +37,7 @@ const GRAPH_HEIGHT: f32 = 90.0;
 fn spawn_canvas(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     let Some((card, _)) = slots
         .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::Energy))
+        .find(|(_, slot)| **slot == Slot::Card(Card::ENERGY))
     else {
         return;
     };

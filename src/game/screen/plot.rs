@@ -15,7 +15,7 @@ use bevy::ui::UiGlobalTransform;
 use bevy::window::PrimaryWindow;
 
 use crate::game::ghosts::{GhostKind, Ghosts};
-use crate::game::layout::{Card, Slot};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slot};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::chart::{Canvas, ChartGizmos, text_box};
 use crate::game::shared::Overlays;
@@ -24,10 +24,21 @@ use crate::physics::{Integrator, SceneParams};
 
 pub struct WorkPrecisionPlotPlugin;
 
+impl Card {
+    /// Speed against error (with the plot on).
+    pub const PLOT: Card = Card("plot");
+}
+
 impl Plugin for WorkPrecisionPlotPlugin {
     fn build(&self, app: &mut App) {
-        app.add_systems(Startup, spawn_canvas)
-            .add_systems(Update, draw_plot.in_set(ScreenSystems::Plot));
+        app.register_card(CardSpec {
+            card: Card::PLOT,
+            title: "Speed against error",
+            place: 60,
+            offered: |overlays, _| overlays.plot,
+        })
+        .add_systems(Startup, spawn_canvas)
+        .add_systems(Update, draw_plot.in_set(ScreenSystems::Plot));
     }
 }
 
@@ -238,7 +249,7 @@ fn absolute_text(text: String, shade: Color) -> impl Bundle {
 fn spawn_canvas(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     let Some((card, _)) = slots
         .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::Plot))
+        .find(|(_, slot)| **slot == Slot::Card(Card::PLOT))
     else {
         return;
     };
