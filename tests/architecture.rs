@@ -274,8 +274,8 @@ fn each_room_imports_only_the_rooms_under_it() {
 /// level and those under it. `game` itself (mod.rs) and `play` wire everything.
 const GAME_LAYERS: [&[&str]; 9] = [
     &["schedule", "shared", "theme", "web"],
-    &["simulation", "stability"],
-    &["ghosts", "layout", "pointer", "camera"],
+    &["simulation"],
+    &["ghosts", "layout", "pointer", "camera", "stability"],
     &["replays"],
     &["learn"],
     &["input"],
@@ -616,5 +616,92 @@ let f = |x: fn(A, B, C, D, E, F, G, H, I)| x;
     assert_eq!(
         long_signatures(source),
         ["nine: 9 parameters", "tupled: 9 parameters"]
+    );
+}
+
+// --- A card lives in one place. ---
+
+/// Cards whose name another room writes too, and why: what is left of issue 43's first item.
+const CARDS_SHARED: [(&str, &str); 2] = [
+    // The HUD writes the keys' help line in the panel's card.
+    ("CONTROLS", "game/hud/mod.rs"),
+    // The energy graph (it needs a window) draws in the HUD's card.
+    ("ENERGY", "game/screen/graph.rs"),
+];
+
+/// Returns where each card is named (`pub const NAME: Card = Card(..)`): its home, the folder
+/// of the file that names it (`game/stability/`), or the file itself at the game's top.
+fn card_homes(files: &[(std::path::PathBuf, String)]) -> BTreeMap<String, String> {
+    let mut homes = BTreeMap::new();
+    for (relative, source) in files {
+        for line in source.lines() {
+            let Some(rest) = line.trim().strip_prefix("pub const ") else {
+                continue;
+            };
+            if let Some((name, _)) = rest.split_once(": Card = Card(") {
+                let path = relative.display().to_string();
+                let home = match path.rsplit_once('/') {
+                    Some((folder, _)) if folder != "game" => format!("{folder}/"),
+                    _ => path,
+                };
+                homes.insert(name.to_owned(), home);
+            }
+        }
+    }
+    homes
+}
+
+/// Returns each use of a card's name outside its home (comments aside), as "file: Card::NAME".
+fn cards_away_from_home(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
+    let homes = card_homes(files);
+    let mut away = Vec::new();
+    for (relative, source) in files {
+        let path = relative.display().to_string();
+        let code = source
+            .lines()
+            .filter(|line| !line.trim_start().starts_with("//"));
+        for line in code {
+            for (name, home) in &homes {
+                let shared = CARDS_SHARED.contains(&(name.as_str(), path.as_str()));
+                if line.contains(&format!("Card::{name}")) && !path.starts_with(home) && !shared {
+                    away.push(format!("src/{path}: Card::{name}"));
+                }
+            }
+        }
+    }
+    away.sort();
+    away.dedup();
+    away
+}
+
+#[test]
+fn a_card_is_named_only_in_its_own_room() {
+    let files = source_files();
+    let homes = card_homes(&files);
+    assert_eq!(homes.len(), 7, "{homes:?}");
+    assert_eq!(homes["STABILITY"], "game/stability/");
+    let away = cards_away_from_home(&files);
+    assert!(
+        away.is_empty(),
+        "a card named outside its own room:\n{}",
+        away.join("\n")
+    );
+}
+
+#[test]
+fn the_card_check_finds_a_card_named_in_another_room() {
+    let files = vec![
+        (
+            "game/stability/card.rs".into(),
+            "pub const STABILITY: Card = Card(\"stability\");\nlet a = Card::STABILITY;".to_owned(),
+        ),
+        (
+            "game/hud/mod.rs".into(),
+            "// Card::STABILITY in a comment is fine\nlet b = Card::STABILITY;".to_owned(),
+        ),
+    ];
+    assert_eq!(
+        cards_away_from_home(&files),
+        ["src/game/hud/mod.rs: Card::STABILITY"]
     );
 }

@@ -6,6 +6,7 @@ mod common;
 use common::*;
 use rubber_band_box::game::hud::HudReadings;
 use rubber_band_box::game::input::controls::{HUD, PAUSE, STIFFER};
+use rubber_band_box::game::stability::card::{StabilityLine, line as stability_line};
 use rubber_band_box::physics::{Energies, EnergyLedger};
 
 fn readings() -> HudReadings {
@@ -282,6 +283,17 @@ fn each_energy_line_says_its_own_reading() {
     );
 }
 
+/// The Stability card's line as the game shows it.
+fn shown_stability(game: &mut Game) -> String {
+    let world = game.world();
+    let mut lines = world.query_filtered::<&Text, With<StabilityLine>>();
+    lines
+        .single(world)
+        .expect("the Stability card has its line")
+        .0
+        .clone()
+}
+
 /// The stability line: the live integrator's ω·dt against its limit at this damping, and the
 /// stiffest band it holds, following the integrator and k; the ghosts' list says it for each.
 #[test]
@@ -290,14 +302,14 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
     game.update(1);
     // ω = 2 sqrt(k/m) = 4 /s, a step of 10 ms.
     assert_eq!(
-        game.hud(HudLine::Stability),
+        shown_stability(&mut game),
         "stability: auto at ω·dt 0.04, stable at any k"
     );
     *game.world().resource_mut::<Integrator>() = Integrator::Symplectic;
     game.update(1);
     // Semi-implicit Euler at the tutorial's damping: ω²h² + 2γh < 4, so ω·h < 1.99.
     assert_eq!(
-        game.hud(HudLine::Stability),
+        shown_stability(&mut game),
         "stability: symplectic at ω·dt 0.04 of 1.99: holds k up to 5.0e4"
     );
     for _ in 0..4 {
@@ -305,7 +317,7 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
         game.update(1);
     }
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 2e5);
-    let line = game.hud(HudLine::Stability);
+    let line = shown_stability(&mut game);
     assert_eq!(
         line,
         "stability: symplectic at ω·dt 4.00, past its 1.99: UNSTABLE above k 5.0e4"
@@ -397,7 +409,6 @@ fn each_line_has_its_colour() {
         HudLine::Integrator,
         HudLine::Clock,
         HudLine::Parameters,
-        HudLine::Stability,
         HudLine::Ledger,
         HudLine::Residual,
     ] {
@@ -412,7 +423,10 @@ fn each_line_has_its_colour() {
     for other in [text, dim, KINETIC_COLOUR, BAND_ENERGY_COLOUR, TOTAL_COLOUR] {
         assert_ne!(warning, other);
     }
-    assert_eq!(colour(HudLine::Stability, &diverged), text);
+    // The Stability card's line, in its own folder, colours itself the same way.
+    let stability = |r: &HudReadings| stability_line(&r.margins, r.integrator).1;
+    assert_eq!(stability(&calm), text);
+    assert_eq!(stability(&diverged), text);
     // Past the live method's limit: the stability line warns; within it, it does not.
     let margin = |integrator: Integrator, holds: bool| Margin {
         integrator,
@@ -427,7 +441,7 @@ fn each_line_has_its_colour() {
         margins: vec![margin(Integrator::Euler, false)],
         ..readings()
     };
-    assert_eq!(colour(HudLine::Stability, &past), warning);
+    assert_eq!(stability(&past), warning);
     assert_eq!(colour(HudLine::Integrator, &past), text);
     // Another method past its limit is the ghosts' list's business, not the live line's.
     let other = HudReadings {
@@ -438,7 +452,7 @@ fn each_line_has_its_colour() {
         ],
         ..readings()
     };
-    assert_eq!(colour(HudLine::Stability, &other), text);
+    assert_eq!(stability(&other), text);
 }
 
 /// The residual said against the energy that passed through, once some has: 2e-6 J of error

@@ -77,13 +77,15 @@ pub enum AfterStepsSystems {
     Conclude,
 }
 
-/// The screen's work in `Update`, in this order (the HUD and the panel both write `Text`).
+/// The screen's work in `Update`, in this order (the HUD, the cards and the panel write `Text`).
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum ScreenSystems {
     /// The regions arranged for the window's shape and the cards open, the UI's scale.
     Scale,
     /// The HUD's text and the window title.
     Hud,
+    /// The cards that write their own text (the Stability card).
+    Cards,
     /// Learn mode's card: the chapter and its equations with this frame's numbers.
     Learn,
     /// The panel's values and thumbs, read back from the resources.
@@ -158,6 +160,7 @@ pub fn order_the_frame(app: &mut App) {
         (
             ScreenSystems::Scale,
             ScreenSystems::Hud,
+            ScreenSystems::Cards,
             ScreenSystems::Learn,
             ScreenSystems::Panel,
             ScreenSystems::Draw,

@@ -46,7 +46,6 @@ impl Plugin for HudPlugin {
                 place: 50,
                 offered: |overlays, _| overlays.ghosts,
             })
-            .register_card(CardSpec::always(Card::STABILITY, "Stability", 70))
             .add_plugins(history::EnergyHistoryPlugin)
             .init_resource::<Pace>()
             .add_systems(Startup, spawn_hud)
@@ -66,8 +65,6 @@ impl Card {
     pub const ENERGY: Card = Card("energy");
     /// The ghosts' table (with the ghosts on).
     pub const GHOSTS: Card = Card("ghosts");
-    /// The live integrator's distance from instability.
-    pub const STABILITY: Card = Card("stability");
 }
 
 pub const KINETIC_COLOUR: Color = colour::KINETIC;
@@ -92,7 +89,6 @@ pub enum HudLine {
     Integrator,
     Clock,
     Parameters,
-    Stability,
     EnergyHeading,
     KineticLinear,
     KineticRotational,
@@ -107,14 +103,13 @@ pub enum HudLine {
 
 impl HudLine {
     /// Every line with an entity of its own, in the order they are spawned.
-    pub const SPAWNED: [HudLine; 16] = [
+    pub const SPAWNED: [HudLine; 15] = [
         HudLine::Status,
         HudLine::Hint,
         HudLine::SceneName,
         HudLine::Integrator,
         HudLine::Clock,
         HudLine::Parameters,
-        HudLine::Stability,
         HudLine::EnergyHeading,
         HudLine::KineticLinear,
         HudLine::KineticRotational,
@@ -138,7 +133,6 @@ impl HudLine {
             | HudLine::Clock
             | HudLine::Parameters
             | HudLine::Replay => Slot::Card(Card::READOUTS),
-            HudLine::Stability => Slot::Card(Card::STABILITY),
             HudLine::Ghosts => Slot::Card(Card::GHOSTS),
             HudLine::Help => Slot::Card(Card::CONTROLS),
             HudLine::EnergyHeading
@@ -171,9 +165,6 @@ impl HudLine {
             HudLine::BandPotential => BAND_ENERGY_COLOUR,
             HudLine::Total => TOTAL_COLOUR,
             HudLine::Integrator if readings.divergence.is_some() => WARNING_COLOUR,
-            HudLine::Stability if readings.live_margin().is_some_and(|m| !m.holds) => {
-                WARNING_COLOUR
-            }
             HudLine::Status if readings.divergence.is_some() => WARNING_COLOUR,
             HudLine::Hint if readings.news.is_some() => TEXT_COLOUR,
             HudLine::EnergyHeading
@@ -196,10 +187,6 @@ impl HudLine {
                 format!("scene {}: {summary}", r.scene)
             }
             HudLine::Ghosts => ghost_lines(r),
-            HudLine::Stability => match r.live_margin() {
-                Some(margin) => format!("stability: {}", stability_text(margin)),
-                None => String::new(),
-            },
             HudLine::Integrator => {
                 let mut line = format!("integrator {}", r.integrator);
                 if r.integrator == Integrator::Auto {
@@ -390,25 +377,6 @@ fn ghost_lines(r: &HudReadings) -> String {
         .join("\n")
 }
 
-/// Writes out the live integrator's margin in full.
-///
-/// It gives ω·dt now against the method's limit at this damping, and the stiffest band it holds.
-fn stability_text(margin: &Margin) -> String {
-    let now = format!("{} at ω·dt {:.2}", margin.integrator, margin.omega_dt);
-    match margin.stiffest {
-        Limit::Any => format!("{now}, stable at any k"),
-        Limit::Never => format!("{now}: UNSTABLE at any k without more damping"),
-        Limit::UpTo(k) => {
-            let limit = margin.limit_omega_dt.unwrap_or(f64::NAN);
-            if margin.holds {
-                format!("{now} of {limit:.2}: holds k up to {}", number(k))
-            } else {
-                format!("{now}, past its {limit:.2}: UNSTABLE above k {}", number(k))
-            }
-        }
-    }
-}
-
 /// Writes a ghost's margin, short: whether it holds the band and up to which k.
 fn stability_short(margin: &Margin) -> String {
     match (margin.stiffest, margin.holds) {
@@ -478,15 +446,6 @@ pub struct HudReadings {
     pub ghosts: Vec<GhostReading>,
     /// Every integrator's distance from instability now.
     pub margins: Vec<Margin>,
-}
-
-impl HudReadings {
-    /// Returns the live integrator's margin.
-    fn live_margin(&self) -> Option<&Margin> {
-        self.margins
-            .iter()
-            .find(|m| m.integrator == self.integrator)
-    }
 }
 
 /// What the HUD says about one ghost.
