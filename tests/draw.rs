@@ -408,15 +408,14 @@ fn plot_canvas(game: &mut Game) -> (rubber_band_box::game::screen::chart::Canvas
     (canvas, plot_frame(canvas.size()))
 }
 
-/// The plot (P): each ghost's point is its own figures, as the HUD lists them (distance from
+/// The plot (P): each ghost's point is its own figures, as the ghosts' table lists them (distance from
 /// the reference, and time per step times the step rate), drawn in its colour where the
 /// report's axes put it in the plot card's canvas; a diverged ghost is a cross at the right
 /// edge.
 #[test]
 fn the_plot_puts_each_ghost_where_its_own_figures_say() {
-    use bevy::ecs::system::RunSystemOnce;
     use rubber_band_box::game::ghosts::Ghosts;
-    use rubber_band_box::game::hud::HudSources;
+    use rubber_band_box::game::ghosts::table::readings as table_readings;
     use rubber_band_box::game::screen::chart::ChartGizmos;
     use rubber_band_box::game::screen::plot::{place, plot_points};
 
@@ -424,12 +423,9 @@ fn the_plot_puts_each_ghost_where_its_own_figures_say() {
     game.tap_key(KeyCode::KeyP);
     game.press_at(DVec2::new(200.0, 120.0));
     game.update(30);
-    let readings = game
-        .world()
-        .run_system_once(|sources: HudSources| sources.readings())
-        .unwrap();
     let world = game.world();
     let live = *world.resource::<Integrator>();
+    let readings = table_readings(world.resource::<Ghosts>(), live);
     let points = plot_points(world.resource::<Ghosts>(), 100.0, live);
     assert_eq!(
         points.len(),
@@ -438,10 +434,9 @@ fn the_plot_puts_each_ghost_where_its_own_figures_say() {
     );
     for point in &points {
         let listed = readings
-            .ghosts
             .iter()
             .find(|g| g.name == point.kind.name())
-            .expect("listed in the HUD");
+            .expect("listed in the ghosts' table");
         assert_eq!(point.error, listed.distance, "{}", listed.name);
         assert_eq!(point.cost, listed.ns_per_step * 100.0, "{}", listed.name);
         assert!(point.cost > 0.0, "{} was timed", listed.name);

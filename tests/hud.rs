@@ -4,6 +4,7 @@
 mod common;
 
 use common::*;
+use rubber_band_box::game::ghosts::table::GhostCell;
 use rubber_band_box::game::hud::HudReadings;
 use rubber_band_box::game::input::controls::{HUD, PAUSE, STIFFER};
 use rubber_band_box::game::stability::card::{StabilityLine, line as stability_line};
@@ -38,8 +39,6 @@ fn readings() -> HudReadings {
         news: None,
         playback: None,
         scene: "tutorial".to_owned(),
-        ghosts: Vec::new(),
-        margins: Vec::new(),
     }
 }
 
@@ -324,7 +323,7 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
     );
     game.tap_key(KeyCode::KeyG);
     game.update(2);
-    let ghosts = game.hud(HudLine::Ghosts);
+    let ghosts = game.ghost_table();
     let row = |name: &str| {
         ghosts
             .lines()
@@ -365,7 +364,7 @@ fn numbers_are_shown_as_a_person_reads_them() {
     );
 }
 
-/// The HUD only shows: none of its nodes takes a press, so a long line lying over the panel
+/// The HUD and the cards' texts only show: none of their nodes takes a press, so a long line lying over the panel
 /// on a small screen never keeps a click from the panel's button under it.
 #[test]
 fn the_hud_takes_no_press() {
@@ -374,7 +373,12 @@ fn the_hud_takes_no_press() {
     game.update(1);
     let world = game.world();
     let nodes: Vec<Option<Pickable>> = world
-        .query_filtered::<Option<&Pickable>, Or<(With<Hud>, With<HudLine>)>>()
+        .query_filtered::<Option<&Pickable>, Or<(
+            With<Hud>,
+            With<HudLine>,
+            With<GhostCell>,
+            With<StabilityLine>,
+        )>>()
         .iter(world)
         .map(|pickable| pickable.cloned())
         .collect();
@@ -402,7 +406,7 @@ fn each_line_has_its_colour() {
     let text = colour(HudLine::SceneName, &calm);
     let dim = colour(HudLine::EnergyHeading, &calm);
     assert_ne!(text, dim);
-    for line in [HudLine::Help, HudLine::Replay, HudLine::Ghosts] {
+    for line in [HudLine::Help, HudLine::Replay] {
         assert_eq!(colour(line, &calm), dim, "{line:?}");
     }
     for line in [
@@ -423,10 +427,11 @@ fn each_line_has_its_colour() {
     for other in [text, dim, KINETIC_COLOUR, BAND_ENERGY_COLOUR, TOTAL_COLOUR] {
         assert_ne!(warning, other);
     }
-    // The Stability card's line, in its own folder, colours itself the same way.
-    let stability = |r: &HudReadings| stability_line(&r.margins, r.integrator).1;
-    assert_eq!(stability(&calm), text);
-    assert_eq!(stability(&diverged), text);
+    // The Stability card's line, in its own folder, colours itself the same way: with no
+    // margin known, or within it, in the text's colour even when the integrator diverged.
+    let stability = |margins: &[Margin], live: Integrator| stability_line(margins, live).1;
+    assert_eq!(stability(&[], calm.integrator), text);
+    assert_eq!(stability(&[], diverged.integrator), text);
     // Past the live method's limit: the stability line warns; within it, it does not.
     let margin = |integrator: Integrator, holds: bool| Margin {
         integrator,
@@ -438,21 +443,17 @@ fn each_line_has_its_colour() {
     };
     let past = HudReadings {
         integrator: Integrator::Euler,
-        margins: vec![margin(Integrator::Euler, false)],
         ..readings()
     };
-    assert_eq!(stability(&past), warning);
+    let past_margins = [margin(Integrator::Euler, false)];
+    assert_eq!(stability(&past_margins, past.integrator), warning);
     assert_eq!(colour(HudLine::Integrator, &past), text);
     // Another method past its limit is the ghosts' list's business, not the live line's.
-    let other = HudReadings {
-        integrator: Integrator::Euler,
-        margins: vec![
-            margin(Integrator::Euler, true),
-            margin(Integrator::Rk4, false),
-        ],
-        ..readings()
-    };
-    assert_eq!(stability(&other), text);
+    let other = [
+        margin(Integrator::Euler, true),
+        margin(Integrator::Rk4, false),
+    ];
+    assert_eq!(stability(&other, Integrator::Euler), text);
 }
 
 /// The residual said against the energy that passed through, once some has: 2e-6 J of error
@@ -478,7 +479,7 @@ fn the_residual_is_said_against_the_energy_through() {
 /// method says the stiffest band it holds.
 #[test]
 fn a_ghosts_work_says_its_substeps_when_there_are_several() {
-    use rubber_band_box::game::hud::GhostReading;
+    use rubber_band_box::game::ghosts::table::{GhostReading, lines};
     let ghost = |name: &'static str, substeps: u32, evaluations: u32, capped: u64| GhostReading {
         name,
         colour: Color::WHITE,
@@ -501,12 +502,8 @@ fn a_ghosts_work_says_its_substeps_when_there_are_several() {
         stiffest: Limit::UpTo(1e4),
         limit_omega_dt: Some(2.8),
     };
-    let r = HudReadings {
-        ghosts: vec![ghost("rk4", 1, 4, 0), ghost("reference", 3, 72, 5)],
-        margins: vec![rk4_margin],
-        ..readings()
-    };
-    let list = HudLine::Ghosts.text(&r);
+    let ghosts = [ghost("rk4", 1, 4, 0), ghost("reference", 3, 72, 5)];
+    let list = lines(&ghosts, &[rk4_margin]);
     let row = |name: &str| {
         list.lines()
             .find(|line| line.trim_start().starts_with(name))
@@ -548,7 +545,7 @@ fn the_clock_and_the_live_ghost_come_from_the_game() {
     game.tap_key(KeyCode::KeyG);
     game.update(2);
     assert_eq!(offered(&mut game), (true, true));
-    let list = game.hud(HudLine::Ghosts);
+    let list = game.ghost_table();
     let live: Vec<&str> = list.lines().filter(|l| l.contains("(live)")).collect();
     assert_eq!(live.len(), 1, "{list}");
     assert!(live[0].trim_start().starts_with("auto (live)"), "{list}");

@@ -104,7 +104,7 @@ fn every_ghost_steps_under_the_live_band() {
     assert!(distance(Integrator::Euler) > 1e-3);
     // The books: auto's residual is tiny, explicit Euler's is not.
     assert!(of(Integrator::Auto).residual().abs() < 1e-3 * of(Integrator::Euler).residual().abs());
-    let hud = game.hud(HudLine::Ghosts);
+    let hud = game.ghost_table();
     assert!(
         hud.contains("auto (live)") && hud.contains("reference"),
         "{hud}"
@@ -140,10 +140,7 @@ fn a_diverged_ghost_freezes_with_its_step() {
     game.update(10);
     let ghosts = game.world().resource::<Ghosts>();
     assert_eq!(ghosts.ghosts[0].stepper.state, frozen);
-    assert!(
-        game.hud(HudLine::Ghosts)
-            .contains(&format!("DIVERGED  @{step}"))
-    );
+    assert!(game.ghost_table().contains(&format!("DIVERGED  @{step}")));
 }
 
 /// A reset, and a scene loaded, start the ghosts again from the live box; switched off they
@@ -174,7 +171,7 @@ fn ghosts_restart_with_a_reset_and_a_scene_and_go_when_switched_off() {
     game.tap_key(GHOSTS);
     game.update(1);
     assert!(game.world().resource::<Ghosts>().ghosts.is_empty());
-    assert_eq!(game.hud(HudLine::Ghosts), "");
+    assert_eq!(game.ghost_table(), "");
 }
 
 /// Each number key loads the scene at its place in the core's table: its parameters (at the

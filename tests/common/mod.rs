@@ -301,9 +301,6 @@ impl Game {
 
     /// What a HUD line says now.
     pub fn hud(&mut self, line: HudLine) -> String {
-        if line == HudLine::Ghosts {
-            return self.ghost_table();
-        }
         let mut lines = self.world().query::<(&HudLine, &Text)>();
         lines
             .iter(self.world())
@@ -314,7 +311,7 @@ impl Game {
 
     /// The ghosts' table as its grid shows it: a row a line, the cells two spaces apart.
     pub fn ghost_table(&mut self) -> String {
-        use rubber_band_box::game::hud::GhostCell;
+        use rubber_band_box::game::ghosts::table::GhostCell;
         let mut cells: Vec<(GhostCell, String)> = self
             .world()
             .query::<(&GhostCell, &Text)>()

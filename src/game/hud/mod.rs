@@ -16,7 +16,6 @@ use bevy::ecs::system::SystemParam;
 use bevy::picking::Pickable;
 use bevy::prelude::*;
 
-use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::input::controls::help_line;
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slot};
 use crate::game::replays::playback::Playback;
@@ -24,9 +23,7 @@ use crate::game::replays::recording::Recorder;
 use crate::game::schedule::ScreenSystems;
 use crate::game::shared::{SceneName, StatusMessage, linear_damping_readout, readable};
 use crate::game::simulation::{Band, Bodies, EnergyBooks, StepStats, mechanical_energies};
-use crate::game::stability::StabilityMargins;
 use crate::game::theme::{self, colour, size, space};
-use crate::physics::stability::{Limit, Margin};
 use crate::physics::{Energies, EnergyLedger, Integrator, Scene, SceneParams};
 pub use history::EnergyHistory;
 use pace::{Pace, behind, measure_pace};
@@ -40,12 +37,6 @@ impl Plugin for HudPlugin {
         }
         app.register_card(CardSpec::always(Card::READOUTS, "Readouts", 30))
             .register_card(CardSpec::always(Card::ENERGY, "Energy", 40))
-            .register_card(CardSpec {
-                card: Card::GHOSTS,
-                title: "Ghosts",
-                place: 50,
-                offered: |overlays, _| overlays.ghosts,
-            })
             .add_plugins(history::EnergyHistoryPlugin)
             .init_resource::<Pace>()
             .add_systems(Startup, spawn_hud)
@@ -63,8 +54,6 @@ impl Card {
     pub const READOUTS: Card = Card("readouts");
     /// The energies, the ledger and the energy graph.
     pub const ENERGY: Card = Card("energy");
-    /// The ghosts' table (with the ghosts on).
-    pub const GHOSTS: Card = Card("ghosts");
 }
 
 pub const KINETIC_COLOUR: Color = colour::KINETIC;
@@ -77,8 +66,7 @@ const WARNING_COLOUR: Color = colour::WARNING;
 /// One line of the HUD.
 ///
 /// Each is a `Text` entity whose content [`HudLine::text`] writes, in the region `HudLine::slot`
-/// names; the ghosts' table is a grid of cells of its own (`ghost_table`), its text the same
-/// cells a row a line.
+/// names. The Stability and Ghosts cards write their own (`game::stability`, `game::ghosts`).
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
 pub enum HudLine {
     /// Over the scene: what a player must always see.
@@ -97,7 +85,6 @@ pub enum HudLine {
     Ledger,
     Residual,
     Replay,
-    Ghosts,
     Help,
 }
 
@@ -133,7 +120,6 @@ impl HudLine {
             | HudLine::Clock
             | HudLine::Parameters
             | HudLine::Replay => Slot::Card(Card::READOUTS),
-            HudLine::Ghosts => Slot::Card(Card::GHOSTS),
             HudLine::Help => Slot::Card(Card::CONTROLS),
             HudLine::EnergyHeading
             | HudLine::KineticLinear
@@ -167,11 +153,7 @@ impl HudLine {
             HudLine::Integrator if readings.divergence.is_some() => WARNING_COLOUR,
             HudLine::Status if readings.divergence.is_some() => WARNING_COLOUR,
             HudLine::Hint if readings.news.is_some() => TEXT_COLOUR,
-            HudLine::EnergyHeading
-            | HudLine::Help
-            | HudLine::Hint
-            | HudLine::Replay
-            | HudLine::Ghosts => DIM_COLOUR,
+            HudLine::EnergyHeading | HudLine::Help | HudLine::Hint | HudLine::Replay => DIM_COLOUR,
             _ => TEXT_COLOUR,
         }
     }
@@ -186,7 +168,6 @@ impl HudLine {
                     Scene::named(&r.scene).map_or("a recorded game", |scene| scene.summary);
                 format!("scene {}: {summary}", r.scene)
             }
-            HudLine::Ghosts => ghost_lines(r),
             HudLine::Integrator => {
                 let mut line = format!("integrator {}", r.integrator);
                 if r.integrator == Integrator::Auto {
@@ -305,97 +286,6 @@ fn status_line(r: &HudReadings) -> String {
     line
 }
 
-/// The ghosts' table's columns.
-const GHOST_COLUMNS: [&str; 6] = [
-    "method", "error px", "energy", "ns/step", "evals", "holds k",
-];
-
-/// Returns the ghosts' table: a header and a row per ghost, each cell its text.
-///
-/// A row's cells read left to right: the ghost's distance from the reference, its energy residual,
-/// its time and work per step, and the stiffest band its method holds at this step. Empty while the
-/// ghosts are off.
-fn ghost_table(r: &HudReadings) -> Vec<[String; 6]> {
-    if r.ghosts.is_empty() {
-        return Vec::new();
-    }
-    let mut rows = vec![GHOST_COLUMNS.map(str::to_owned)];
-    for g in &r.ghosts {
-        let name = if g.live {
-            format!("{} (live)", g.name)
-        } else {
-            g.name.to_owned()
-        };
-        let margin = r.margins.iter().find(|m| m.integrator.name() == g.name);
-        let holds = match (margin, g.capped) {
-            (Some(margin), _) => stability_short(margin),
-            (None, 0) => String::new(),
-            (None, capped) => format!("capped {capped}"),
-        };
-        let work = if g.substeps > 1 {
-            format!("{}×{}", g.substeps, g.evaluations)
-        } else {
-            g.evaluations.to_string()
-        };
-        let row = match g.diverged_at {
-            Some(step) => [
-                name,
-                "DIVERGED".to_owned(),
-                format!("@{step}"),
-                String::new(),
-                String::new(),
-                holds,
-            ],
-            None => [
-                name,
-                g.distance.map_or("-".to_owned(), |d| format!("{d:.1e}")),
-                format!("{:+.1e}", g.residual),
-                format!("{:.0}", g.ns_per_step),
-                work,
-                holds,
-            ],
-        };
-        rows.push(row);
-    }
-    rows
-}
-
-/// Writes the table as text, a row a line, its cells two spaces apart.
-///
-/// A test or a terminal reads it.
-fn ghost_lines(r: &HudReadings) -> String {
-    ghost_table(r)
-        .iter()
-        .map(|row| {
-            row.iter()
-                .filter(|cell| !cell.is_empty())
-                .cloned()
-                .collect::<Vec<_>>()
-                .join("  ")
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
-}
-
-/// Writes a ghost's margin, short: whether it holds the band and up to which k.
-fn stability_short(margin: &Margin) -> String {
-    match (margin.stiffest, margin.holds) {
-        (Limit::Any, _) => "any k".to_owned(),
-        (Limit::Never, _) => "✗ no k".to_owned(),
-        (Limit::UpTo(k), true) => format!("k<{}", number(k)),
-        (Limit::UpTo(k), false) => format!("✗ k<{}", number(k)),
-    }
-}
-
-/// Writes a number as a person reads it: whole below 10⁴, two digits in powers of ten above.
-fn number(value: f64) -> String {
-    if value < 1e4 {
-        format!("{value:.0}")
-    } else {
-        format!("{value:.1e}")
-    }
-}
-
 /// Writes an energy fixed-point in the usual range, in scientific notation outside it.
 fn energy(value: f64) -> String {
     // An empty sum is −0.0 in Rust: show it as 0.
@@ -442,27 +332,6 @@ pub struct HudReadings {
     pub playback: Option<(u64, u64)>,
     /// The scene's name (the core's table's, or a recording's).
     pub scene: String,
-    /// Every ghost, while they are on.
-    pub ghosts: Vec<GhostReading>,
-    /// Every integrator's distance from instability now.
-    pub margins: Vec<Margin>,
-}
-
-/// What the HUD says about one ghost.
-#[derive(Debug, Clone, PartialEq)]
-pub struct GhostReading {
-    pub name: &'static str,
-    /// Its colour, in its outline, its row and its point.
-    pub colour: Color,
-    /// The live box's integrator.
-    pub live: bool,
-    pub distance: Option<f64>,
-    pub residual: f64,
-    pub substeps: u32,
-    pub evaluations: u32,
-    pub ns_per_step: f64,
-    pub diverged_at: Option<u64>,
-    pub capped: u64,
 }
 
 #[derive(SystemParam)]
@@ -480,8 +349,6 @@ pub struct HudSources<'w, 's> {
     status: Res<'w, StatusMessage>,
     playback: Res<'w, Playback>,
     scene: Res<'w, SceneName>,
-    ghosts: Res<'w, Ghosts>,
-    margins: Res<'w, StabilityMargins>,
     boxes: Bodies<'w, 's>,
     bands: Query<'w, 's, &'static Band>,
 }
@@ -525,41 +392,13 @@ impl HudSources<'_, '_> {
             news: None,
             playback: self.playback.progress(),
             scene: self.scene.0.clone(),
-            ghosts: self
-                .ghosts
-                .ghosts
-                .iter()
-                .map(|ghost| GhostReading {
-                    name: ghost.kind.name(),
-                    colour: ghost.kind.colour(),
-                    live: ghost.kind == GhostKind::Method(*self.integrator),
-                    distance: self.ghosts.distance_from_reference(ghost),
-                    residual: ghost.residual(),
-                    substeps: ghost.last.substeps,
-                    evaluations: ghost.last.evaluations,
-                    ns_per_step: ghost.ns_per_step,
-                    diverged_at: ghost.diverged_at,
-                    capped: ghost.capped,
-                })
-                .collect(),
-            margins: self.margins.0.clone(),
         }
     }
 }
 
-/// A text of the HUD (its lines and its table).
+/// A text of the HUD (its lines).
 #[derive(Component, Debug)]
 pub struct Hud;
-
-/// A cell of the ghosts' table: its row (0 the header) and column.
-#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
-pub struct GhostCell {
-    pub row: usize,
-    pub column: usize,
-}
-
-/// Rows the table has room for: the header, every integrator and the reference.
-const GHOST_ROWS: usize = Integrator::ALL.len() + 2;
 
 fn spawn_hud(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
     let slot = |wanted: Slot| {
@@ -603,59 +442,13 @@ fn spawn_hud(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
             ChildOf(parent),
         ));
     }
-    // The ghosts' table: a grid, so that its columns line up in any face.
-    let Some(card) = slot(Slot::Card(Card::GHOSTS)) else {
-        return;
-    };
-    let grid = commands
-        .spawn((
-            Name::new("Ghosts' table"),
-            Hud,
-            Pickable::IGNORE,
-            Node {
-                display: Display::Grid,
-                grid_template_columns: vec![RepeatedGridTrack::auto(GHOST_COLUMNS.len() as u16)],
-                column_gap: px(space::GAP),
-                padding: UiRect::all(px(space::GAP)),
-                ..default()
-            },
-            BackgroundColor(colour::CARD),
-            ChildOf(card),
-        ))
-        .id();
-    for row in 0..GHOST_ROWS {
-        for column in 0..GHOST_COLUMNS.len() {
-            let font = if column == 0 || row == 0 {
-                theme::text_font(size::CAPTION)
-            } else {
-                theme::figures_font(size::CAPTION)
-            };
-            commands.spawn((
-                GhostCell { row, column },
-                Text::default(),
-                font,
-                TextColor(if row == 0 { DIM_COLOUR } else { TEXT_COLOUR }),
-                Pickable::IGNORE,
-                Node {
-                    justify_self: if column == 0 {
-                        JustifySelf::Start
-                    } else {
-                        JustifySelf::End
-                    },
-                    ..default()
-                },
-                ChildOf(grid),
-            ));
-        }
-    }
 }
 
 fn show_hud(
     sources: HudSources,
     real_time: Res<Time<Real>>,
     mut news: Local<News>,
-    mut lines: Query<(&HudLine, &mut Text, &mut TextColor), Without<GhostCell>>,
-    mut cells: Query<(&GhostCell, &mut Text, &mut TextColor, &mut Node), Without<HudLine>>,
+    mut lines: Query<(&HudLine, &mut Text, &mut TextColor)>,
 ) {
     let mut readings = sources.readings();
     let now = real_time.elapsed_secs_f64();
@@ -675,35 +468,5 @@ fn show_hud(
             text.0 = content;
         }
         colour.set_if_neq(TextColor(line.colour(&readings)));
-    }
-    let table = ghost_table(&readings);
-    for (cell, mut text, mut colour, mut node) in &mut cells {
-        let content = table
-            .get(cell.row)
-            .map_or("", |row| row[cell.column].as_str());
-        if text.0 != content {
-            text.0 = content.to_owned();
-        }
-        // A row with nothing in it takes no room.
-        let display = if cell.row < table.len() {
-            Display::Flex
-        } else {
-            Display::None
-        };
-        if node.display != display {
-            node.display = display;
-        }
-        let ghost = cell
-            .row
-            .checked_sub(1)
-            .and_then(|index| readings.ghosts.get(index));
-        let wanted = match ghost {
-            None => DIM_COLOUR,
-            Some(g) if g.diverged_at.is_some() && cell.column > 0 => WARNING_COLOUR,
-            Some(g) if cell.column == 0 => g.colour,
-            Some(_) if cell.column == 5 && content.starts_with('✗') => WARNING_COLOUR,
-            Some(_) => TEXT_COLOUR,
-        };
-        colour.set_if_neq(TextColor(wanted));
     }
 }

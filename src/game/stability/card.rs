@@ -22,7 +22,13 @@ impl Card {
 pub(super) fn plugin(app: &mut App) {
     app.register_card(CardSpec::always(Card::STABILITY, "Stability", 70))
         .add_systems(Startup, spawn_line)
-        .add_systems(Update, show_line.in_set(ScreenSystems::Cards));
+        .add_systems(
+            Update,
+            show_line
+                .in_set(ScreenSystems::Cards)
+                // Each card writes only its own texts.
+                .ambiguous_with(ScreenSystems::Cards),
+        );
 }
 
 /// The card's line of text.

@@ -1,7 +1,8 @@
-//! Ghosts (G): every integrator, and a reference, stepping the live box's scene beside it under
-//! the live band (the same anchor path, the same attach and release steps), so that a player
-//! sees each method's distance from the converged answer follow their own hand. Each ghost is
-//! the core's [`Stepper`] with its own energy books; the live box never reads them.
+//! The ghosts' steppers: every integrator, and a reference, stepping the live box's scene
+//! beside it under the live band (the same anchor path, the same attach and release steps), so
+//! that a player sees each method's distance from the converged answer follow their own hand.
+//! Each ghost is the core's [`Stepper`] with its own energy books; the live box never reads
+//! them.
 //!
 //! A ghost whose step leaves the bounds freezes there, with the step. The reference is a
 //! Taylor series of order 24 at 1e-13 px a step, with a budget of substeps so that a stiff
@@ -20,14 +21,11 @@ use crate::physics::{
     StepInfo, Stepper,
 };
 
-pub struct GhostsPlugin;
-
-impl Plugin for GhostsPlugin {
-    fn build(&self, app: &mut App) {
-        app.init_resource::<Ghosts>()
-            .add_observer(restart_on_reset)
-            .add_systems(FixedUpdate, step_ghosts.in_set(PhysicsSystems::Observe));
-    }
+/// Steps the ghosts beside the box and restarts them at a reset.
+pub(super) fn plugin(app: &mut App) {
+    app.init_resource::<Ghosts>()
+        .add_observer(restart_on_reset)
+        .add_systems(FixedUpdate, step_ghosts.in_set(PhysicsSystems::Observe));
 }
 
 /// The reference: Taylor series of order 24 at 1e-13 px per step.
