@@ -12,6 +12,7 @@
 //! The plugins that fill the regions find them by their [`Slot`]; this module spawns the
 //! frame in `PreStartup`, they spawn their content in `Startup`.
 
+use bevy::ecs::system::SystemParam;
 use bevy::picking::Pickable;
 use bevy::prelude::*;
 use bevy::ui::{CalculatedClip, UiGlobalTransform};
@@ -350,6 +351,27 @@ pub enum Slot {
     Hint,
     /// A card's body.
     Card(Card),
+}
+
+/// The regions' slots: where a plugin finds the place for its content.
+#[derive(SystemParam)]
+pub struct Slots<'w, 's> {
+    slots: Query<'w, 's, (Entity, &'static Slot)>,
+}
+
+impl Slots<'_, '_> {
+    /// Returns the slot's entity, if the layout has spawned it.
+    pub fn find(&self, wanted: Slot) -> Option<Entity> {
+        self.slots
+            .iter()
+            .find(|(_, slot)| **slot == wanted)
+            .map(|(entity, _)| entity)
+    }
+
+    /// Returns the body of `card`, if the card registered and the layout spawned it.
+    pub fn card_body(&self, card: Card) -> Option<Entity> {
+        self.find(Slot::Card(card))
+    }
 }
 
 /// A card's title: a button that folds it (the panel presses it, as its other buttons).

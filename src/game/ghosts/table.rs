@@ -7,7 +7,7 @@ use bevy::picking::Pickable;
 use bevy::prelude::*;
 
 use super::steppers::{GhostKind, Ghosts};
-use crate::game::layout::{Card, CardSpec, RegisterCard, Slot};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slots};
 use crate::game::schedule::ScreenSystems;
 use crate::game::stability::StabilityMargins;
 use crate::game::theme::{self, colour, size, space};
@@ -176,11 +176,8 @@ fn number(value: f64) -> String {
 }
 
 /// Spawns the table: a grid, so that its columns line up in any face.
-fn spawn_table(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
-    let Some((card, _)) = slots
-        .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::GHOSTS))
-    else {
+fn spawn_table(mut commands: Commands, slots: Slots) {
+    let Some(card) = slots.card_body(Card::GHOSTS) else {
         return;
     };
     let grid = commands

@@ -17,7 +17,7 @@ use bevy::picking::Pickable;
 use bevy::prelude::*;
 
 use crate::game::input::controls::help_line;
-use crate::game::layout::{Card, CardSpec, RegisterCard, Slot};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slot, Slots};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::schedule::ScreenSystems;
@@ -400,15 +400,9 @@ impl HudSources<'_, '_> {
 #[derive(Component, Debug)]
 pub struct Hud;
 
-fn spawn_hud(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
-    let slot = |wanted: Slot| {
-        slots
-            .iter()
-            .find(|(_, slot)| **slot == wanted)
-            .map(|(entity, _)| entity)
-    };
+fn spawn_hud(mut commands: Commands, slots: Slots) {
     for line in HudLine::SPAWNED {
-        let Some(parent) = slot(line.slot()) else {
+        let Some(parent) = slots.find(line.slot()) else {
             continue;
         };
         let padding = match line.slot() {

@@ -15,7 +15,7 @@ use bevy::ui_widgets::{
 };
 
 use crate::game::input::controls::{Action, Parameter};
-use crate::game::layout::{Card, CardButton, CardSpec, Cards, RegisterCard, Shape, Slot};
+use crate::game::layout::{Card, CardButton, CardSpec, Cards, RegisterCard, Shape, Slot, Slots};
 use crate::game::learn::ChapterButtons;
 #[cfg(target_arch = "wasm32")]
 use crate::game::schedule::AfterBevySystems;
@@ -232,10 +232,10 @@ fn spawn_chapter_buttons(mut commands: Commands, rows: Query<Entity, With<Chapte
     }
 }
 
-fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
+fn spawn_panel(mut commands: Commands, slots: Slots) {
     // The dock's own switch stands on the status line, where a finger finds it with the dock
     // hidden.
-    if let Some((status, _)) = slots.iter().find(|(_, slot)| **slot == Slot::StatusTools) {
+    if let Some(status) = slots.find(Slot::StatusTools) {
         spawn_button(
             &mut commands,
             status,
@@ -243,10 +243,7 @@ fn spawn_panel(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
             PanelButton::Send(Action::ToggleDock),
         );
     }
-    let Some((card, _)) = slots
-        .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::CONTROLS))
-    else {
+    let Some(card) = slots.card_body(Card::CONTROLS) else {
         return;
     };
     let body = commands

@@ -15,7 +15,7 @@ use self::chapters::{CHAPTERS, Equation, Task};
 use self::equations::Quantities;
 use self::twin::{CentreTwin, TWIN_OFFSET};
 use crate::game::camera::{CameraFrame, Stage};
-use crate::game::layout::{Card, CardSpec, Cards, RegisterCard, Slot};
+use crate::game::layout::{Card, CardSpec, Cards, RegisterCard, Slots};
 use crate::game::pointer::Grip;
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
@@ -406,11 +406,8 @@ fn equation_colour(equation: Equation) -> Color {
 #[derive(Component, Debug)]
 pub struct ChapterButtons;
 
-fn spawn_card(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
-    let Some((card, _)) = slots
-        .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::LEARN))
-    else {
+fn spawn_card(mut commands: Commands, slots: Slots) {
+    let Some(card) = slots.card_body(Card::LEARN) else {
         return;
     };
     let text = |commands: &mut Commands, which: LearnText, font: f32, gap: f32| {

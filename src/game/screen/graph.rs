@@ -7,7 +7,7 @@ use bevy::ui::UiGlobalTransform;
 use bevy::window::PrimaryWindow;
 
 use crate::game::hud::history::EnergyHistory;
-use crate::game::layout::{Card, Slot};
+use crate::game::layout::{Card, Slots};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::chart::{Canvas, ChartGizmos};
 use crate::game::shared::readable;
@@ -34,11 +34,8 @@ struct EnergyCaption;
 /// The canvas's height in the UI's units.
 const GRAPH_HEIGHT: f32 = 90.0;
 
-fn spawn_canvas(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
-    let Some((card, _)) = slots
-        .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::ENERGY))
-    else {
+fn spawn_canvas(mut commands: Commands, slots: Slots) {
+    let Some(card) = slots.card_body(Card::ENERGY) else {
         return;
     };
     commands.spawn((

@@ -15,7 +15,7 @@ use bevy::ui::UiGlobalTransform;
 use bevy::window::PrimaryWindow;
 
 use crate::game::ghosts::{GhostKind, Ghosts};
-use crate::game::layout::{Card, CardSpec, RegisterCard, Slot};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slots};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::chart::{Canvas, ChartGizmos, text_box};
 use crate::game::shared::Overlays;
@@ -246,11 +246,8 @@ fn absolute_text(text: String, shade: Color) -> impl Bundle {
     )
 }
 
-fn spawn_canvas(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
-    let Some((card, _)) = slots
-        .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::PLOT))
-    else {
+fn spawn_canvas(mut commands: Commands, slots: Slots) {
+    let Some(card) = slots.card_body(Card::PLOT) else {
         return;
     };
     let canvas = commands

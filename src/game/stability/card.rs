@@ -6,7 +6,7 @@ use bevy::picking::Pickable;
 use bevy::prelude::*;
 
 use super::margins::StabilityMargins;
-use crate::game::layout::{Card, CardSpec, RegisterCard, Slot};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slots};
 use crate::game::schedule::ScreenSystems;
 use crate::game::shared::readable;
 use crate::game::theme::{self, colour, size, space};
@@ -35,11 +35,8 @@ pub(super) fn plugin(app: &mut App) {
 #[derive(Component, Debug)]
 pub struct StabilityLine;
 
-fn spawn_line(mut commands: Commands, slots: Query<(Entity, &Slot)>) {
-    let Some((card, _)) = slots
-        .iter()
-        .find(|(_, slot)| **slot == Slot::Card(Card::STABILITY))
-    else {
+fn spawn_line(mut commands: Commands, slots: Slots) {
+    let Some(card) = slots.card_body(Card::STABILITY) else {
         return;
     };
     commands.spawn((
