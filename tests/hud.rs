@@ -634,3 +634,34 @@ fn the_status_line_says_when_the_game_falls_behind_the_wall_clock() {
     let status = game.hud(HudLine::Status);
     assert!(!status.contains("behind"), "{status}");
 }
+
+/// The step rate and the time scale read the same wherever they are written: the HUD's clock,
+/// the status line, the window title and the panel's values (one formatter, `shared::hertz`
+/// and `shared::times`; the panel once wrote 12.5 Hz as "12 Hz" and the clock "time x0.25").
+#[test]
+fn the_rate_and_the_time_scale_read_the_same_everywhere() {
+    use rubber_band_box::game::input::controls::{FEWER_STEPS, SLOWER};
+    let mut game = Game::stepping();
+    game.update(1);
+    for key in [FEWER_STEPS, FEWER_STEPS, FEWER_STEPS, SLOWER, SLOWER] {
+        game.tap_key(key);
+        game.update(1);
+    }
+    game.update(2);
+    let window = game.window;
+    let title = game.world().get::<Window>(window).unwrap().title.clone();
+    for shown in [game.hud(HudLine::Clock), game.hud(HudLine::Status), title] {
+        assert!(
+            shown.contains("12.5 Hz") && shown.contains("time ×0.25"),
+            "{shown}"
+        );
+    }
+    let world = game.world();
+    let texts: Vec<String> = world
+        .query::<&Text>()
+        .iter(world)
+        .map(|text| text.0.clone())
+        .collect();
+    assert!(texts.iter().any(|text| text == "12.5 Hz"), "{texts:?}");
+    assert!(texts.iter().any(|text| text == "×0.25"), "{texts:?}");
+}

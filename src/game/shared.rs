@@ -101,6 +101,18 @@ pub fn readable(value: f64) -> String {
     }
 }
 
+/// Writes a rate in hertz as every readout shows it: `100 Hz`, `62.5 Hz`.
+///
+/// The HUD's clock, the status line, the window title and the panel all write it so.
+pub fn hertz(rate: f64) -> String {
+    format!("{} Hz", readable(rate))
+}
+
+/// Writes the time scale as every readout shows it: `×1`, `×0.25`.
+pub fn times(scale: f64) -> String {
+    format!("×{}", readable(scale))
+}
+
 /// Writes the linear damping as the HUD and the panel both show it, `b 5 = 1 /s`.
 ///
 /// It gives the coefficient b (the command line's `--linear-damping`) and the rate b/m at which

@@ -21,7 +21,9 @@ use crate::game::layout::{Card, CardSpec, RegisterCard, Slot, Slots};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::schedule::ScreenSystems;
-use crate::game::shared::{SceneName, StatusMessage, linear_damping_readout, readable};
+use crate::game::shared::{
+    SceneName, StatusMessage, hertz, linear_damping_readout, readable, times,
+};
 use crate::game::simulation::{Band, Bodies, EnergyBooks, StepStats, mechanical_energies};
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{Energies, EnergyLedger, Integrator, Scene, SceneParams};
@@ -189,13 +191,12 @@ impl HudLine {
             }
             HudLine::Clock => {
                 let mut line = format!(
-                    "step {:.2} ms ({} Hz)  time x{}  t {:.2} s  {:.0} fps",
+                    "step {:.2} ms ({})  time {}  t {:.2} s  {:.0} fps",
                     1e3 / r.step_rate_hz,
-                    // The clock counts whole nanoseconds: 240 Hz steps at 239.99998 Hz.
-                    format!("{:.2}", r.step_rate_hz)
-                        .trim_end_matches('0')
-                        .trim_end_matches('.'),
-                    r.time_scale,
+                    // The clock counts whole nanoseconds: 240 Hz steps at 239.99998 Hz, which
+                    // three digits write as 240.
+                    hertz(r.step_rate_hz),
+                    times(r.time_scale),
                     r.simulated_seconds,
                     r.frames_per_second
                 );
@@ -268,11 +269,11 @@ pub const HINT: &str = "drag: pull the box · wheel or pinch: zoom · F: frame �
 /// It says so when paused, diverged, or falling behind the wall clock ([`Pace`]).
 fn status_line(r: &HudReadings) -> String {
     let mut line = format!(
-        "{} · k {} · {} Hz · time ×{} · t {:.1} s",
+        "{} · k {} · {} · time {} · t {:.1} s",
         r.integrator,
         readable(r.stiffness),
-        readable(r.step_rate_hz),
-        readable(r.time_scale),
+        hertz(r.step_rate_hz),
+        times(r.time_scale),
         r.simulated_seconds
     );
     if r.paused {

@@ -5,6 +5,7 @@ use bevy::window::PrimaryWindow;
 
 use crate::game::hud::pace::{Pace, behind};
 use crate::game::input::controls::key_hint;
+use crate::game::shared::{hertz, readable, times};
 use crate::game::simulation::{EnergyBooks, StepStats};
 use crate::physics::{Integrator, SceneParams};
 
@@ -33,10 +34,10 @@ pub fn show_state_in_title(
         );
     }
     title += &format!(
-        ", k {}, {} Hz, time ×{}",
-        params.stiffness,
-        params.step_rate_hz,
-        virtual_time.relative_speed_f64()
+        ", k {}, {}, time {}",
+        readable(params.stiffness),
+        hertz(params.step_rate_hz),
+        times(virtual_time.relative_speed_f64())
     );
     if let Some(behind) = behind(
         pace.0,

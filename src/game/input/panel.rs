@@ -21,7 +21,7 @@ use crate::game::learn::ChapterButtons;
 use crate::game::schedule::AfterBevySystems;
 use crate::game::schedule::{GameSystems, ScreenSystems};
 use crate::game::shared::{
-    Mode, Overlays, SceneName, linear_damping_readout, readable, window_rect,
+    Mode, Overlays, SceneName, hertz, linear_damping_readout, readable, times, window_rect,
 };
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{
@@ -551,8 +551,8 @@ fn show_state(
     for (readout, entity) in &mut readouts {
         let shown = match readout {
             ValueText::Parameter(parameter) => parameter_readout(*parameter, &params),
-            ValueText::StepRate => format!("{:.0} Hz", 1.0 / fixed_time.timestep().as_secs_f64()),
-            ValueText::TimeScale => format!("x{}", virtual_time.relative_speed_f64()),
+            ValueText::StepRate => hertz(1.0 / fixed_time.timestep().as_secs_f64()),
+            ValueText::TimeScale => times(virtual_time.relative_speed_f64()),
         };
         if let Ok(mut text) = texts.get_mut(entity)
             && text.0 != shown
