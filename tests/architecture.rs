@@ -705,3 +705,97 @@ fn the_card_check_finds_a_card_named_in_another_room() {
         ["src/game/hud/mod.rs: Card::STABILITY"]
     );
 }
+
+// --- Visibility: what is public only because a test reads it. ---
+
+/// The most top-level items of `src/` that may be `pub` only for the tests: a ratchet, lowered
+/// as tests of private logic move beside the code (`#[cfg(test)]`); it may never rise.
+const PUB_FOR_TESTS_AT_MOST: usize = 66;
+
+/// Returns the top-level `pub` items that no other file of `src/` names but `tests/` or
+/// `benches/` do, as "file: name".
+fn pub_only_for_tests(src: &[(std::path::PathBuf, String)], tests: &str) -> Vec<String> {
+    let kinds = [
+        "const fn ",
+        "fn ",
+        "struct ",
+        "enum ",
+        "const ",
+        "static ",
+        "type ",
+        "trait ",
+    ];
+    let names = |text: &str, wanted: &str| {
+        text.split(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .filter(|word| *word == wanted)
+            .count()
+    };
+    let mut found = Vec::new();
+    for (relative, source) in src {
+        for line in source.lines() {
+            let Some(rest) = line.strip_prefix("pub ") else {
+                continue;
+            };
+            let Some(item) = kinds.iter().find_map(|kind| rest.strip_prefix(kind)) else {
+                continue;
+            };
+            let name: String = item
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            let elsewhere: usize = src
+                .iter()
+                .filter(|(other, _)| other != relative)
+                .map(|(_, text)| names(text, &name))
+                .sum();
+            if elsewhere == 0 && names(tests, &name) > 0 {
+                found.push(format!("src/{}: {name}", relative.display()));
+            }
+        }
+    }
+    found.sort();
+    found
+}
+
+#[test]
+fn no_more_items_are_public_only_for_the_tests() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut tests = String::new();
+    for folder in ["tests", "benches"] {
+        let mut stack = vec![root.join(folder)];
+        while let Some(dir) = stack.pop() {
+            for entry in fs::read_dir(&dir).expect("a readable folder") {
+                let path = entry.expect("an entry").path();
+                if path.is_dir() {
+                    stack.push(path);
+                } else if path.extension().is_some_and(|e| e == "rs") {
+                    tests += &fs::read_to_string(&path).expect("a test file");
+                }
+            }
+        }
+    }
+    let found = pub_only_for_tests(&source_files(), &tests);
+    assert!(
+        found.len() <= PUB_FOR_TESTS_AT_MOST,
+        "{} items are pub only for the tests (at most {PUB_FOR_TESTS_AT_MOST}): test them \
+         beside the code (#[cfg(test)]) or say why they are public:\n{}",
+        found.len(),
+        found.join("\n")
+    );
+}
+
+#[test]
+fn the_visibility_check_finds_an_item_only_a_test_names() {
+    let src = vec![
+        (
+            "game/layout.rs".into(),
+            "pub fn shown() {}\npub fn used() {}\nfn private() {}".to_owned(),
+        ),
+        ("game/hud/mod.rs".into(), "fn f() { used(); }".to_owned()),
+    ];
+    let tests = "shown(); used(); private();";
+    assert_eq!(
+        pub_only_for_tests(&src, tests),
+        ["src/game/layout.rs: shown"]
+    );
+}
