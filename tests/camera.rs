@@ -16,7 +16,7 @@ use common::*;
 use rubber_band_box::game::camera::{CameraFrame, MAX_WIDEN};
 use rubber_band_box::game::layout::{Card, Cards, SceneViewport};
 use rubber_band_box::game::pointer::PointerAction;
-use rubber_band_box::game::shared::Overlays;
+use rubber_band_box::game::shared::DockHidden;
 
 const DESKTOP: UVec2 = UVec2::new(960, 720);
 const PHONE: UVec2 = UVec2::new(390, 844);
@@ -252,7 +252,7 @@ fn resizing_hiding_the_dock_and_framing_while_holding_keep_the_box_in_view() {
     // The dock hidden (H): the scene takes the window, the pointer now over it.
     game.tap_key(KeyCode::KeyH);
     run(&mut game, 150, "the dock hidden");
-    assert!(game.world().resource::<Overlays>().dock_hidden);
+    assert!(game.world().resource::<DockHidden>().0);
     game.tap_key(KeyCode::KeyH);
     run(&mut game, 150, "the dock shown");
     // The window resized under the held band, larger and then a phone's.

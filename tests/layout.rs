@@ -13,7 +13,7 @@ use rubber_band_box::game::layout::{
     Card, CardRegistry, Cards, SceneViewport, Shape, shown_texts, visible_rect,
 };
 use rubber_band_box::game::pointer::PointerAction;
-use rubber_band_box::game::shared::Overlays;
+use rubber_band_box::game::shared::DockHidden;
 
 const SIZES: [UVec2; 6] = [
     UVec2::new(360, 740),
@@ -141,10 +141,10 @@ fn at_six_sizes_nothing_meets_and_the_scene_is_the_largest_region() {
             );
         }
         // Hidden (H): the scene takes the whole window but its two lines.
-        game.world().resource_mut::<Overlays>().dock_hidden = true;
+        game.world().resource_mut::<DockHidden>().0 = true;
         let hidden = check(&mut game, size, &format!("{size}, the dock hidden"));
         assert!(hidden > 0.85, "{size}: hidden, the scene has {hidden:.2}");
-        game.world().resource_mut::<Overlays>().dock_hidden = false;
+        game.world().resource_mut::<DockHidden>().0 = false;
     }
 }
 

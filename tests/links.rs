@@ -74,7 +74,12 @@ fn a_link_opens_what_it_names_and_the_share_control_writes_it_back() {
     assert!(world.resource::<Playback>().is_playing());
     assert_eq!(world.resource::<Time<Virtual>>().relative_speed_f64(), 0.5);
     let overlays = *world.resource::<Overlays>();
-    assert!(overlays.ghosts && overlays.vectors && overlays.trail && overlays.dock_hidden);
+    assert!(overlays.ghosts && overlays.vectors && overlays.trail);
+    assert!(
+        world
+            .resource::<rubber_band_box::game::shared::DockHidden>()
+            .0
+    );
     assert!(!overlays.plot);
     // The box has the link's mass and size.
     let mass = *world

@@ -459,7 +459,9 @@ fn the_lit_buttons_say_what_is_on() {
 
     *game.world().resource_mut::<Integrator>() = Integrator::Rk4;
     game.world().resource_mut::<SceneName>().0 = "stiff".to_owned();
-    game.world().resource_mut::<Overlays>().dock_hidden = true;
+    game.world()
+        .resource_mut::<rubber_band_box::game::shared::DockHidden>()
+        .0 = true;
     game.world().resource_mut::<Overlays>().ghosts = true;
     game.update(1);
     let on = lit(&mut game);

@@ -22,7 +22,7 @@ use bevy::ui_widgets::{
 use bevy::window::PrimaryWindow;
 
 use crate::game::schedule::{AfterBevySystems, ScreenSystems};
-use crate::game::shared::{Mode, Overlays, window_rect};
+use crate::game::shared::{DockHidden, Mode, Overlays, window_rect};
 use crate::game::theme::{self, colour, size, space};
 
 pub struct LayoutPlugin;
@@ -238,6 +238,24 @@ impl RegisterCard for App {
             registry.0.sort_by_key(|known| known.place);
         }
         self
+    }
+}
+
+/// What decides which cards the dock offers now, as a system reads it.
+#[derive(SystemParam)]
+struct Offered<'w> {
+    registry: Res<'w, CardRegistry>,
+    overlays: Res<'w, Overlays>,
+    mode: Res<'w, State<Mode>>,
+}
+
+impl Offered<'_> {
+    fn now(&self) -> Offers<'_> {
+        Offers {
+            registry: &self.registry,
+            overlays: &self.overlays,
+            mode: *self.mode.get(),
+        }
     }
 }
 
@@ -636,9 +654,8 @@ fn scale_ui_to_window(windows: Query<&Window, With<PrimaryWindow>>, mut scale: R
 fn arrange(
     windows: Query<&Window, With<PrimaryWindow>>,
     cards: Res<Cards>,
-    registry: Res<CardRegistry>,
-    overlays: Res<Overlays>,
-    mode: Res<State<Mode>>,
+    offered: Offered,
+    dock_hidden: Res<DockHidden>,
     mut nodes: ParamSet<(
         Query<&mut Node, With<Regions>>,
         Query<&mut Node, With<Dock>>,
@@ -654,14 +671,11 @@ fn arrange(
         .next()
         .map_or(WINDOW_SIZE.as_vec2(), Window::size);
     let shape = Shape::of(window);
-    let offers = Offers {
-        registry: &registry,
-        overlays: &overlays,
-        mode: *mode.get(),
-    };
+    let offers = offered.now();
     let scale = ui_scale_for(window);
-    let dock_hidden = overlays.dock_hidden;
-    let any_open = registry
+    let dock_hidden = dock_hidden.0;
+    let any_open = offers
+        .registry
         .cards()
         .any(|card| cards.body_shows(card, shape, &offers));
     let set = |node: &mut Mut<Node>, wanted: &dyn Fn(&mut Node)| {

@@ -20,6 +20,7 @@ impl Plugin for SharedPlugin {
         app.init_resource::<SceneName>()
             .init_resource::<StatusMessage>()
             .init_resource::<Overlays>()
+            .init_resource::<DockHidden>()
             .init_state::<Mode>();
     }
 }
@@ -59,9 +60,11 @@ pub struct Overlays {
     pub ghosts: bool,
     /// The ghosts' speed against their error, live (`screen::plot`).
     pub plot: bool,
-    /// The dock of cards shows unless hidden (H).
-    pub dock_hidden: bool,
 }
+
+/// Whether the dock of cards is hidden (H; `dock=off` in a link): not an overlay, a region.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
+pub struct DockHidden(pub bool);
 
 /// The latest thing the game has to tell the player.
 ///

@@ -14,7 +14,7 @@ use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
 use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
-use crate::game::shared::{Overlays, StatusMessage};
+use crate::game::shared::{DockHidden, Overlays, StatusMessage};
 use crate::game::simulation::ResetScene;
 use crate::physics::{
     Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scene, SceneParams, TIME_SCALE_RANGE,
@@ -360,6 +360,7 @@ struct Controlled<'w> {
     virtual_time: ResMut<'w, Time<Virtual>>,
     fixed_time: ResMut<'w, Time<Fixed>>,
     overlays: ResMut<'w, Overlays>,
+    dock_hidden: ResMut<'w, DockHidden>,
     status: ResMut<'w, StatusMessage>,
 }
 
@@ -420,7 +421,7 @@ fn apply_actions(
                 // Its points are the ghosts.
                 c.overlays.ghosts |= c.overlays.plot;
             }
-            Action::ToggleDock => c.overlays.dock_hidden = !c.overlays.dock_hidden,
+            Action::ToggleDock => c.dock_hidden.0 = !c.dock_hidden.0,
             // The view puts its camera back ([`HomeView`]).
             Action::HomeView => commands.trigger(HomeView),
             // The recorder saves and says where ([`crate::game::replays::recording`]).

@@ -21,7 +21,8 @@ use crate::game::learn::ChapterButtons;
 use crate::game::schedule::AfterBevySystems;
 use crate::game::schedule::{GameSystems, ScreenSystems};
 use crate::game::shared::{
-    Mode, Overlays, SceneName, hertz, linear_damping_readout, readable, times, window_rect,
+    DockHidden, Mode, Overlays, SceneName, hertz, linear_damping_readout, readable, times,
+    window_rect,
 };
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{
@@ -497,6 +498,7 @@ struct Shown<'w> {
     integrator: Res<'w, Integrator>,
     scene: Res<'w, SceneName>,
     overlays: Res<'w, Overlays>,
+    dock_hidden: Res<'w, DockHidden>,
     mode: Res<'w, State<Mode>>,
     virtual_time: Res<'w, Time<Virtual>>,
     fixed_time: Res<'w, Time<Fixed>>,
@@ -516,6 +518,7 @@ fn show_state(
         integrator,
         scene,
         overlays,
+        dock_hidden,
         mode,
         virtual_time,
         fixed_time,
@@ -535,7 +538,7 @@ fn show_state(
             PanelButton::Send(Action::TogglePlot) => (overlays.plot, None),
             PanelButton::Send(Action::ToggleVectors) => (overlays.vectors, None),
             PanelButton::Send(Action::ToggleTrail) => (overlays.trail, None),
-            PanelButton::Send(Action::ToggleDock) => (!overlays.dock_hidden, None),
+            PanelButton::Send(Action::ToggleDock) => (!dock_hidden.0, None),
             PanelButton::Send(Action::Learn) => (*mode.get() == Mode::Learn, None),
             PanelButton::Send(_) => (false, None),
         };

@@ -21,7 +21,7 @@ use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
-use crate::game::shared::{Mode, Overlays, SceneName};
+use crate::game::shared::{DockHidden, Mode, Overlays, SceneName};
 use crate::game::simulation::{
     Band, Bodies, EnergyBooks, ResetScene, RigidBodyQueryReadOnly, RigidBox, StepCount,
     acting_band, rigid_box, set_fixed_step,
@@ -118,6 +118,7 @@ struct Saved {
     auto: AutoSettings,
     scene: SceneName,
     overlays: Overlays,
+    dock_hidden: DockHidden,
     cards: Cards,
     speed: f64,
     paused: bool,
@@ -194,6 +195,7 @@ fn save_the_game(world: &mut World) {
         auto: *world.resource::<AutoSettings>(),
         scene: world.resource::<SceneName>().clone(),
         overlays: *world.resource::<Overlays>(),
+        dock_hidden: *world.resource::<DockHidden>(),
         cards: world.resource::<Cards>().clone(),
         speed: time.relative_speed_f64(),
         paused: time.is_paused(),
@@ -219,7 +221,8 @@ fn go_to(world: &mut World, index: usize) {
     let mut overlays = world.resource_mut::<Overlays>();
     // The arrows of force and velocity are the chapters' pictures.
     overlays.vectors = true;
-    overlays.dock_hidden = false;
+    // The chapter is in the dock: it shows.
+    world.resource_mut::<DockHidden>().0 = false;
     world.resource_mut::<Cards>().set(Card::LEARN, true);
     let [left, bottom, right, top] = chapter.frame;
     world.resource_mut::<CameraFrame>().stage = Stage {
@@ -261,6 +264,7 @@ fn restore_the_game(world: &mut World) {
     world.insert_resource(saved.auto);
     world.insert_resource(saved.scene);
     world.insert_resource(saved.overlays);
+    world.insert_resource(saved.dock_hidden);
     world.insert_resource(saved.cards);
     set_fixed_step(&mut world.resource_mut::<Time<Fixed>>(), saved.params.dt());
     let mut time = world.resource_mut::<Time<Virtual>>();

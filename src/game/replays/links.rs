@@ -11,7 +11,7 @@ use crate::game::replays::playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::GameSystems;
-use crate::game::shared::{Overlays, SceneName, StatusMessage};
+use crate::game::shared::{DockHidden, Overlays, SceneName, StatusMessage};
 use crate::game::simulation::set_fixed_step;
 use crate::physics::{Integrator, Scene, SceneParams};
 use crate::replay::link::{Link, LinkOverlays};
@@ -119,9 +119,11 @@ fn open_link(world: &mut World, link: Link) -> Vec<String> {
     set(&mut overlays.plot, shown.plot);
     set(&mut overlays.vectors, shown.vectors);
     set(&mut overlays.trail, shown.trail);
-    overlays.dock_hidden = shown.dock.map_or(overlays.dock_hidden, |on| !on);
     // The plot's points are the ghosts.
     overlays.ghosts |= overlays.plot;
+    if let Some(on) = shown.dock {
+        world.resource_mut::<DockHidden>().0 = !on;
+    }
     problems
 }
 
@@ -147,7 +149,7 @@ pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
             plot: on(overlays.plot),
             vectors: on(overlays.vectors),
             trail: on(overlays.trail),
-            dock: overlays.dock_hidden.then_some(false),
+            dock: world.resource::<DockHidden>().0.then_some(false),
         },
         ..default()
     };
