@@ -622,9 +622,7 @@ let f = |x: fn(A, B, C, D, E, F, G, H, I)| x;
 // --- A card lives in one place. ---
 
 /// Cards whose name another room writes too, and why: what is left of issue 43's first item.
-const CARDS_SHARED: [(&str, &str); 2] = [
-    // The HUD writes the keys' help line in the panel's card.
-    ("CONTROLS", "game/hud/mod.rs"),
+const CARDS_SHARED: [(&str, &str); 1] = [
     // The energy graph (it needs a window) draws in the HUD's card.
     ("ENERGY", "game/screen/graph.rs"),
 ];

@@ -248,7 +248,15 @@ fn readme_the_help_line_and_the_title_name_every_control_as_the_list_does() {
     assert_eq!(table.len(), pointer.len() + CONTROLS.len(), "{table:#?}");
     let mut game = Game::stepping();
     game.update(1);
-    assert_eq!(game.hud(HudLine::Help), help);
+    // The Controls card's own line of keys, dim as a caption.
+    let world = game.world();
+    let (_, keys, shade) = world
+        .query::<(&Name, &Text, &TextColor)>()
+        .iter(world)
+        .find(|(name, ..)| name.as_str() == "Keys")
+        .expect("the Controls card has its line of keys");
+    assert_eq!(keys.0, help);
+    assert_eq!(shade.0, rubber_band_box::game::theme::colour::DIM);
     let window = game.window;
     let title = game.world().get::<Window>(window).unwrap().title.clone();
     assert!(title.ends_with(&hint), "{title}");

@@ -224,7 +224,7 @@ const pressPoint = (s, label) => {
 };
 // A spot of the dock where a finger may land without pressing a button: a text of a card
 // that lies in no button and is no button's label (the page lists one rectangle a label:
-// of two buttons named alike, the time's "/2" and the rate's, one is not listed). For a drag
+// of two buttons named alike, the time's "÷2" and the rate's, one is not listed). For a drag
 // by `dy` (positive: the finger moves up), the spot with the most room that way.
 const dockSpot = (s, dy = 0) => {
   const v = s.viewport;

@@ -16,7 +16,6 @@ use bevy::ecs::system::SystemParam;
 use bevy::picking::Pickable;
 use bevy::prelude::*;
 
-use crate::game::input::controls::help_line;
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slot, Slots};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
@@ -87,12 +86,11 @@ pub enum HudLine {
     Ledger,
     Residual,
     Replay,
-    Help,
 }
 
 impl HudLine {
     /// Every line with an entity of its own, in the order they are spawned.
-    pub const SPAWNED: [HudLine; 15] = [
+    pub const SPAWNED: [HudLine; 14] = [
         HudLine::Status,
         HudLine::Hint,
         HudLine::SceneName,
@@ -107,7 +105,6 @@ impl HudLine {
         HudLine::Ledger,
         HudLine::Residual,
         HudLine::Replay,
-        HudLine::Help,
     ];
 
     /// Returns where the line lies.
@@ -122,7 +119,6 @@ impl HudLine {
             | HudLine::Clock
             | HudLine::Parameters
             | HudLine::Replay => Slot::Card(Card::READOUTS),
-            HudLine::Help => Slot::Card(Card::CONTROLS),
             HudLine::EnergyHeading
             | HudLine::KineticLinear
             | HudLine::KineticRotational
@@ -137,7 +133,7 @@ impl HudLine {
     fn font(self) -> TextFont {
         match self {
             HudLine::Status => theme::text_font(size::TITLE),
-            HudLine::Hint | HudLine::Help => theme::text_font(size::CAPTION),
+            HudLine::Hint => theme::text_font(size::CAPTION),
             HudLine::KineticLinear
             | HudLine::KineticRotational
             | HudLine::BandPotential
@@ -155,7 +151,7 @@ impl HudLine {
             HudLine::Integrator if readings.divergence.is_some() => WARNING_COLOUR,
             HudLine::Status if readings.divergence.is_some() => WARNING_COLOUR,
             HudLine::Hint if readings.news.is_some() => TEXT_COLOUR,
-            HudLine::EnergyHeading | HudLine::Help | HudLine::Hint | HudLine::Replay => DIM_COLOUR,
+            HudLine::EnergyHeading | HudLine::Hint | HudLine::Replay => DIM_COLOUR,
             _ => TEXT_COLOUR,
         }
     }
@@ -244,7 +240,6 @@ impl HudLine {
                 }
                 line
             }
-            HudLine::Help => help_line(),
         }
     }
 }

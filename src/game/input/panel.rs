@@ -14,7 +14,7 @@ use bevy::ui_widgets::{
     SliderThumb, SliderValue, TrackClick, ValueChange,
 };
 
-use crate::game::input::controls::{Action, Parameter};
+use crate::game::input::controls::{Action, Parameter, help_line};
 use crate::game::layout::{Card, CardButton, CardSpec, Cards, RegisterCard, Shape, Slot, Slots};
 use crate::game::learn::ChapterButtons;
 #[cfg(target_arch = "wasm32")]
@@ -309,7 +309,7 @@ fn spawn_panel(mut commands: Commands, slots: Slots) {
         ("time", ValueText::TimeScale, Action::Slower, Action::Faster),
     ] {
         let row = spawn_row(&mut commands, body, title);
-        spawn_button(&mut commands, row, "/2", PanelButton::Send(slower));
+        spawn_button(&mut commands, row, "÷2", PanelButton::Send(slower));
         commands.spawn((
             text(""),
             readout,
@@ -320,7 +320,7 @@ fn spawn_panel(mut commands: Commands, slots: Slots) {
             },
             ChildOf(row),
         ));
-        spawn_button(&mut commands, row, "x2", PanelButton::Send(faster));
+        spawn_button(&mut commands, row, "×2", PanelButton::Send(faster));
     }
     let row = spawn_row(&mut commands, body, "share");
     for (label, action) in [
@@ -338,7 +338,26 @@ fn spawn_panel(mut commands: Commands, slots: Slots) {
     ] {
         spawn_button(&mut commands, row, label, PanelButton::Send(action));
     }
+    // Under the buttons, every key: the card is the panel's, whole.
+    commands.spawn((
+        Name::new("Keys"),
+        KeysLine,
+        Text::new(help_line()),
+        theme::text_font(size::CAPTION),
+        TextColor(DIM),
+        Pickable::IGNORE,
+        Node {
+            padding: UiRect::axes(px(space::PAD + 2.0), px(1)),
+            ..default()
+        },
+        BackgroundColor(colour::CARD),
+        ChildOf(card),
+    ));
 }
+
+/// The Controls card's line of every key and what it does (`controls::help_line`).
+#[derive(Component, Debug)]
+struct KeysLine;
 
 fn spawn_slider(commands: &mut Commands, row: Entity, parameter: Parameter) {
     let (start, end, step) = parameter.slider();
