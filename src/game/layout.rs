@@ -271,6 +271,14 @@ impl Offers<'_> {
     fn offers(&self, card: Card) -> bool {
         self.registry.offers(card, self.overlays, self.mode)
     }
+
+    /// Returns every card offered, in the dock's order.
+    fn offered(&self) -> Vec<Card> {
+        self.registry
+            .cards()
+            .filter(|&card| self.offers(card))
+            .collect()
+    }
 }
 
 /// Which cards are open, kept as the player left them while the game runs.
@@ -390,6 +398,23 @@ impl Slots<'_, '_> {
     pub fn card_body(&self, card: Card) -> Option<Entity> {
         self.find(Slot::Card(card))
     }
+}
+
+/// Returns a line of text in a card's body: the cards' inset and background, taking no press.
+///
+/// The HUD's card lines, the Stability card's and the panel's line of keys are all one.
+pub fn card_line(text: impl Into<String>, font: TextFont, shade: Color) -> impl Bundle {
+    (
+        Text::new(text),
+        font,
+        TextColor(shade),
+        Pickable::IGNORE,
+        Node {
+            padding: UiRect::axes(px(space::PAD + 2.0), px(1)),
+            ..default()
+        },
+        BackgroundColor(colour::CARD),
+    )
 }
 
 /// A card's title: a button that folds it (the panel presses it, as its other buttons).
@@ -760,24 +785,24 @@ fn arrange(
 
 /// Opens a card that comes into the dock.
 ///
-/// The ghosts' table comes with G, the plot with P, learn mode's card with the mode. It opens as a tall window shows it: alone. Before the first frame the dock offers what it
-/// offers in play with no overlay on, so a game that starts with one on opens its card.
+/// The ghosts' table comes with G, the plot with P, learn mode's card with the mode. It opens
+/// as a tall window shows it: alone. Before the first frame the dock offers what it offers in
+/// play with no overlay on, so a game that starts with one on opens its card.
 fn open_cards_switched_on(
-    registry: Res<CardRegistry>,
-    overlays: Res<Overlays>,
-    mode: Res<State<Mode>>,
+    offered: Offered,
     windows: Query<&Window, With<PrimaryWindow>>,
     mut cards: ResMut<Cards>,
     mut before: Local<Option<Vec<Card>>>,
 ) {
-    let offered = |overlays: &Overlays, mode: Mode| -> Vec<Card> {
-        registry
-            .cards()
-            .filter(|&card| registry.offers(card, overlays, mode))
-            .collect()
-    };
-    let now = offered(&overlays, *mode.get());
-    let before = before.get_or_insert_with(|| offered(&Overlays::default(), Mode::Play));
+    let now = offered.now().offered();
+    let before = before.get_or_insert_with(|| {
+        Offers {
+            registry: &offered.registry,
+            overlays: &Overlays::default(),
+            mode: Mode::Play,
+        }
+        .offered()
+    });
     if now == *before {
         return;
     }

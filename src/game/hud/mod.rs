@@ -16,7 +16,7 @@ use bevy::ecs::system::SystemParam;
 use bevy::picking::Pickable;
 use bevy::prelude::*;
 
-use crate::game::layout::{Card, CardSpec, RegisterCard, Slot, Slots};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slot, Slots, card_line};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::schedule::ScreenSystems;
@@ -24,7 +24,7 @@ use crate::game::shared::{
     SceneName, StatusMessage, hertz, linear_damping_readout, readable, times,
 };
 use crate::game::simulation::{Band, Bodies, EnergyBooks, StepStats, mechanical_energies};
-use crate::game::theme::{self, colour, size, space};
+use crate::game::theme::{self, colour, size};
 use crate::physics::{Energies, EnergyLedger, Integrator, Scene, SceneParams};
 pub use history::EnergyHistory;
 use pace::{Pace, behind, measure_pace};
@@ -401,10 +401,16 @@ fn spawn_hud(mut commands: Commands, slots: Slots) {
         let Some(parent) = slots.find(line.slot()) else {
             continue;
         };
-        let padding = match line.slot() {
-            Slot::Card(_) => UiRect::axes(px(space::PAD + 2.0), px(1)),
-            _ => UiRect::ZERO,
-        };
+        let mut spawned = commands.spawn((
+            Name::new(format!("HUD {line:?}")),
+            Hud,
+            line,
+            ChildOf(parent),
+        ));
+        if let Slot::Card(_) = line.slot() {
+            spawned.insert(card_line("", line.font(), TEXT_COLOUR));
+            continue;
+        }
         // The hint line holds one line whatever it says (a long status is cut at the window's
         // edge), so that nothing below it moves when a message comes and goes.
         let layout = if line == HudLine::Hint {
@@ -412,24 +418,14 @@ fn spawn_hud(mut commands: Commands, slots: Slots) {
         } else {
             TextLayout::default()
         };
-        commands.spawn((
-            Name::new(format!("HUD {line:?}")),
-            Hud,
-            line,
+        spawned.insert((
             Text::default(),
             layout,
             line.font(),
             TextColor(TEXT_COLOUR),
             Pickable::IGNORE,
-            Node {
-                padding,
-                ..default()
-            },
-            BackgroundColor(match line.slot() {
-                Slot::Card(_) => colour::CARD,
-                _ => Color::NONE,
-            }),
-            ChildOf(parent),
+            Node::default(),
+            BackgroundColor(Color::NONE),
         ));
     }
 }

@@ -15,7 +15,9 @@ use bevy::ui_widgets::{
 };
 
 use crate::game::input::controls::{Action, Parameter, help_line};
-use crate::game::layout::{Card, CardButton, CardSpec, Cards, RegisterCard, Shape, Slot, Slots};
+use crate::game::layout::{
+    Card, CardButton, CardSpec, Cards, RegisterCard, Shape, Slot, Slots, card_line,
+};
 use crate::game::learn::ChapterButtons;
 #[cfg(target_arch = "wasm32")]
 use crate::game::schedule::AfterBevySystems;
@@ -342,15 +344,7 @@ fn spawn_panel(mut commands: Commands, slots: Slots) {
     commands.spawn((
         Name::new("Keys"),
         KeysLine,
-        Text::new(help_line()),
-        theme::text_font(size::CAPTION),
-        TextColor(DIM),
-        Pickable::IGNORE,
-        Node {
-            padding: UiRect::axes(px(space::PAD + 2.0), px(1)),
-            ..default()
-        },
-        BackgroundColor(colour::CARD),
+        card_line(help_line(), theme::text_font(size::CAPTION), DIM),
         ChildOf(card),
     ));
 }

@@ -2,14 +2,13 @@
 //! damping and the stiffest band it holds, in the warning colour once past it. Registered with
 //! the dock here; nothing outside this folder names it but the game's wiring.
 
-use bevy::picking::Pickable;
 use bevy::prelude::*;
 
 use super::margins::StabilityMargins;
-use crate::game::layout::{Card, CardSpec, RegisterCard, Slots};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, card_line};
 use crate::game::schedule::ScreenSystems;
 use crate::game::shared::readable;
-use crate::game::theme::{self, colour, size, space};
+use crate::game::theme::{self, colour, size};
 use crate::physics::Integrator;
 use crate::physics::stability::{Limit, Margin};
 
@@ -42,15 +41,7 @@ fn spawn_line(mut commands: Commands, slots: Slots) {
     commands.spawn((
         Name::new("Stability line"),
         StabilityLine,
-        Text::default(),
-        theme::text_font(size::BODY),
-        TextColor(colour::TEXT),
-        Pickable::IGNORE,
-        Node {
-            padding: UiRect::axes(px(space::PAD + 2.0), px(1)),
-            ..default()
-        },
-        BackgroundColor(colour::CARD),
+        card_line("", theme::text_font(size::BODY), colour::TEXT),
         ChildOf(card),
     ));
 }
