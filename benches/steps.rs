@@ -115,13 +115,19 @@ fn taylor_lanes(c: &mut Criterion) {
 /// A headless app whose every `update()` runs one 10 ms fixed step, every schedule on the
 /// single-threaded executor (on two cores the multi-threaded one costs far more per update for
 /// a scene this small: docs/benchmarks.md).
-fn headless_app(physics: bool, boxes: usize, single_threaded: bool) -> App {
+/// Returns a headless `App` whose clock takes one 10 ms fixed step (100 Hz) each update.
+fn bare_app() -> App {
     let mut app = App::new();
     app.add_plugins(MinimalPlugins)
         .insert_resource(Time::<Fixed>::from_hz(100.0))
         .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
             10,
         )));
+    app
+}
+
+fn headless_app(physics: bool, boxes: usize, single_threaded: bool) -> App {
+    let mut app = bare_app();
     if physics {
         app.add_plugins(SimulationPlugin);
     }
@@ -190,13 +196,8 @@ enum Machinery {
 
 fn machinery_app(part: Machinery) -> App {
     fn nothing() {}
-    let mut app = App::new();
-    app.add_plugins(MinimalPlugins)
-        .insert_resource(Time::<Fixed>::from_hz(100.0))
-        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
-            10,
-        )))
-        .init_resource::<SceneParams>();
+    let mut app = bare_app();
+    app.init_resource::<SceneParams>();
     match part {
         Machinery::FixedSystem => app.add_systems(FixedUpdate, nothing),
         Machinery::SettingsCheck => app.add_systems(
@@ -248,13 +249,8 @@ fn ghost_app(scene: &str, stiffness: Option<f64>, ghosts_on: bool) -> App {
     if let Some(k) = stiffness {
         scene.params.stiffness = k;
     }
-    let mut app = App::new();
-    app.add_plugins(MinimalPlugins)
-        .insert_resource(Time::<Fixed>::from_hz(100.0))
-        .insert_resource(TimeUpdateStrategy::ManualDuration(Duration::from_millis(
-            10,
-        )))
-        .insert_resource(scene.params)
+    let mut app = bare_app();
+    app.insert_resource(scene.params)
         .insert_resource(Overlays {
             ghosts: ghosts_on,
             ..default()

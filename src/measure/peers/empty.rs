@@ -4,14 +4,10 @@
 
 use bevy::prelude::*;
 
-use super::{Contender, headless_app, place_band, start, state_of};
+use super::{Contender, HeldBox, headless_app, start};
 use crate::physics::{BandEnds, BodyState, SceneParams};
 
-pub struct Empty {
-    app: App,
-    body: Entity,
-    band: Option<Entity>,
-}
+pub struct Empty(HeldBox);
 
 impl Contender for Empty {
     const NAME: &'static str = "an empty App";
@@ -23,22 +19,18 @@ impl Contender for Empty {
             .world_mut()
             .spawn((initial.linear, initial.angular))
             .id();
-        Self {
-            app,
-            body,
-            band: None,
-        }
+        Self(HeldBox::new(app, body))
     }
 
     fn set_band(&mut self, ends: Option<BandEnds>) {
-        place_band(self.app.world_mut(), self.body, &mut self.band, ends);
+        self.0.set_band(ends);
     }
 
     fn state(&mut self) -> BodyState {
-        state_of(&self.app, self.body)
+        self.0.state()
     }
 
     fn app(&mut self) -> &mut App {
-        &mut self.app
+        &mut self.0.app
     }
 }

@@ -63,27 +63,48 @@ pub fn start(app: &mut App) {
     run_single_threaded(app);
 }
 
-/// Returns the box's state as an `App` of ours holds it: its two state components.
-fn state_of(app: &App, body: Entity) -> BodyState {
-    let entity = app.world().entity(body);
-    body_state(
-        entity.get().expect("a body has a linear state"),
-        entity.get().expect("a body has an angular state"),
-    )
+/// A headless `App` holding the box and its band as our plugin does.
+///
+/// The box is its two state components, the band one entity: what ours and the empty `App`
+/// share.
+struct HeldBox {
+    app: App,
+    body: Entity,
+    band: Option<Entity>,
 }
 
-/// Puts the band `ends` on `body` (or takes it off), keeping one band entity in `band`.
-fn place_band(world: &mut World, body: Entity, band: &mut Option<Entity>, ends: Option<BandEnds>) {
-    match (*band, ends) {
-        (Some(entity), Some(ends)) => {
-            world.entity_mut(entity).insert(Band { body, ends });
+impl HeldBox {
+    fn new(app: App, body: Entity) -> Self {
+        Self {
+            app,
+            body,
+            band: None,
         }
-        (None, Some(ends)) => *band = Some(world.spawn(Band { body, ends }).id()),
-        (Some(entity), None) => {
-            world.despawn(entity);
-            *band = None;
+    }
+
+    /// Puts the band `ends` on the box (or takes it off), keeping one band entity.
+    fn set_band(&mut self, ends: Option<BandEnds>) {
+        let (world, body) = (self.app.world_mut(), self.body);
+        match (self.band, ends) {
+            (Some(entity), Some(ends)) => {
+                world.entity_mut(entity).insert(Band { body, ends });
+            }
+            (None, Some(ends)) => self.band = Some(world.spawn(Band { body, ends }).id()),
+            (Some(entity), None) => {
+                world.despawn(entity);
+                self.band = None;
+            }
+            (None, None) => {}
         }
-        (None, None) => {}
+    }
+
+    /// Returns the box's state: its two state components.
+    fn state(&self) -> BodyState {
+        let entity = self.app.world().entity(self.body);
+        body_state(
+            entity.get().expect("a body has a linear state"),
+            entity.get().expect("a body has an angular state"),
+        )
     }
 }
 

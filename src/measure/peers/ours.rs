@@ -3,15 +3,11 @@
 
 use bevy::prelude::*;
 
-use super::{Contender, headless_app, place_band, start, state_of};
+use super::{Contender, HeldBox, headless_app, start};
 use crate::game::simulation::{RigidBox, SimulationPlugin, rigid_box};
 use crate::physics::{BandEnds, BodyState, SceneParams};
 
-pub struct Ours {
-    app: App,
-    body: Entity,
-    band: Option<Entity>,
-}
+pub struct Ours(HeldBox);
 
 impl Contender for Ours {
     const NAME: &'static str = "ours (auto)";
@@ -31,22 +27,18 @@ impl Contender for Ours {
             .expect("the plugin spawns one box");
         let mass = params.mass_properties().expect("the plugin spawned it");
         world.entity_mut(body).insert(rigid_box(mass, initial));
-        Self {
-            app,
-            body,
-            band: None,
-        }
+        Self(HeldBox::new(app, body))
     }
 
     fn set_band(&mut self, ends: Option<BandEnds>) {
-        place_band(self.app.world_mut(), self.body, &mut self.band, ends);
+        self.0.set_band(ends);
     }
 
     fn state(&mut self) -> BodyState {
-        state_of(&self.app, self.body)
+        self.0.state()
     }
 
     fn app(&mut self) -> &mut App {
-        &mut self.app
+        &mut self.0.app
     }
 }
