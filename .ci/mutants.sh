@@ -11,7 +11,7 @@
 #   tests/integrators.rs without the soak, tests/cli.rs, tests/stability.rs). Results in
 #   mutants.out/core/.
 # - game: the game layer (src/game/input/{controls,panel}.rs, src/game/pointer.rs,
-#   src/game/simulation.rs, src/game/hud/), each file against the headless tests that drive
+#   src/game/simulation.rs, the HUD and the Readouts and Energy cards), each file against the headless tests that drive
 #   it (the groups below). Results in mutants-game.out/, a folder a group.
 # Each writes summary.csv beside its results (.ci/mutants-summary.sh): a row a group, the
 # score of the viable mutants; docs/testing.md shows a committed snapshot of it.
@@ -74,7 +74,7 @@ else
         "src/game/input/controls.rs src/game/pointer.rs : controls pointer fixed_step panel"
         "src/game/simulation.rs : fixed_step pointer lab hud replay learn"
         "src/game/input/panel.rs : panel"
-        "src/game/hud/mod.rs src/game/hud/history.rs src/game/hud/title.rs : hud controls fixed_step draw"
+        "src/game/hud/mod.rs src/game/hud/title.rs src/game/readouts/mod.rs src/game/energy/lines.rs src/game/energy/history.rs : lib hud controls fixed_step draw"
     )
     # The previous results, so that `--iterate` tests only what they did not catch.
     previous=$(mktemp -d)
@@ -85,7 +85,10 @@ else
     for group in "${groups[@]}"; do
         files=() targets=()
         for file in ${group%%:*}; do files+=(--file "$file"); done
-        for test in ${group##*:}; do targets+=(-C "--test=$test"); done
+        # `lib`: the tests beside the code (`#[cfg(test)]`), the rest integration targets.
+        for test in ${group##*:}; do
+            if [ "$test" = lib ]; then targets+=(-C --lib); else targets+=(-C "--test=$test"); fi
+        done
         name=$(basename "${group%% *}" .rs)
         if [ "$name" = mod ]; then name=$(basename "$(dirname "${group%% *}")"); fi
         if [ -d "$previous/$name" ]; then

@@ -5,114 +5,22 @@ mod common;
 
 use common::*;
 use rubber_band_box::game::ghosts::table::GhostCell;
-use rubber_band_box::game::hud::HudReadings;
 use rubber_band_box::game::input::controls::{HUD, PAUSE, STIFFER};
 use rubber_band_box::game::stability::card::{StabilityLine, line as stability_line};
-use rubber_band_box::physics::{Energies, EnergyLedger};
-
-fn readings() -> HudReadings {
-    HudReadings {
-        integrator: Integrator::Auto,
-        substeps: 3,
-        fell_back: false,
-        fallbacks: 0,
-        divergence: None,
-        step_rate_hz: 100.0,
-        time_scale: 1.0,
-        paused: false,
-        simulated_seconds: 1.5,
-        pace: 1.0,
-        frames_per_second: 60.0,
-        mass: 5.0,
-        stiffness: 20.0,
-        linear_rate: 1.0,
-        angular_rate: 2.0203,
-        energies: Energies {
-            linear: 1.0,
-            rotational: 2.0,
-            band: 3.0,
-        },
-        ledger: EnergyLedger::starting_at(0.0),
-        residual: 0.0,
-        recorded_steps: 150,
-        status: None,
-        news: None,
-        playback: None,
-        scene: "tutorial".to_owned(),
-    }
-}
-
-#[test]
-fn lines_say_what_the_readings_hold() {
-    let r = readings();
-    assert_eq!(
-        HudLine::Integrator.text(&r),
-        "integrator auto: 3 taylor steps/step, 0 fall-backs to implicit"
-    );
-    assert!(
-        HudLine::Clock
-            .text(&r)
-            .starts_with("step 10.00 ms (100 Hz)")
-    );
-    assert!(!HudLine::Clock.text(&r).contains("PAUSED"));
-    assert!(HudLine::Total.text(&r).ends_with("6.00"));
-    assert!(HudLine::Parameters.text(&r).contains("k 20"));
-    assert_eq!(HudLine::Replay.text(&r), "recorded 150 steps");
-    let playing = HudReadings {
-        playback: Some((40, 1125)),
-        status: Some("saved 150 steps to a.jsonl".to_owned()),
-        ..r.clone()
-    };
-    assert_eq!(
-        HudLine::Replay.text(&playing),
-        "replay: step 40 of 1125 (press to take over)  recorded 150 steps  saved 150 steps to a.jsonl"
-    );
-    // No energy has passed through yet: no relative error to show.
-    assert!(HudLine::Residual.text(&r).contains("(- of energy"));
-
-    let fell_back = HudReadings {
-        fell_back: true,
-        fallbacks: 4,
-        ..readings()
-    };
-    assert_eq!(
-        HudLine::Integrator.text(&fell_back),
-        "integrator auto: fell back to implicit (over budget), 4 fall-backs to implicit"
-    );
-
-    let paused = HudReadings {
-        paused: true,
-        integrator: Integrator::Rk4,
-        divergence: Some((Integrator::Euler, 7)),
-        ..readings()
-    };
-    assert!(HudLine::Clock.text(&paused).contains("PAUSED"));
-    let solver = HudLine::Integrator.text(&paused);
-    assert!(solver.starts_with("integrator rk4") && !solver.contains("steps/step"));
-    assert!(solver.contains("euler DIVERGED at step 7"));
-}
-
-#[test]
-fn large_and_small_energies_switch_to_scientific_notation() {
-    let mut r = readings();
-    r.energies.band = 4.2e9;
-    r.energies.linear = 3e-5;
-    assert!(HudLine::BandPotential.text(&r).ends_with("4.200e9"));
-    assert!(HudLine::KineticLinear.text(&r).ends_with("3.000e-5"));
-    // An empty sum of energies is −0.0; it shows as 0.
-    r.energies.band = -0.0;
-    assert!(HudLine::BandPotential.text(&r).ends_with(" 0.00"));
-}
+use rubber_band_box::physics::Energies;
 
 #[test]
 fn the_hud_follows_the_game() {
     let mut game = Game::stepping();
     game.update(1);
-    assert!(game.hud(HudLine::Integrator).starts_with("integrator auto"));
+    assert!(
+        game.line("Readouts Integrator")
+            .starts_with("integrator auto")
+    );
     game.tap_key(CYCLE_INTEGRATOR);
     game.update(1);
     assert!(
-        game.hud(HudLine::Integrator)
+        game.line("Readouts Integrator")
             .starts_with(&format!("integrator {}", Integrator::Auto.next()))
     );
 
@@ -129,16 +37,16 @@ fn the_hud_follows_the_game() {
         + 0.5 * 3000.0 * angular.angular_velocity.powi(2);
     let stretched = 0.5 * 20.0 * corner.distance_squared(band.anchor);
     assert!(kinetic > 1.0 && stretched > 1.0, "{kinetic} {stretched}");
-    let value = |line: HudLine, game: &mut Game| -> f64 {
-        let text = game.hud(line);
+    let value = |line: &str, game: &mut Game| -> f64 {
+        let text = game.line(line);
         text.split_whitespace().last().unwrap().parse().unwrap()
     };
-    assert!((value(HudLine::BandPotential, &mut game) - stretched).abs() < 0.01);
-    assert!((value(HudLine::Total, &mut game) - (kinetic + stretched)).abs() < 0.01);
+    assert!((value("Energy BandPotential", &mut game) - stretched).abs() < 0.01);
+    assert!((value("Energy Total", &mut game) - (kinetic + stretched)).abs() < 0.01);
 
     game.tap_key(PAUSE);
     game.update(2);
-    assert!(game.hud(HudLine::Clock).contains("PAUSED"));
+    assert!(game.line("Readouts Clock").contains("PAUSED"));
 }
 
 /// H hides the dock of instruments (the scene takes the window) and shows it again.
@@ -193,7 +101,7 @@ fn a_step_that_fell_back_is_shown_as_such() {
     game.press_at(DVec2::new(200.0, 100.0));
     game.update(3);
     assert!(game.world().resource::<StepStats>().fell_back);
-    let line = game.hud(HudLine::Integrator);
+    let line = game.line("Readouts Integrator");
     assert!(
         line.contains("fell back to implicit (over budget)"),
         "{line}"
@@ -211,15 +119,15 @@ fn reset_restarts_the_graph_and_the_clock() {
     game.update(100);
     assert!(game.world().resource::<EnergyHistory>().samples.len() > 10);
     assert!(
-        game.hud(HudLine::Clock).contains("t 1.00 s"),
+        game.line("Readouts Clock").contains("t 1.00 s"),
         "{}",
-        game.hud(HudLine::Clock)
+        game.line("Readouts Clock")
     );
     game.tap_key(rubber_band_box::game::input::controls::RESET);
     game.update(1);
     let history = game.world().resource::<EnergyHistory>().clone();
     assert!(history.samples.len() <= 1, "{:?}", history.samples);
-    let clock = game.hud(HudLine::Clock);
+    let clock = game.line("Readouts Clock");
     assert!(clock.contains("t 0.0"), "{clock}");
 }
 
@@ -230,11 +138,11 @@ fn the_energy_panel_is_live_while_paused() {
     game.update(5);
     game.tap_key(PAUSE);
     game.update(2);
-    let before = game.hud(HudLine::BandPotential);
+    let before = game.line("Energy BandPotential");
     // Pull the anchor further while paused: no step runs, the band stretches.
     game.cursor(Some(world_to_screen(DVec2::new(300.0, 200.0))));
     game.update(2);
-    let after = game.hud(HudLine::BandPotential);
+    let after = game.line("Energy BandPotential");
     let value = |line: &str| {
         line.split_whitespace()
             .last()
@@ -243,43 +151,6 @@ fn the_energy_panel_is_live_while_paused() {
             .unwrap()
     };
     assert!(value(&after) > value(&before), "{before} -> {after}");
-}
-
-/// The energy lines each say their own reading: the heading, both kinetic parts, the band, the
-/// total, and the ledger's work in and damping out.
-#[test]
-fn each_energy_line_says_its_own_reading() {
-    let mut r = readings();
-    r.ledger = EnergyLedger {
-        work_in: 12.5,
-        dissipated: 0.25,
-        ..EnergyLedger::starting_at(0.0)
-    };
-    assert_eq!(HudLine::EnergyHeading.text(&r), "energy (mass · px²/s²)");
-    assert_eq!(
-        HudLine::KineticLinear.text(&r),
-        "  kinetic, linear           1.00"
-    );
-    assert_eq!(
-        HudLine::KineticRotational.text(&r),
-        "  kinetic, rotation         2.00"
-    );
-    assert_eq!(
-        HudLine::BandPotential.text(&r),
-        "  band potential            3.00"
-    );
-    assert_eq!(HudLine::Total.text(&r), "  total                     6.00");
-    assert_eq!(
-        HudLine::Ledger.text(&r),
-        "  hand's work in 12.50  damping out 0.25"
-    );
-    // Beyond two decimals' reach, in powers of ten.
-    r.energies.rotational = 3.5e9;
-    assert!(
-        HudLine::KineticRotational.text(&r).ends_with("3.500e9"),
-        "{}",
-        HudLine::KineticRotational.text(&r)
-    );
 }
 
 /// The Stability card's line as the game shows it.
@@ -359,7 +230,7 @@ fn numbers_are_shown_as_a_person_reads_them() {
     let mut game = Game::stepping();
     game.update(1);
     assert_eq!(
-        game.hud(HudLine::Parameters),
+        game.line("Readouts Parameters"),
         "m 5  k 20  damping: linear b 5 = 1 /s, angular 2.02 /s"
     );
 }
@@ -372,64 +243,43 @@ fn the_hud_takes_no_press() {
     let mut game = Game::stepping();
     game.update(1);
     let world = game.world();
-    let nodes: Vec<Option<Pickable>> = world
-        .query_filtered::<Option<&Pickable>, Or<(
-            With<Hud>,
-            With<HudLine>,
-            With<GhostCell>,
-            With<StabilityLine>,
-        )>>()
+    // The HUD's lines and the Readouts and Energy cards' are named by their place.
+    let texts = ["HUD ", "Readouts ", "Energy "];
+    let mut nodes: Vec<Option<Pickable>> = world
+        .query_filtered::<(&Name, Option<&Pickable>), With<Text>>()
         .iter(world)
-        .map(|pickable| pickable.cloned())
+        .filter(|(name, _)| texts.iter().any(|text| name.starts_with(text)))
+        .map(|(_, pickable)| pickable.cloned())
         .collect();
-    assert!(nodes.len() > HudLine::SPAWNED.len(), "{}", nodes.len());
+    assert_eq!(
+        nodes.len(),
+        14,
+        "the HUD's 2 lines, the Readouts' 5, the Energy's 7"
+    );
+    nodes.extend(
+        world
+            .query_filtered::<Option<&Pickable>, Or<(With<GhostCell>, With<StabilityLine>)>>()
+            .iter(world)
+            .map(|pickable| pickable.cloned()),
+    );
+    assert!(nodes.len() > 14, "{}", nodes.len());
     for pickable in nodes {
         let pickable = pickable.expect("every HUD node says how it is picked");
         assert!(!pickable.should_block_lower && !pickable.is_hoverable);
     }
 }
 
-/// Each line's colour: the energy lines in the energy graph's colours (the HUD is its legend),
-/// the integrator line and the stability line in the warning colour exactly when the live
-/// method diverged or is past its limit, the heading, the replay line, the ghosts' list and
-/// the help line dim, the rest plain text.
+/// The Stability card's line, in its own folder, colours itself as the Readouts card's
+/// integrator line does once the live method diverged: in the warning colour exactly when the
+/// live method is past its limit, in the text's colour with no margin known or within it.
 #[test]
-fn each_line_has_its_colour() {
-    use rubber_band_box::game::hud::{BAND_ENERGY_COLOUR, KINETIC_COLOUR, TOTAL_COLOUR};
+fn the_stability_line_warns_only_past_the_live_methods_limit() {
+    use rubber_band_box::game::theme::colour;
     use rubber_band_box::physics::stability::{Limit, Margin};
-    let calm = readings();
-    let colour = |line: HudLine, r: &HudReadings| line.colour(r);
-    assert_eq!(colour(HudLine::KineticLinear, &calm), KINETIC_COLOUR);
-    assert_eq!(colour(HudLine::KineticRotational, &calm), KINETIC_COLOUR);
-    assert_eq!(colour(HudLine::BandPotential, &calm), BAND_ENERGY_COLOUR);
-    assert_eq!(colour(HudLine::Total, &calm), TOTAL_COLOUR);
-    let text = colour(HudLine::SceneName, &calm);
-    let dim = colour(HudLine::EnergyHeading, &calm);
-    assert_ne!(text, dim);
-    assert_eq!(colour(HudLine::Replay, &calm), dim);
-    for line in [
-        HudLine::Integrator,
-        HudLine::Clock,
-        HudLine::Parameters,
-        HudLine::Ledger,
-        HudLine::Residual,
-    ] {
-        assert_eq!(colour(line, &calm), text, "{line:?}");
-    }
-    // Diverged: the integrator line warns, in a colour of its own.
-    let diverged = HudReadings {
-        divergence: Some((Integrator::Euler, 12)),
-        ..readings()
-    };
-    let warning = colour(HudLine::Integrator, &diverged);
-    for other in [text, dim, KINETIC_COLOUR, BAND_ENERGY_COLOUR, TOTAL_COLOUR] {
-        assert_ne!(warning, other);
-    }
-    // The Stability card's line, in its own folder, colours itself the same way: with no
-    // margin known, or within it, in the text's colour even when the integrator diverged.
+    let (text, warning) = (colour::TEXT, colour::WARNING);
     let stability = |margins: &[Margin], live: Integrator| stability_line(margins, live).1;
-    assert_eq!(stability(&[], calm.integrator), text);
-    assert_eq!(stability(&[], diverged.integrator), text);
+    assert_eq!(stability(&[], Integrator::Auto), text);
+    assert_eq!(stability(&[], Integrator::Euler), text);
     // Past the live method's limit: the stability line warns; within it, it does not.
     let margin = |integrator: Integrator, holds: bool| Margin {
         integrator,
@@ -439,37 +289,14 @@ fn each_line_has_its_colour() {
         stiffest: Limit::UpTo(100.0),
         limit_omega_dt: Some(0.3),
     };
-    let past = HudReadings {
-        integrator: Integrator::Euler,
-        ..readings()
-    };
     let past_margins = [margin(Integrator::Euler, false)];
-    assert_eq!(stability(&past_margins, past.integrator), warning);
-    assert_eq!(colour(HudLine::Integrator, &past), text);
+    assert_eq!(stability(&past_margins, Integrator::Euler), warning);
     // Another method past its limit is the ghosts' list's business, not the live line's.
     let other = [
         margin(Integrator::Euler, true),
         margin(Integrator::Rk4, false),
     ];
     assert_eq!(stability(&other, Integrator::Euler), text);
-}
-
-/// The residual said against the energy that passed through, once some has: 2e-6 J of error
-/// in 100 J moved by the hand and 50 J damped out is 1.3e-8 of it.
-#[test]
-fn the_residual_is_said_against_the_energy_through() {
-    let mut ledger = EnergyLedger::starting_at(0.0);
-    ledger.hand(100.0);
-    ledger.dissipated = 50.0;
-    let r = HudReadings {
-        ledger,
-        residual: 2e-6,
-        ..readings()
-    };
-    assert_eq!(
-        HudLine::Residual.text(&r),
-        "  integrator's error +2.00e-6 (1.3e-8 of energy through)"
-    );
 }
 
 /// A ghost's work: its substeps times its evaluations when it took more than one substep,
@@ -522,7 +349,7 @@ fn a_ghosts_work_says_its_substeps_when_there_are_several() {
 fn the_clock_and_the_live_ghost_come_from_the_game() {
     let mut game = Game::stepping();
     game.update(1);
-    let clock = game.hud(HudLine::Clock);
+    let clock = game.line("Readouts Clock");
     assert!(clock.starts_with("step 10.00 ms (100 Hz)"), "{clock}");
     // The ghosts' card is in the dock only while they are on, and opens when they come on.
     use rubber_band_box::game::layout::{Card, CardRegistry, Cards};
@@ -612,13 +439,13 @@ fn the_title_says_autos_substeps_and_no_one_elses() {
 fn the_status_line_says_when_the_game_falls_behind_the_wall_clock() {
     let mut game = Game::stepping();
     game.update(200);
-    assert!(!game.hud(HudLine::Status).contains("behind"));
+    assert!(!game.line("HUD Status").contains("behind"));
     // Each 10 ms frame gives the simulation 4 ms.
     game.world()
         .resource_mut::<Time<Virtual>>()
         .set_max_delta(Duration::from_millis(4));
     game.update(500);
-    let status = game.hud(HudLine::Status);
+    let status = game.line("HUD Status");
     assert!(status.contains("behind: runs ×0.40"), "{status}");
     // The window title says it too, for a hidden HUD.
     let window = game.window;
@@ -629,7 +456,7 @@ fn the_status_line_says_when_the_game_falls_behind_the_wall_clock() {
         .resource_mut::<Time<Virtual>>()
         .set_max_delta(Duration::from_millis(250));
     game.update(500);
-    let status = game.hud(HudLine::Status);
+    let status = game.line("HUD Status");
     assert!(!status.contains("behind"), "{status}");
 }
 
@@ -648,7 +475,7 @@ fn the_rate_and_the_time_scale_read_the_same_everywhere() {
     game.update(2);
     let window = game.window;
     let title = game.world().get::<Window>(window).unwrap().title.clone();
-    for shown in [game.hud(HudLine::Clock), game.hud(HudLine::Status), title] {
+    for shown in [game.line("Readouts Clock"), game.line("HUD Status"), title] {
         assert!(
             shown.contains("12.5 Hz") && shown.contains("time ×0.25"),
             "{shown}"

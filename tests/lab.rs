@@ -189,7 +189,7 @@ fn number_keys_load_the_core_scenes_and_play_their_scripts() {
         assert_eq!(params.mass, scene.params.mass, "{name}");
         assert_eq!(params.step_rate_hz, 100.0, "{name}");
         assert_eq!(game.world().resource::<SceneName>().0, name);
-        let line = game.hud(HudLine::SceneName);
+        let line = game.line("Readouts Scene");
         assert_eq!(line, format!("scene {name}: {}", scene.summary));
         assert_eq!(
             game.bands().len(),

@@ -13,7 +13,7 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 
 use common::{Game, small_replay, world_to_screen};
-use rubber_band_box::game::hud::{HINT, HudLine, NEWS_SECONDS};
+use rubber_band_box::game::hud::{HINT, NEWS_SECONDS};
 use rubber_band_box::game::play::{PlayOptions, prepare};
 use rubber_band_box::game::replays::links::current_link;
 use rubber_band_box::game::replays::playback::{Playback, PlaybackEnd};
@@ -140,10 +140,10 @@ fn a_link_is_taken_in_part_and_what_was_left_is_named() {
     assert_eq!(params.step_rate_hz, 100.0);
     assert!(game.world().resource::<Overlays>().plot);
     // Said under the scene, where a player sees it with every card folded, for a while.
-    let hint = game.hud(HudLine::Hint);
+    let hint = game.line("HUD Hint");
     assert!(hint.contains("frobnicate: not a key"), "{hint}");
     game.update((NEWS_SECONDS * 100.0) as usize + 10);
-    assert_eq!(game.hud(HudLine::Hint), HINT);
+    assert_eq!(game.line("HUD Hint"), HINT);
 }
 
 /// Pulls the box about for a second of play, then lets go.

@@ -172,7 +172,7 @@ fn the_save_key_and_the_games_end_write_a_replay_that_loads() {
     game.update(1);
     let status = game.world().resource::<StatusMessage>().0.clone().unwrap();
     assert_eq!(status, format!("saved 30 steps to {}", path.display()));
-    assert!(game.hud(HudLine::Replay).contains(&status));
+    assert!(game.line("Readouts Replay").contains(&status));
     assert_eq!(read(&path).steps, 30);
 
     game.update(9);

@@ -402,7 +402,7 @@ impl Slots<'_, '_> {
 
 /// Returns a line of text in a card's body: the cards' inset and background, taking no press.
 ///
-/// The HUD's card lines, the Stability card's and the panel's line of keys are all one.
+/// The Readouts, Energy and Stability cards' lines and the panel's line of keys are all one.
 pub fn card_line(text: impl Into<String>, font: TextFont, shade: Color) -> impl Bundle {
     (
         Text::new(text),

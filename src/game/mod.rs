@@ -19,12 +19,15 @@
 //! - [`learn`]: learn mode, the tutorial's chapters with their equations live;
 //! - [`stability`]: each integrator's distance from instability at the present settings;
 //! - [`input`]: the keys and the on-screen panel, which send the same actions;
-//! - [`hud`]: the heads-up display's text, its energy history and the window title;
+//! - [`readouts`]: the Readouts card: the scene, the integrator, the clock, the parameters;
+//! - [`hud`]: the status line over the scene, the hint under it, and the window title;
+//! - [`energy`]: the Energy card: the energies, the ledger, and their graph;
 //! - [`screen`]: the cameras, interpolation, drawing and the dock's charts (need a window);
 //! - `web`, in the browser only: the page's side (downloads, files opened, what the page
 //!   reads back).
 
 pub mod camera;
+pub mod energy;
 pub mod ghosts;
 pub mod hud;
 pub mod input;
@@ -32,6 +35,7 @@ pub mod layout;
 pub mod learn;
 pub mod play;
 pub mod pointer;
+pub mod readouts;
 pub mod replays;
 pub mod schedule;
 pub mod screen;
@@ -44,7 +48,7 @@ pub mod web;
 
 use bevy::prelude::*;
 
-/// The game without a screen: physics, pointer, camera's view, keys and the HUD's text.
+/// The game without a screen: physics, pointer, camera's view, keys, the HUD and the cards.
 ///
 /// They run in the frame's order ([`schedule`]), under `MinimalPlugins`.
 pub struct GameLogicPlugin;
@@ -67,7 +71,7 @@ impl Plugin for GameLogicPlugin {
             ghosts::GhostsPlugin,
             stability::StabilityPlugin,
             input::panel::PanelPlugin,
-            hud::HudPlugin,
+            (readouts::plugin, energy::EnergyPlugin, hud::HudPlugin),
         ));
     }
 }
@@ -77,6 +81,17 @@ pub struct GamePlugin;
 
 impl Plugin for GamePlugin {
     fn build(&self, app: &mut App) {
-        app.add_plugins((GameLogicPlugin, screen::ScreenPlugin));
+        app.add_plugins((GameLogicPlugin, GameScreenPlugin));
+    }
+}
+
+/// What needs a window: the screen, and the cards' charts drawn by its chart camera.
+///
+/// The game adds it; so do the tests that draw.
+pub struct GameScreenPlugin;
+
+impl Plugin for GameScreenPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_plugins((screen::ScreenPlugin, energy::EnergyGraphPlugin));
     }
 }

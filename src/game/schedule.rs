@@ -15,9 +15,9 @@
 //! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
 //!    interpolated between the last two steps, the end of a playback said, learn mode's task
 //!    checked;
-//! 4. `Update`, [`ScreenSystems`]: the regions arranged for the window, the HUD's text and
-//!    the window title, learn mode's card, the panel, the drawing and the energy graph, then
-//!    the plot;
+//! 4. `Update`, [`ScreenSystems`]: the regions arranged for the window, the status line, the
+//!    hint and the window title, the cards' lines, learn mode's card, the panel, the drawing
+//!    and the energy graph, then the plot;
 //! 5. `PostUpdate` and `Last`, [`AfterBevySystems`]: after Bevy's UI layout the layout says
 //!    where the scene's viewport lies, then the view is chosen for it and the scene camera
 //!    placed (before transforms propagate, so the frame drawn is the frame laid out); after
@@ -63,7 +63,7 @@ pub enum PhysicsSystems {
     Step,
     /// Read the step's results; write nothing the physics reads.
     ///
-    /// The readers are the recorder (its state after the step) and the HUD (its energy history).
+    /// The readers are the recorder (its state after the step) and the Energy card's history.
     AfterStep,
 }
 
@@ -82,9 +82,9 @@ pub enum AfterStepsSystems {
 pub enum ScreenSystems {
     /// The regions arranged for the window's shape and the cards open, the UI's scale.
     Scale,
-    /// The HUD's text and the window title.
+    /// The status line, the hint and the window title.
     Hud,
-    /// The cards that write their own text (the Stability card).
+    /// The cards that write their own text (Readouts, Energy, Ghosts, Stability).
     Cards,
     /// Learn mode's card: the chapter and its equations with this frame's numbers.
     Learn,

@@ -34,6 +34,7 @@ impl Plugin for SimulationPlugin {
             .init_resource::<Integrator>()
             .init_resource::<AutoSettings>()
             .init_resource::<StepStats>()
+            .init_resource::<ResetAt>()
             .init_resource::<StepCount>()
             .init_resource::<EnergyBooks>()
             .add_systems(Startup, spawn_box)
@@ -55,6 +56,19 @@ impl Plugin for SimulationPlugin {
 /// started over. Each plugin observes it for the state it owns.
 #[derive(Event, Debug, Clone, Copy, Default)]
 pub struct ResetScene;
+
+/// The simulated time of the latest reset (0 before any).
+///
+/// The clocks the HUD and the Readouts card show start there.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
+pub struct ResetAt(pub f64);
+
+impl ResetAt {
+    /// Returns the simulated seconds since the latest reset.
+    pub fn elapsed(self, time: &Time<Fixed>) -> f64 {
+        time.elapsed_secs_f64() - self.0
+    }
+}
 
 /// Marks the pulled box.
 #[derive(Component, Debug, Default)]
@@ -318,16 +332,17 @@ fn spawn_box(mut commands: Commands, params: Res<SceneParams>) {
     }
 }
 
-/// Puts every box back at rest at the centre and starts the run's books and statistics over.
+/// Puts every box back at rest at the centre and starts the run's books, statistics and clock over.
 ///
 /// Each box keeps its mass.
 fn reset_bodies_and_books(
     _reset: On<ResetScene>,
     mut commands: Commands,
     boxes: Query<(Entity, &MassProperties), With<RigidBox>>,
-    mut stats: ResMut<StepStats>,
-    mut books: ResMut<EnergyBooks>,
+    (mut stats, mut books): (ResMut<StepStats>, ResMut<EnergyBooks>),
+    (mut reset_at, time): (ResMut<ResetAt>, Res<Time<Fixed>>),
 ) {
+    reset_at.0 = time.elapsed_secs_f64();
     for (entity, mass) in &boxes {
         let rest = BodyState::at_rest(DVec2::ZERO);
         commands.entity(entity).insert(rigid_box(*mass, rest));

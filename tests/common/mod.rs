@@ -23,7 +23,7 @@ pub use bevy::window::{
 
 pub use rubber_band_box::game::GameLogicPlugin;
 pub use rubber_band_box::game::camera::SceneCamera;
-pub use rubber_band_box::game::hud::{EnergyHistory, Hud, HudLine};
+pub use rubber_band_box::game::energy::EnergyHistory;
 pub use rubber_band_box::game::input::controls::CYCLE_INTEGRATOR;
 pub use rubber_band_box::game::pointer::{Grip, PointerPlugin, PointerSource};
 pub use rubber_band_box::game::schedule::PhysicsSystems;
@@ -299,14 +299,21 @@ impl Game {
         }
     }
 
-    /// What a HUD line says now.
-    pub fn hud(&mut self, line: HudLine) -> String {
-        let mut lines = self.world().query::<(&HudLine, &Text)>();
-        lines
+    /// Returns what the line of text named `name` says now: "HUD Status", "Energy Total".
+    ///
+    /// Each line of the HUD and of the Readouts and Energy cards is named by its place and its
+    /// reading.
+    pub fn line(&mut self, name: &str) -> String {
+        let mut lines = self.world().query::<(&Name, &Text)>();
+        let found: Vec<String> = lines
             .iter(self.world())
-            .find(|(l, _)| **l == line)
+            .filter(|(named, _)| named.as_str() == name)
             .map(|(_, text)| text.0.clone())
-            .expect("every HUD line is spawned")
+            .collect();
+        match found.as_slice() {
+            [text] => text.clone(),
+            _ => panic!("{} lines named {name:?}", found.len()),
+        }
     }
 
     /// The ghosts' table as its grid shows it: a row a line, the cells two spaces apart.
@@ -491,13 +498,13 @@ impl Game {
 /// The screen's plugins (view, drawing, energy graph, plot) added to a headless game, with
 /// what the renderer would bring for them: assets, and the ones the gizmos' mesh bounds read.
 pub fn add_the_screen(app: &mut App) {
-    use rubber_band_box::game::screen::ScreenPlugin;
+    use rubber_band_box::game::GameScreenPlugin;
     if !app.is_plugin_added::<bevy::asset::AssetPlugin>() {
         app.add_plugins(bevy::asset::AssetPlugin::default());
     }
     app.init_asset::<Mesh>()
         .init_asset::<bevy::mesh::skinning::SkinnedMeshInverseBindposes>();
-    app.add_plugins((bevy::gizmos::GizmoPlugin, ScreenPlugin));
+    app.add_plugins((bevy::gizmos::GizmoPlugin, GameScreenPlugin));
 }
 
 /// Bevy's own UI layout, with no renderer: the panel's and the HUD's nodes get their

@@ -1,11 +1,10 @@
 //! The screen: the cameras and the interpolation between fixed steps ([`view`]), the box, the
-//! band and the overlays drawn ([`draw`]), and the dock's charts ([`chart`]): the energy
-//! graph ([`graph`]) and the ghosts' speed against error ([`plot`]). Needs rendering; reads
-//! the game's state, never the other way round.
+//! band and the overlays drawn ([`draw`]), the chart camera the dock's charts draw with
+//! ([`chart`]; the Energy card's graph is in `game::energy`), and the ghosts' speed against
+//! error ([`plot`]). Needs rendering; reads the game's state, never the other way round.
 
 pub mod chart;
 pub mod draw;
-pub mod graph;
 pub mod plot;
 pub mod view;
 
@@ -20,7 +19,6 @@ impl Plugin for ScreenPlugin {
             view::ViewPlugin,
             chart::ChartPlugin,
             draw::DrawPlugin,
-            graph::EnergyGraphPlugin,
             plot::WorkPrecisionPlotPlugin,
         ));
     }

@@ -9,39 +9,28 @@ use crate::game::schedule::PhysicsSystems;
 use crate::game::simulation::{EnergyBooks, ResetScene};
 use crate::physics::Energies;
 
-pub struct EnergyHistoryPlugin;
-
-impl Plugin for EnergyHistoryPlugin {
-    fn build(&self, app: &mut App) {
-        app.init_resource::<EnergyHistory>()
-            .add_observer(restart_on_reset)
-            .add_systems(
-                FixedUpdate,
-                record_energy_history.in_set(PhysicsSystems::AfterStep),
-            );
-    }
+/// Keeps the history.
+pub(super) fn plugin(app: &mut App) {
+    app.init_resource::<EnergyHistory>()
+        .add_observer(restart_on_reset)
+        .add_systems(
+            FixedUpdate,
+            record_energy_history.in_set(PhysicsSystems::AfterStep),
+        );
 }
 
 /// The energies over the last [`EnergyHistory::SPAN`] seconds of simulated time, for the graph.
 ///
 /// It holds at most [`EnergyHistory::SAMPLES`] samples whatever the step rate. A reset starts it
-/// over, and the HUD's clock from it.
+/// over.
 #[derive(Resource, Debug, Default, Clone)]
 pub struct EnergyHistory {
     pub samples: VecDeque<(f64, Energies)>,
-    /// Simulated time of the latest reset (0 before any).
-    pub since: f64,
 }
 
 impl EnergyHistory {
     pub const SPAN: f64 = 10.0;
     pub const SAMPLES: usize = 500;
-
-    /// Forgets the samples; the clock restarts at `now`.
-    fn restart(&mut self, now: f64) {
-        self.samples.clear();
-        self.since = now;
-    }
 
     pub fn record(&mut self, time: f64, energies: Energies) {
         let spacing = Self::SPAN / Self::SAMPLES as f64;
@@ -72,10 +61,6 @@ fn record_energy_history(
     history.record(time.elapsed_secs_f64(), books.energies);
 }
 
-fn restart_on_reset(
-    _reset: On<ResetScene>,
-    fixed_time: Res<Time<Fixed>>,
-    mut history: ResMut<EnergyHistory>,
-) {
-    history.restart(fixed_time.elapsed_secs_f64());
+fn restart_on_reset(_reset: On<ResetScene>, mut history: ResMut<EnergyHistory>) {
+    history.samples.clear();
 }

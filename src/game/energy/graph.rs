@@ -1,12 +1,13 @@
 //! The energy graph: kinetic, band and total energy over the last seconds of simulated time,
-//! in the energy card under its readouts (whose colours are its legend), scaled so that the
+//! in the Energy card under its lines (whose colours are its legend), scaled so that the
 //! largest total in view reaches the top. Drawn by the chart camera in its canvas.
 
 use bevy::prelude::*;
 use bevy::ui::UiGlobalTransform;
 use bevy::window::PrimaryWindow;
 
-use crate::game::hud::history::EnergyHistory;
+use super::history::EnergyHistory;
+use super::lines::spawn_lines;
 use crate::game::layout::{Card, Slots};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::chart::{Canvas, ChartGizmos};
@@ -14,13 +15,10 @@ use crate::game::shared::readable;
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::Energies;
 
-pub struct EnergyGraphPlugin;
-
-impl Plugin for EnergyGraphPlugin {
-    fn build(&self, app: &mut App) {
-        app.add_systems(Startup, spawn_canvas)
-            .add_systems(Update, draw_energy_graph.in_set(ScreenSystems::Draw));
-    }
+/// Draws the graph (with the screen: it needs the chart camera's gizmos).
+pub(super) fn plugin(app: &mut App) {
+    app.add_systems(Startup, spawn_canvas.after(spawn_lines))
+        .add_systems(Update, draw_energy_graph.in_set(ScreenSystems::Draw));
 }
 
 /// The graph's canvas.
