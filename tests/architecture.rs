@@ -281,7 +281,7 @@ const GAME_LAYERS: [&[&str]; 10] = [
     &["input"],
     &["hud", "readouts"],
     &["screen"],
-    &["energy"],
+    &["energy", "plot"],
     &["play", ""],
 ];
 
@@ -704,7 +704,7 @@ fn the_card_check_finds_a_card_named_in_another_room() {
 
 /// The most top-level items of `src/` that may be `pub` only for the tests: a ratchet, lowered
 /// as tests of private logic move beside the code (`#[cfg(test)]`); it may never rise.
-const PUB_FOR_TESTS_AT_MOST: usize = 62;
+const PUB_FOR_TESTS_AT_MOST: usize = 60;
 
 /// Returns the top-level `pub` items that no other file of `src/` names but `tests/` or
 /// `benches/` do, as "file: name".

@@ -397,8 +397,8 @@ fn laid_out_screen_game(size: UVec2) -> Game {
 
 /// The plot's canvas and its plotting frame, on the window (the UI's units scaled).
 fn plot_canvas(game: &mut Game) -> (rubber_band_box::game::screen::chart::Canvas, Rect) {
+    use rubber_band_box::game::plot::{PlotCanvas, plot_frame};
     use rubber_band_box::game::screen::chart::Canvas;
-    use rubber_band_box::game::screen::plot::{PlotCanvas, plot_frame};
     let world = game.world();
     let scale = UiScale(world.resource::<UiScale>().0);
     let mut canvases =
@@ -416,8 +416,8 @@ fn plot_canvas(game: &mut Game) -> (rubber_band_box::game::screen::chart::Canvas
 fn the_plot_puts_each_ghost_where_its_own_figures_say() {
     use rubber_band_box::game::ghosts::Ghosts;
     use rubber_band_box::game::ghosts::table::readings as table_readings;
+    use rubber_band_box::game::plot::{place, plot_points};
     use rubber_band_box::game::screen::chart::ChartGizmos;
-    use rubber_band_box::game::screen::plot::{place, plot_points};
 
     let mut game = laid_out_screen_game(UVec2::new(1280, 800));
     game.tap_key(KeyCode::KeyP);
@@ -475,8 +475,8 @@ fn close_to(a: Vec2, b: Vec2) -> bool {
 #[test]
 fn a_diverged_ghost_is_a_cross_at_the_plots_right_edge() {
     use rubber_band_box::game::ghosts::Ghosts;
+    use rubber_band_box::game::plot::{PlotLabel, place, plot_points};
     use rubber_band_box::game::screen::chart::ChartGizmos;
-    use rubber_band_box::game::screen::plot::{PlotLabel, place, plot_points};
 
     let mut game = laid_out_screen_game(UVec2::new(1280, 800));
     // k = 2e5 at 100 Hz: explicit Euler cannot hold it.

@@ -34,6 +34,7 @@ pub mod input;
 pub mod layout;
 pub mod learn;
 pub mod play;
+pub mod plot;
 pub mod pointer;
 pub mod readouts;
 pub mod replays;
@@ -92,6 +93,10 @@ pub struct GameScreenPlugin;
 
 impl Plugin for GameScreenPlugin {
     fn build(&self, app: &mut App) {
-        app.add_plugins((screen::ScreenPlugin, energy::EnergyGraphPlugin));
+        app.add_plugins((
+            screen::ScreenPlugin,
+            energy::EnergyGraphPlugin,
+            plot::WorkPrecisionPlotPlugin,
+        ));
     }
 }

@@ -58,7 +58,7 @@ pub struct Overlays {
     pub trail: bool,
     /// Every integrator and a reference beside the live box (`ghosts`).
     pub ghosts: bool,
-    /// The ghosts' speed against their error, live (`screen::plot`).
+    /// The ghosts' speed against their error, live (`game::plot`).
     pub plot: bool,
 }
 

@@ -5,7 +5,6 @@
 
 pub mod chart;
 pub mod draw;
-pub mod plot;
 pub mod view;
 
 use bevy::prelude::*;
@@ -15,11 +14,6 @@ pub struct ScreenPlugin;
 
 impl Plugin for ScreenPlugin {
     fn build(&self, app: &mut App) {
-        app.add_plugins((
-            view::ViewPlugin,
-            chart::ChartPlugin,
-            draw::DrawPlugin,
-            plot::WorkPrecisionPlotPlugin,
-        ));
+        app.add_plugins((view::ViewPlugin, chart::ChartPlugin, draw::DrawPlugin));
     }
 }
