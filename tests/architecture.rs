@@ -272,25 +272,60 @@ fn each_room_imports_only_the_rooms_under_it() {
 
 /// The game's rooms from the bottom up (docs/architecture.md): a room may import its own
 /// level and those under it. `game` itself (mod.rs) and `play` wire everything.
-const GAME_LAYERS: [&[&str]; 10] = [
+///
+/// A room listed nowhere is a leaf ([`LEAF`]): a card such as the Readouts card, which only the
+/// wiring imports. So a new card is its folder and its lines in `game/mod.rs`, and nothing here.
+const GAME_LAYERS: [&[&str]; 9] = [
     &["schedule", "shared", "theme", "web"],
     &["simulation"],
     &["ghosts", "layout", "pointer", "camera", "stability"],
     &["replays"],
     &["learn"],
     &["input"],
-    &["hud", "readouts"],
+    &["hud"],
     &["screen"],
-    &["energy", "plot"],
     &["play", ""],
 ];
 
-/// A game module's room (`game::replays::links` is in `replays`) and its level.
-fn game_layer(module: &str) -> Option<usize> {
+/// The level of the rooms [`GAME_LAYERS`] does not list: over every listed room but the wiring.
+const LEAF: usize = GAME_LAYERS.len() - 1;
+
+/// Returns a game module's room: `game::replays::links` is in `replays`, `game` in "".
+fn game_room(module: &str) -> Option<&str> {
     let room = module.strip_prefix("game")?;
     let room = room.strip_prefix("::").unwrap_or(room);
-    let room = room.split("::").next().unwrap_or("");
-    GAME_LAYERS.iter().position(|rooms| rooms.contains(&room))
+    Some(room.split("::").next().unwrap_or(""))
+}
+
+/// A game module's level: its room's in [`GAME_LAYERS`], or [`LEAF`] for a room listed nowhere.
+///
+/// A leaf sits under the wiring's level, which has the last index, so it counts as one more.
+fn game_layer(module: &str) -> Option<usize> {
+    let room = game_room(module)?;
+    let listed = GAME_LAYERS.iter().position(|rooms| rooms.contains(&room));
+    Some(match listed {
+        Some(level) if level == LEAF => LEAF + 1,
+        Some(level) => level,
+        None => LEAF,
+    })
+}
+
+/// Tells whether a game module is in a leaf room (listed nowhere in [`GAME_LAYERS`]).
+fn is_leaf(module: &str) -> bool {
+    game_room(module).is_some_and(|room| !GAME_LAYERS.iter().any(|rooms| rooms.contains(&room)))
+}
+
+/// Every import from one leaf room into another: a card reads the rooms under it, not a card.
+fn leaves_importing_leaves(graph: &BTreeMap<String, BTreeSet<String>>) -> Vec<String> {
+    let mut found = Vec::new();
+    for (module, imports) in graph.iter().filter(|(module, _)| is_leaf(module)) {
+        for import in imports.iter().filter(|import| is_leaf(import)) {
+            if game_room(import) != game_room(module) {
+                found.push(format!("{module} -> {import}"));
+            }
+        }
+    }
+    found
 }
 
 /// Every import inside the game that reaches up a level of [`GAME_LAYERS`].
@@ -302,12 +337,6 @@ fn upward_in_the_game(graph: &BTreeMap<String, BTreeSet<String>>) -> Vec<String>
 #[test]
 fn each_room_of_the_game_imports_only_the_rooms_under_it() {
     let graph = graph();
-    for module in graph.keys().filter(|module| module.starts_with("game")) {
-        assert!(
-            game_layer(module).is_some(),
-            "{module} is in no room of GAME_LAYERS"
-        );
-    }
     // The reader sees the edges the levels allow.
     assert!(graph["game::replays::playback"].contains("game::pointer"));
     assert!(graph["game::input::controls"].contains("game::replays::scenes"));
@@ -316,6 +345,46 @@ fn each_room_of_the_game_imports_only_the_rooms_under_it() {
         upward.is_empty(),
         "imports up a level of the game:\n{}",
         upward.join("\n")
+    );
+    // The cards no other room reads are leaves, listed nowhere.
+    for leaf in ["game::readouts", "game::energy::lines", "game::plot::axes"] {
+        assert!(is_leaf(leaf), "{leaf}");
+    }
+    assert!(!is_leaf("game::stability::margins") && !is_leaf("game"));
+    let between = leaves_importing_leaves(&graph);
+    assert!(
+        between.is_empty(),
+        "a leaf room imports another:\n{}",
+        between.join("\n")
+    );
+}
+
+#[test]
+fn the_leaf_check_finds_a_card_importing_a_card_and_one_imported_from_below() {
+    let mut graph = BTreeMap::new();
+    graph.insert(
+        "game::readouts".to_owned(),
+        BTreeSet::from([
+            "game::energy::lines".to_owned(),
+            "game::simulation".to_owned(),
+        ]),
+    );
+    graph.insert(
+        "game::hud".to_owned(),
+        BTreeSet::from(["game::readouts".to_owned()]),
+    );
+    graph.insert(
+        "game".to_owned(),
+        BTreeSet::from(["game::readouts".to_owned()]),
+    );
+    assert_eq!(
+        leaves_importing_leaves(&graph),
+        ["game::readouts -> game::energy::lines"]
+    );
+    assert_eq!(
+        upward_in_the_game(&graph).len(),
+        1,
+        "the HUD reaching up to a leaf"
     );
 }
 
