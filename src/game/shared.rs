@@ -115,15 +115,3 @@ pub fn hertz(rate: f64) -> String {
 pub fn times(scale: f64) -> String {
     format!("×{}", readable(scale))
 }
-
-/// Writes the linear damping as the HUD and the panel both show it, `b 5 = 1 /s`.
-///
-/// It gives the coefficient b (the command line's `--linear-damping`) and the rate b/m at which
-/// the velocity decays.
-pub fn linear_damping_readout(coefficient: f64, mass: f64) -> String {
-    format!(
-        "b {} = {} /s",
-        readable(coefficient),
-        readable(coefficient / mass)
-    )
-}

@@ -14,7 +14,7 @@ use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
 use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
-use crate::game::shared::{DockHidden, Overlays, StatusMessage};
+use crate::game::shared::{DockHidden, Overlays, StatusMessage, readable};
 use crate::game::simulation::ResetScene;
 use crate::physics::{
     Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scene, SceneParams, TIME_SCALE_RANGE,
@@ -156,6 +156,23 @@ impl Parameter {
             Self::Size => params.size.x,
             Self::LinearDamping => params.linear_damping,
             Self::AngularDamping => params.angular_damping,
+        }
+    }
+
+    /// Writes a value of the parameter with its unit: the panel's and the Readouts card's one form.
+    ///
+    /// The linear damping is its coefficient b and, given the mass, the rate b/m at which the
+    /// velocity decays (`b 5 = 1 /s`); without it (a slider's end, where room is short) `b 5`.
+    pub fn written(self, value: f64, mass: Option<f64>) -> String {
+        let value_read = readable(value);
+        match (self, mass) {
+            (Self::Stiffness | Self::Mass, _) => value_read,
+            (Self::Size, _) => format!("{value_read} px"),
+            (Self::LinearDamping, Some(mass)) => {
+                format!("b {value_read} = {} /s", readable(value / mass))
+            }
+            (Self::LinearDamping, None) => format!("b {value_read}"),
+            (Self::AngularDamping, _) => format!("{value_read} /s"),
         }
     }
 
@@ -462,5 +479,27 @@ fn open_replay(status: &mut StatusMessage) {
     #[cfg(not(target_arch = "wasm32"))]
     {
         status.0 = Some("drop a replay file on the window to play it".to_owned());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    // One form for a parameter wherever it is written: the panel's readout and the Readouts
+    // card with the mass, a slider's end without it (only the linear damping differs).
+    #[test]
+    fn a_parameter_is_written_with_its_unit() {
+        let written =
+            |parameter: Parameter, value: f64, mass: Option<f64>| parameter.written(value, mass);
+        assert_eq!(written(Parameter::Stiffness, 1e5, Some(5.0)), "1.0e5");
+        assert_eq!(written(Parameter::Mass, 5.0, None), "5");
+        assert_eq!(written(Parameter::Size, 60.0, Some(5.0)), "60 px");
+        assert_eq!(
+            written(Parameter::LinearDamping, 5.0, Some(2.0)),
+            "b 5 = 2.5 /s"
+        );
+        assert_eq!(written(Parameter::LinearDamping, 5.0, None), "b 5");
+        assert_eq!(written(Parameter::AngularDamping, 2.0203, None), "2.02 /s");
     }
 }

@@ -22,10 +22,7 @@ use crate::game::learn::ChapterButtons;
 #[cfg(target_arch = "wasm32")]
 use crate::game::schedule::AfterBevySystems;
 use crate::game::schedule::{GameSystems, ScreenSystems};
-use crate::game::shared::{
-    DockHidden, Mode, Overlays, SceneName, hertz, linear_damping_readout, readable, times,
-    window_rect,
-};
+use crate::game::shared::{DockHidden, Mode, Overlays, SceneName, hertz, times, window_rect};
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{
     ANGULAR_DAMPING_RANGE, Integrator, LINEAR_DAMPING_RANGE, MASS_RANGE, SIZE_RANGE,
@@ -125,13 +122,7 @@ impl Parameter {
     ///
     /// The linear damping is shown by its coefficient, whose rate depends on the mass.
     fn end_label(self, position: f32) -> String {
-        let value = readable(self.value_at(position));
-        match self {
-            Self::Stiffness | Self::Mass => value,
-            Self::Size => format!("{value} px"),
-            Self::LinearDamping => format!("b {value}"),
-            Self::AngularDamping => format!("{value} /s"),
-        }
+        self.written(self.value_at(position), None)
     }
 
     fn logarithmic(self) -> bool {
@@ -566,7 +557,9 @@ fn show_state(
     }
     for (readout, entity) in &mut readouts {
         let shown = match readout {
-            ValueText::Parameter(parameter) => parameter_readout(*parameter, &params),
+            ValueText::Parameter(parameter) => {
+                parameter.written(parameter.get(&params), Some(params.mass))
+            }
             ValueText::StepRate => hertz(1.0 / fixed_time.timestep().as_secs_f64()),
             ValueText::TimeScale => times(virtual_time.relative_speed_f64()),
         };
@@ -636,16 +629,5 @@ fn publish_buttons(
     if *published != json {
         crate::game::web::publish_panel(&json);
         *published = json;
-    }
-}
-
-/// Writes a parameter in the units and format the HUD and the command line use.
-fn parameter_readout(parameter: Parameter, params: &SceneParams) -> String {
-    let value = parameter.get(params);
-    match parameter {
-        Parameter::Stiffness | Parameter::Mass => readable(value),
-        Parameter::Size => format!("{} px", readable(value)),
-        Parameter::LinearDamping => linear_damping_readout(value, params.mass),
-        Parameter::AngularDamping => format!("{} /s", readable(value)),
     }
 }

@@ -7,13 +7,12 @@ use bevy::diagnostic::{DiagnosticsStore, FrameTimeDiagnosticsPlugin};
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
+use crate::game::input::controls::Parameter;
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, card_line};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::schedule::ScreenSystems;
-use crate::game::shared::{
-    SceneName, StatusMessage, hertz, linear_damping_readout, readable, times,
-};
+use crate::game::shared::{SceneName, StatusMessage, hertz, times};
 use crate::game::simulation::{Bodies, ResetAt, StepStats};
 use crate::game::theme::{self, colour, size};
 use crate::physics::{Integrator, Scene, SceneParams};
@@ -112,11 +111,11 @@ impl ReadoutLine {
                 line
             }
             ReadoutLine::Parameters => format!(
-                "m {}  k {}  damping: linear {}, angular {} /s",
-                readable(r.mass),
-                readable(r.stiffness),
-                linear_damping_readout(r.linear_rate * r.mass, r.mass),
-                readable(r.angular_rate)
+                "m {}  k {}  damping: linear {}, angular {}",
+                Parameter::Mass.written(r.mass, None),
+                Parameter::Stiffness.written(r.stiffness, None),
+                Parameter::LinearDamping.written(r.linear_rate * r.mass, Some(r.mass)),
+                Parameter::AngularDamping.written(r.angular_rate, None)
             ),
             ReadoutLine::Replay => {
                 let mut line = format!("recorded {} steps", r.recorded_steps);
