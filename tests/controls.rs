@@ -306,3 +306,18 @@ fn the_open_key_says_how_to_open_a_replay() {
         Some("drop a replay file on the window to play it")
     );
 }
+
+/// The keys are one list (`CONTROLS`, which the help line, the title, README and the link's
+/// docs read), so a key bound twice shows there: none is, and every control has a key.
+#[test]
+fn no_key_is_bound_to_two_controls() {
+    let mut seen = std::collections::HashMap::new();
+    for control in &CONTROLS {
+        assert!(!control.keys.is_empty(), "{} has no key", control.name);
+        for key in control.keys {
+            if let Some(before) = seen.insert(*key, control.name) {
+                panic!("{key:?} is bound to {before} and to {}", control.name);
+            }
+        }
+    }
+}
