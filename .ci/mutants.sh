@@ -10,9 +10,9 @@
 # - core (the default): src/physics/ against the core's tests (tests/core.rs,
 #   tests/integrators.rs without the soak, tests/cli.rs, tests/stability.rs). Results in
 #   mutants.out/core/.
-# - game: the game layer (src/game/input/{controls,panel}.rs, src/game/pointer.rs,
-#   src/game/simulation.rs, the HUD and the Readouts and Energy cards), each file against the headless tests that drive
-#   it (the groups below). Results in mutants-game.out/, a folder a group.
+# - game: the game layer (src/game/input/controls.rs, the panel, src/game/pointer.rs,
+#   src/game/simulation.rs, the HUD and the Readouts and Energy cards), each file against the
+#   headless tests that drive it (the groups below). Results in mutants-game.out/, a folder a group.
 # Each writes summary.csv beside its results (.ci/mutants-summary.sh): a row a group, the
 # score of the viable mutants; docs/testing.md shows a committed snapshot of it.
 #
@@ -73,7 +73,7 @@ else
     groups=(
         "src/game/input/controls.rs src/game/pointer.rs : controls pointer fixed_step panel"
         "src/game/simulation.rs : fixed_step pointer lab hud replay learn"
-        "src/game/input/panel.rs : panel"
+        "src/game/input/panel/mod.rs src/game/input/panel/buttons.rs src/game/input/panel/slider.rs : panel"
         "src/game/hud/mod.rs src/game/hud/title.rs src/game/readouts/mod.rs src/game/energy/lines.rs src/game/energy/history.rs : lib hud controls fixed_step draw"
     )
     # The previous results, so that `--iterate` tests only what they did not catch.

@@ -1,0 +1,312 @@
+//! The on-screen panel: every control a key has, for a mouse or a finger, built from Bevy's
+//! own widgets (`bevy_ui_widgets`: buttons and sliders, reached through picking). Each button
+//! sends the same [`Action`] its key sends and each slider an [`Action::Set`], so the panel
+//! holds no state of its own beyond whether it is open: what it shows is read back from the
+//! resources every frame. It is the dock's first card ([`Card::CONTROLS`]); the cards' titles
+//! are buttons too, and fold their cards. It lies outside the scene's viewport, so a press on
+//! it never grabs the box.
+//!
+//! Here the card and what it shows; its buttons and their touch dispatch in [`buttons`], its
+//! sliders and their scales in [`slider`].
+
+pub mod buttons;
+pub mod slider;
+
+use bevy::ecs::system::SystemParam;
+use bevy::prelude::*;
+use bevy::ui_widgets::{ButtonPlugin, SliderPlugin};
+
+use crate::game::input::controls::{Action, Parameter, help_line};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slot, Slots, card_line};
+use crate::game::learn::ChapterButtons;
+#[cfg(target_arch = "wasm32")]
+use crate::game::schedule::AfterBevySystems;
+use crate::game::schedule::{GameSystems, ScreenSystems};
+use crate::game::shared::{DockHidden, Mode, Overlays, SceneName, hertz, times};
+use crate::game::theme::{self, colour, size, space};
+use crate::physics::{Integrator, Scene, SceneParams};
+pub use buttons::PanelButton;
+#[cfg(target_arch = "wasm32")]
+use buttons::publish_buttons;
+use buttons::{BUTTON, LIT, coloured_text, press_button, spawn_button, tap_buttons, text};
+pub use slider::{PanelSlider, SliderEnd};
+use slider::{move_slider, place_thumbs, show_values, spawn_slider};
+
+pub struct PanelPlugin;
+
+impl Card {
+    /// The panel: every control a key has.
+    pub const CONTROLS: Card = Card("controls");
+}
+
+impl Plugin for PanelPlugin {
+    fn build(&self, app: &mut App) {
+        // `DefaultPlugins` bring them with the widgets feature; the headless game adds them.
+        if !app.is_plugin_added::<ButtonPlugin>() {
+            app.add_plugins(ButtonPlugin);
+        }
+        if !app.is_plugin_added::<SliderPlugin>() {
+            app.add_plugins(SliderPlugin);
+        }
+        app.register_card(CardSpec::always(Card::CONTROLS, "Controls", 20))
+            .add_observer(press_button)
+            .add_observer(move_slider)
+            .add_systems(Startup, spawn_panel)
+            .add_systems(PostStartup, spawn_chapter_buttons)
+            .add_systems(RunFixedMainLoop, tap_buttons.in_set(GameSystems::Input))
+            .add_systems(
+                Update,
+                (show_state, show_values, place_thumbs)
+                    .chain()
+                    .in_set(ScreenSystems::Panel),
+            );
+        #[cfg(target_arch = "wasm32")]
+        app.add_systems(
+            PostUpdate,
+            publish_buttons.in_set(AfterBevySystems::AfterLayout),
+        );
+    }
+}
+
+/// A text showing a value the panel controls.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+enum ValueText {
+    Parameter(Parameter),
+    StepRate,
+    TimeScale,
+}
+
+const DIM: Color = colour::DIM;
+
+/// Spawns a titled row of widgets that wraps on a narrow screen.
+fn spawn_row(commands: &mut Commands, parent: Entity, title: &str) -> Entity {
+    let row = commands
+        .spawn((
+            Node {
+                flex_direction: FlexDirection::Row,
+                flex_wrap: FlexWrap::Wrap,
+                align_items: AlignItems::Center,
+                ..default()
+            },
+            ChildOf(parent),
+        ))
+        .id();
+    if !title.is_empty() {
+        commands.spawn((
+            coloured_text(title, DIM),
+            Node {
+                width: px(64),
+                ..default()
+            },
+            ChildOf(row),
+        ));
+    }
+    row
+}
+
+/// Spawns learn mode's buttons where its card keeps them.
+///
+/// The card is spawned in `Startup`, so this runs in `PostStartup` to find it.
+fn spawn_chapter_buttons(mut commands: Commands, rows: Query<Entity, With<ChapterButtons>>) {
+    for row in &rows {
+        for (label, action) in [
+            ("◂ back", Action::PreviousChapter),
+            ("next ▸", Action::NextChapter),
+            ("leave", Action::Learn),
+        ] {
+            spawn_button(&mut commands, row, label, PanelButton::Send(action));
+        }
+    }
+}
+
+fn spawn_panel(mut commands: Commands, slots: Slots) {
+    // The dock's own switch stands on the status line, where a finger finds it with the dock
+    // hidden.
+    if let Some(status) = slots.find(Slot::StatusTools) {
+        spawn_button(
+            &mut commands,
+            status,
+            "instruments",
+            PanelButton::Send(Action::ToggleDock),
+        );
+    }
+    let Some(card) = slots.card_body(Card::CONTROLS) else {
+        return;
+    };
+    let body = commands
+        .spawn((
+            Name::new("Panel"),
+            Node {
+                flex_direction: FlexDirection::Column,
+                padding: UiRect::all(px(space::PAD)),
+                ..default()
+            },
+            BackgroundColor(colour::CARD),
+            ChildOf(card),
+        ))
+        .id();
+
+    let row = spawn_row(&mut commands, body, "");
+    for (label, action) in [
+        ("pause", Action::TogglePause),
+        ("step", Action::Step),
+        ("reset", Action::Reset),
+        ("save", Action::Save),
+        ("open", Action::Open),
+        ("frame", Action::HomeView),
+        ("learn", Action::Learn),
+    ] {
+        spawn_button(&mut commands, row, label, PanelButton::Send(action));
+    }
+    let row = spawn_row(&mut commands, body, "method");
+    for integrator in Integrator::ALL {
+        let does = PanelButton::Send(Action::Integrator(integrator));
+        spawn_button(&mut commands, row, integrator.name(), does);
+    }
+    let row = spawn_row(&mut commands, body, "scene");
+    for (index, name) in Scene::NAMES.iter().enumerate() {
+        spawn_button(
+            &mut commands,
+            row,
+            name,
+            PanelButton::Send(Action::Scene(index)),
+        );
+    }
+    for parameter in Parameter::ALL {
+        let row = spawn_row(&mut commands, body, parameter.name());
+        spawn_slider(&mut commands, row, parameter);
+        commands.spawn((
+            text(""),
+            ValueText::Parameter(parameter),
+            Node {
+                margin: UiRect::left(px(8)),
+                ..default()
+            },
+            ChildOf(row),
+        ));
+    }
+    for (title, readout, slower, faster) in [
+        (
+            "rate",
+            ValueText::StepRate,
+            Action::FewerSteps,
+            Action::MoreSteps,
+        ),
+        ("time", ValueText::TimeScale, Action::Slower, Action::Faster),
+    ] {
+        let row = spawn_row(&mut commands, body, title);
+        spawn_button(&mut commands, row, "÷2", PanelButton::Send(slower));
+        commands.spawn((
+            text(""),
+            readout,
+            Node {
+                min_width: px(80),
+                justify_content: JustifyContent::Center,
+                ..default()
+            },
+            ChildOf(row),
+        ));
+        spawn_button(&mut commands, row, "×2", PanelButton::Send(faster));
+    }
+    let row = spawn_row(&mut commands, body, "share");
+    for (label, action) in [
+        ("link", Action::ShareLink),
+        ("game link", Action::ShareGame),
+    ] {
+        spawn_button(&mut commands, row, label, PanelButton::Send(action));
+    }
+    let row = spawn_row(&mut commands, body, "show");
+    for (label, action) in [
+        ("ghosts", Action::ToggleGhosts),
+        ("plot", Action::TogglePlot),
+        ("vectors", Action::ToggleVectors),
+        ("trail", Action::ToggleTrail),
+    ] {
+        spawn_button(&mut commands, row, label, PanelButton::Send(action));
+    }
+    // Under the buttons, every key: the card is the panel's, whole.
+    commands.spawn((
+        Name::new("Keys"),
+        KeysLine,
+        card_line(help_line(), theme::text_font(size::CAPTION), DIM),
+        ChildOf(card),
+    ));
+}
+
+/// The Controls card's line of every key and what it does (`controls::help_line`).
+#[derive(Component, Debug)]
+struct KeysLine;
+
+/// What the panel shows: the settings, the overlays, the mode and the clocks.
+#[derive(SystemParam)]
+struct Shown<'w> {
+    params: Res<'w, SceneParams>,
+    integrator: Res<'w, Integrator>,
+    scene: Res<'w, SceneName>,
+    overlays: Res<'w, Overlays>,
+    dock_hidden: Res<'w, DockHidden>,
+    mode: Res<'w, State<Mode>>,
+    virtual_time: Res<'w, Time<Virtual>>,
+    fixed_time: Res<'w, Time<Fixed>>,
+}
+
+/// Shows what the resources say: the panel open or folded, which buttons are lit, the values.
+fn show_state(
+    shown: Shown,
+    mut buttons: Query<(&PanelButton, &mut BackgroundColor, &Children)>,
+    mut texts: Query<&mut Text>,
+    mut readouts: Query<(&ValueText, Entity)>,
+) {
+    let Shown {
+        params,
+        integrator,
+        scene,
+        overlays,
+        dock_hidden,
+        mode,
+        virtual_time,
+        fixed_time,
+    } = shown;
+    let paused = virtual_time.is_paused();
+    for (button, mut background, children) in &mut buttons {
+        let (lit, label) = match *button {
+            PanelButton::Fold(_) => (false, None),
+            PanelButton::Send(Action::TogglePause) => {
+                (paused, Some(if paused { "resume" } else { "pause" }))
+            }
+            PanelButton::Send(Action::Integrator(method)) => (method == *integrator, None),
+            PanelButton::Send(Action::Scene(index)) => {
+                (Scene::NAMES.get(index) == Some(&scene.0.as_str()), None)
+            }
+            PanelButton::Send(Action::ToggleGhosts) => (overlays.ghosts, None),
+            PanelButton::Send(Action::TogglePlot) => (overlays.plot, None),
+            PanelButton::Send(Action::ToggleVectors) => (overlays.vectors, None),
+            PanelButton::Send(Action::ToggleTrail) => (overlays.trail, None),
+            PanelButton::Send(Action::ToggleDock) => (!dock_hidden.0, None),
+            PanelButton::Send(Action::Learn) => (*mode.get() == Mode::Learn, None),
+            PanelButton::Send(_) => (false, None),
+        };
+        background.set_if_neq(BackgroundColor(if lit { LIT } else { BUTTON }));
+        if let Some(label) = label
+            && let Some(&child) = children.first()
+            && let Ok(mut text) = texts.get_mut(child)
+            && text.0 != label
+        {
+            text.0 = label.to_owned();
+        }
+    }
+    for (readout, entity) in &mut readouts {
+        let shown = match readout {
+            ValueText::Parameter(parameter) => {
+                parameter.written(parameter.get(&params), Some(params.mass))
+            }
+            ValueText::StepRate => hertz(1.0 / fixed_time.timestep().as_secs_f64()),
+            ValueText::TimeScale => times(virtual_time.relative_speed_f64()),
+        };
+        if let Ok(mut text) = texts.get_mut(entity)
+            && text.0 != shown
+        {
+            text.0 = shown;
+        }
+    }
+}

@@ -1,0 +1,183 @@
+//! The panel's sliders: one a scene parameter, on a logarithmic scale where the parameter
+//! spans decades, its ends' values written under its track as the readout writes them, its
+//! value sent as an [`Action::Set`] and moved back to the value in force.
+
+use bevy::prelude::*;
+use bevy::ui_widgets::{
+    Slider, SliderRange, SliderStep, SliderThumb, SliderValue, TrackClick, ValueChange,
+};
+
+use crate::game::input::controls::{Action, Parameter};
+use crate::game::theme::{self, colour, size};
+use crate::physics::{
+    ANGULAR_DAMPING_RANGE, LINEAR_DAMPING_RANGE, MASS_RANGE, SIZE_RANGE, STIFFNESS_RANGE,
+    SceneParams,
+};
+
+/// A slider setting a scene parameter.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PanelSlider(pub Parameter);
+
+/// The value at one end of a parameter's slider.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SliderEnd(pub Parameter);
+
+const SLIDER_WIDTH: f32 = 150.0;
+
+const THUMB_SIZE: f32 = 18.0;
+
+impl Parameter {
+    /// Returns the slider's range and step.
+    ///
+    /// k, the mass and the size are on a logarithmic scale (log10 of the value), the damping
+    /// rates on a linear one. Each spans the game's range for its parameter (`physics::scene`).
+    fn slider(self) -> (f32, f32, f32) {
+        let (range, step) = match self {
+            Self::Stiffness => (STIFFNESS_RANGE, 0.1),
+            Self::Mass => (MASS_RANGE, 0.1),
+            Self::Size => (SIZE_RANGE, 0.05),
+            Self::LinearDamping => (LINEAR_DAMPING_RANGE, 0.5),
+            Self::AngularDamping => (ANGULAR_DAMPING_RANGE, 0.1),
+        };
+        let end = |value: f64| self.slider_position(value);
+        (end(range.low), end(range.high), step)
+    }
+
+    /// Labels a slider's end as the readout shows the value.
+    ///
+    /// The linear damping is shown by its coefficient, whose rate depends on the mass.
+    fn end_label(self, position: f32) -> String {
+        self.written(self.value_at(position), None)
+    }
+
+    fn logarithmic(self) -> bool {
+        matches!(self, Self::Stiffness | Self::Mass | Self::Size)
+    }
+
+    fn slider_position(self, value: f64) -> f32 {
+        if self.logarithmic() {
+            value.log10() as f32
+        } else {
+            value as f32
+        }
+    }
+
+    fn value_at(self, position: f32) -> f64 {
+        let position = f64::from(position);
+        if self.logarithmic() {
+            // The slider's steps are tenths of a decade: 1e5, not 99999.99.
+            let value = 10f64.powf(position);
+            let digits = 10f64.powf(value.log10().floor() - 1.0);
+            (value / digits).round() * digits
+        } else {
+            position
+        }
+    }
+}
+
+/// Spawns a parameter's slider in `row`, with its ends' values under its track.
+pub(super) fn spawn_slider(commands: &mut Commands, row: Entity, parameter: Parameter) {
+    let (start, end, step) = parameter.slider();
+    // The track with its ends' values under it, in the readout's units.
+    let column = commands
+        .spawn((
+            Node {
+                flex_direction: FlexDirection::Column,
+                margin: UiRect::vertical(px(3)),
+                ..default()
+            },
+            ChildOf(row),
+        ))
+        .id();
+    commands.spawn((
+        Name::new(format!("Slider {}", parameter.name())),
+        Slider {
+            track_click: TrackClick::Snap,
+            ..default()
+        },
+        SliderRange::new(start, end),
+        SliderStep(step),
+        PanelSlider(parameter),
+        Node {
+            width: px(SLIDER_WIDTH),
+            height: px(THUMB_SIZE),
+            ..default()
+        },
+        BackgroundColor(colour::TRACK),
+        ChildOf(column),
+        children![(
+            SliderThumb,
+            Node {
+                position_type: PositionType::Absolute,
+                width: px(THUMB_SIZE),
+                height: px(THUMB_SIZE),
+                ..default()
+            },
+            BackgroundColor(colour::THUMB),
+        )],
+    ));
+    let ends = commands
+        .spawn((
+            Node {
+                width: px(SLIDER_WIDTH),
+                justify_content: JustifyContent::SpaceBetween,
+                ..default()
+            },
+            ChildOf(column),
+        ))
+        .id();
+    for position in [start, end] {
+        commands.spawn((
+            SliderEnd(parameter),
+            Text::new(parameter.end_label(position)),
+            theme::figures_font(size::CAPTION),
+            TextColor(colour::DIM),
+            ChildOf(ends),
+        ));
+    }
+}
+
+/// Sends the new value of a moved slider's parameter.
+///
+/// The slider shows the value in force after the controls have applied (or refused) it.
+pub(super) fn move_slider(
+    change: On<ValueChange<f32>>,
+    sliders: Query<&PanelSlider>,
+    mut actions: MessageWriter<Action>,
+) {
+    if let Ok(PanelSlider(parameter)) = sliders.get(change.source) {
+        actions.write(Action::Set(*parameter, parameter.value_at(change.value)));
+    }
+}
+
+/// Places each slider's thumb where its value lies along the track.
+pub(super) fn place_thumbs(
+    sliders: Query<(&SliderValue, &SliderRange, &Children), Changed<SliderValue>>,
+    mut thumbs: Query<&mut Node, With<SliderThumb>>,
+) {
+    for (value, range, children) in &sliders {
+        for &child in children {
+            if let Ok(mut node) = thumbs.get_mut(child) {
+                let fraction = (value.0 - range.start()) / range.span().max(f32::EPSILON);
+                node.left = px(fraction.clamp(0.0, 1.0) * (SLIDER_WIDTH - THUMB_SIZE));
+            }
+        }
+    }
+}
+
+/// Moves each slider to the value in force (set by a key, a link or a refusal, not only by it).
+pub(super) fn show_values(
+    mut commands: Commands,
+    params: Res<SceneParams>,
+    sliders: Query<(Entity, &PanelSlider, &SliderValue)>,
+) {
+    for (entity, PanelSlider(parameter), value) in &sliders {
+        let (start, end, _) = parameter.slider();
+        let wanted = parameter
+            .slider_position(parameter.get(&params))
+            .clamp(start, end);
+        if (value.0 - wanted).abs() > 1e-4 {
+            commands.entity(entity).insert(SliderValue(wanted));
+        }
+    }
+}
