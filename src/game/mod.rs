@@ -22,6 +22,7 @@
 //! - [`readouts`]: the Readouts card: the scene, the integrator, the clock, the parameters;
 //! - [`hud`]: the status line over the scene, the hint under it, and the window title;
 //! - [`energy`]: the Energy card: the energies, the ledger, and their graph;
+//! - [`mod@plot`]: the Speed against error card: each ghost a point on the report's axes;
 //! - [`screen`]: the cameras, interpolation, drawing and the dock's charts (need a window);
 //! - `web`, in the browser only: the page's side (downloads, files opened, what the page
 //!   reads back).

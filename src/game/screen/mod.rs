@@ -1,7 +1,7 @@
 //! The screen: the cameras and the interpolation between fixed steps ([`view`]), the box, the
-//! band and the overlays drawn ([`draw`]), the chart camera the dock's charts draw with
-//! ([`chart`]; the Energy card's graph is in `game::energy`), and the ghosts' speed against
-//! error ([`plot`]). Needs rendering; reads the game's state, never the other way round.
+//! band and the overlays drawn ([`draw`]), and the chart camera the dock's charts draw with
+//! ([`chart`]; the Energy card's graph is in `game::energy`, the plot of speed against error
+//! in `game::plot`). Needs rendering; reads the game's state, never the other way round.
 
 pub mod chart;
 pub mod draw;
