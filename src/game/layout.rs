@@ -12,6 +12,7 @@
 //! The plugins that fill the regions find them by their [`Slot`]; this module spawns the
 //! frame in `PreStartup`, they spawn their content in `Startup`.
 
+use bevy::ecs::system::ScheduleSystem;
 use bevy::ecs::system::SystemParam;
 use bevy::picking::Pickable;
 use bevy::prelude::*;
@@ -223,6 +224,17 @@ impl CardRegistry {
 pub trait RegisterCard {
     /// Registers a card, in the place it asks; a second registration of a name is ignored.
     fn register_card(&mut self, spec: CardSpec) -> &mut Self;
+
+    /// Registers a card that writes its own text, and its two systems.
+    ///
+    /// `spawn` fills its body at start-up, `write` writes it every frame, in
+    /// `ScreenSystems::Cards`. The cards' writers run in any order among themselves: each writes only its own texts.
+    fn add_text_card<S, W>(
+        &mut self,
+        spec: CardSpec,
+        spawn: impl IntoScheduleConfigs<ScheduleSystem, S>,
+        write: impl IntoScheduleConfigs<ScheduleSystem, W>,
+    ) -> &mut Self;
 }
 
 impl RegisterCard for App {
@@ -238,6 +250,22 @@ impl RegisterCard for App {
             registry.0.sort_by_key(|known| known.place);
         }
         self
+    }
+
+    fn add_text_card<S, W>(
+        &mut self,
+        spec: CardSpec,
+        spawn: impl IntoScheduleConfigs<ScheduleSystem, S>,
+        write: impl IntoScheduleConfigs<ScheduleSystem, W>,
+    ) -> &mut Self {
+        self.register_card(spec)
+            .add_systems(Startup, spawn)
+            .add_systems(
+                Update,
+                write
+                    .in_set(ScreenSystems::Cards)
+                    .ambiguous_with(ScreenSystems::Cards),
+            )
     }
 }
 

@@ -5,7 +5,6 @@ use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, card_line};
-use crate::game::schedule::ScreenSystems;
 use crate::game::simulation::{Band, Bodies, EnergyBooks, mechanical_energies};
 use crate::game::theme::{self, colour, size};
 use crate::physics::{Energies, EnergyLedger, SceneParams};
@@ -17,15 +16,11 @@ impl Card {
 
 /// Registers the card and writes its lines.
 pub(super) fn plugin(app: &mut App) {
-    app.register_card(CardSpec::always(Card::ENERGY, "Energy", 40))
-        .add_systems(Startup, spawn_lines)
-        .add_systems(
-            Update,
-            show_lines
-                .in_set(ScreenSystems::Cards)
-                // Each card writes only its own texts.
-                .ambiguous_with(ScreenSystems::Cards),
-        );
+    app.add_text_card(
+        CardSpec::always(Card::ENERGY, "Energy", 40),
+        spawn_lines,
+        show_lines,
+    );
 }
 
 /// One line of the card, a `Text` entity named "Energy" and the line.
@@ -163,11 +158,8 @@ pub(super) fn spawn_lines(mut commands: Commands, slots: Slots) {
 fn show_lines(sources: Sources, mut lines: Query<(&EnergyLine, &mut Text)>) {
     let readings = sources.readings();
     for (line, mut text) in &mut lines {
-        // Only write what changed, so change detection (and text layout) stays quiet.
-        let wanted = line.text(&readings);
-        if text.0 != wanted {
-            text.0 = wanted;
-        }
+        // Only what changed is written, so change detection (and text layout) stays quiet.
+        text.set_if_neq(Text(line.text(&readings)));
     }
 }
 

@@ -8,7 +8,6 @@ use bevy::prelude::*;
 
 use super::steppers::{GhostKind, Ghosts};
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slots};
-use crate::game::schedule::ScreenSystems;
 use crate::game::stability::StabilityMargins;
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::Integrator;
@@ -21,20 +20,13 @@ impl Card {
 
 /// Registers the card and fills it.
 pub(super) fn plugin(app: &mut App) {
-    app.register_card(CardSpec {
+    let spec = CardSpec {
         card: Card::GHOSTS,
         title: "Ghosts",
         place: 50,
         offered: |overlays, _| overlays.ghosts,
-    })
-    .add_systems(Startup, spawn_table)
-    .add_systems(
-        Update,
-        show_table
-            .in_set(ScreenSystems::Cards)
-            // Each card writes only its own texts.
-            .ambiguous_with(ScreenSystems::Cards),
-    );
+    };
+    app.add_text_card(spec, spawn_table, show_table);
 }
 
 /// The table's columns.

@@ -213,11 +213,8 @@ fn show_hud(
     let recent = now - news.since < NEWS_SECONDS;
     let readings = sources.readings(news.text.clone().filter(|_| recent));
     for (line, mut text, mut shade) in &mut lines {
-        // Only write what changed, so change detection (and text layout) stays quiet.
-        let wanted = line.text(&readings);
-        if text.0 != wanted {
-            text.0 = wanted;
-        }
+        // Only what changed is written, so change detection (and text layout) stays quiet.
+        text.set_if_neq(Text(line.text(&readings)));
         shade.set_if_neq(TextColor(line.colour(&readings)));
     }
 }

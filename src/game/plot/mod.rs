@@ -231,9 +231,7 @@ fn draw_plot(
         if node.display != display {
             node.display = display;
         }
-        if text.0 != said {
-            text.0 = said;
-        }
+        text.set_if_neq(Text(said));
     }
     let Some(canvas) = canvas else {
         return;
@@ -298,9 +296,7 @@ fn draw_plot(
     for (label, mut text, mut node) in &mut labels {
         let index = points.iter().position(|p| p.kind == label.0);
         let name = index.map(|i| points[i].label()).unwrap_or_default();
-        if text.0 != name {
-            text.0 = name;
-        }
+        text.set_if_neq(Text(name));
         put(&mut node, index.map(|i| places[i]));
     }
 

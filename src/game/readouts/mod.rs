@@ -11,7 +11,6 @@ use crate::game::input::controls::Parameter;
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, card_line};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
-use crate::game::schedule::ScreenSystems;
 use crate::game::shared::{SceneName, StatusMessage, hertz, times};
 use crate::game::simulation::{Bodies, ResetAt, StepStats};
 use crate::game::theme::{self, colour, size};
@@ -27,15 +26,11 @@ pub fn plugin(app: &mut App) {
     if !app.is_plugin_added::<FrameTimeDiagnosticsPlugin>() {
         app.add_plugins(FrameTimeDiagnosticsPlugin::default());
     }
-    app.register_card(CardSpec::always(Card::READOUTS, "Readouts", 30))
-        .add_systems(Startup, spawn_lines)
-        .add_systems(
-            Update,
-            show_lines
-                .in_set(ScreenSystems::Cards)
-                // Each card writes only its own texts.
-                .ambiguous_with(ScreenSystems::Cards),
-        );
+    app.add_text_card(
+        CardSpec::always(Card::READOUTS, "Readouts", 30),
+        spawn_lines,
+        show_lines,
+    );
 }
 
 /// One line of the card, a `Text` entity named "Readouts" and the line.
@@ -229,11 +224,8 @@ fn spawn_lines(mut commands: Commands, slots: Slots) {
 fn show_lines(sources: Sources, mut lines: Query<(&ReadoutLine, &mut Text, &mut TextColor)>) {
     let readings = sources.readings();
     for (line, mut text, mut shade) in &mut lines {
-        // Only write what changed, so change detection (and text layout) stays quiet.
-        let wanted = line.text(&readings);
-        if text.0 != wanted {
-            text.0 = wanted;
-        }
+        // Only what changed is written, so change detection (and text layout) stays quiet.
+        text.set_if_neq(Text(line.text(&readings)));
         shade.set_if_neq(TextColor(line.colour(&readings)));
     }
 }

@@ -6,7 +6,6 @@ use bevy::prelude::*;
 
 use super::margins::StabilityMargins;
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, card_line};
-use crate::game::schedule::ScreenSystems;
 use crate::game::shared::readable;
 use crate::game::theme::{self, colour, size};
 use crate::physics::Integrator;
@@ -19,15 +18,11 @@ impl Card {
 
 /// Registers the card and fills it.
 pub(super) fn plugin(app: &mut App) {
-    app.register_card(CardSpec::always(Card::STABILITY, "Stability", 70))
-        .add_systems(Startup, spawn_line)
-        .add_systems(
-            Update,
-            show_line
-                .in_set(ScreenSystems::Cards)
-                // Each card writes only its own texts.
-                .ambiguous_with(ScreenSystems::Cards),
-        );
+    app.add_text_card(
+        CardSpec::always(Card::STABILITY, "Stability", 70),
+        spawn_line,
+        show_line,
+    );
 }
 
 /// The card's line of text.
