@@ -145,7 +145,7 @@ const INNER: f32 = 0.8;
 /// How fast the view eases toward where it should be, per second.
 const EASE_RATE: f32 = 6.0;
 /// The player's zoom's range.
-pub const ZOOM_RANGE: (f32, f32) = (0.05, 20.0);
+const ZOOM_RANGE: (f32, f32) = (0.05, 20.0);
 /// The most the view widens to follow the box, as a multiple of home's world per pixel.
 ///
 /// Past it the view pans with the box instead. A box let go from rest anywhere the band can
@@ -286,7 +286,7 @@ struct ViewControls<'w, 's> {
 }
 
 /// Returns the viewport's rectangle now, in logical pixels: the layout's, or the whole window.
-pub fn viewport_rect(viewport: &SceneViewport, window: &Window) -> Rect {
+pub(crate) fn viewport_rect(viewport: &SceneViewport, window: &Window) -> Rect {
     viewport
         .0
         .unwrap_or(Rect::from_corners(Vec2::ZERO, window.size()))
@@ -298,7 +298,7 @@ pub fn world_per_pixel(frame: &CameraFrame) -> f32 {
 }
 
 /// Returns the part of the world the scene's camera shows now, if it has shown any.
-pub fn shown_area(frame: &CameraFrame, viewport: &SceneViewport, window: &Window) -> Option<Rect> {
+pub(crate) fn shown_area(frame: &CameraFrame, viewport: &SceneViewport, window: &Window) -> Option<Rect> {
     let size = viewport_rect(viewport, window).size();
     frame.shown.map(|view| view.area(size))
 }

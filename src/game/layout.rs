@@ -9,7 +9,7 @@
 //! [`SceneViewport`] says where Bevy's layout put it, for the camera to render the scene
 //! into and the pointer to map through.
 //!
-//! The plugins that fill the regions find them by their [`Slot`]; this module spawns the
+//! The plugins that fill the regions find them by their `Slot`; this module spawns the
 //! frame in `PreStartup`, they spawn their content in `Startup`.
 
 use bevy::ecs::system::ScheduleSystem;
@@ -202,7 +202,7 @@ impl CardSpec {
 
 /// Every card of the dock in its order: what the plugins registered.
 ///
-/// The dock spawns a frame, a title and a body ([`Slot::Card`]) for each at start-up.
+/// The dock spawns a frame, a title and a body (`Slot::Card`) for each at start-up.
 #[derive(Resource, Debug, Default)]
 pub struct CardRegistry(Vec<CardSpec>);
 
@@ -396,7 +396,7 @@ pub fn ui_scale_for(size: Vec2) -> f32 {
 
 /// Where the regions' content goes: the plugins that fill them find them by it.
 #[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Slot {
+pub(crate) enum Slot {
     /// Over the scene, one line: what a player must always see.
     Status,
     /// At the status line's end: the switches that must stay in reach (the dock's own).
@@ -409,7 +409,7 @@ pub enum Slot {
 
 /// The regions' slots: where a plugin finds the place for its content.
 #[derive(SystemParam)]
-pub struct Slots<'w, 's> {
+pub(crate) struct Slots<'w, 's> {
     slots: Query<'w, 's, (Entity, &'static Slot)>,
 }
 
@@ -431,7 +431,7 @@ impl Slots<'_, '_> {
 /// Returns a line of text in a card's body: the cards' inset and background, taking no press.
 ///
 /// The Readouts, Energy and Stability cards' lines and the panel's line of keys are all one.
-pub fn card_line(text: impl Into<String>, font: TextFont, shade: Color) -> impl Bundle {
+pub(crate) fn card_line(text: impl Into<String>, font: TextFont, shade: Color) -> impl Bundle {
     (
         Text::new(text),
         font,

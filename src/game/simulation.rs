@@ -163,7 +163,7 @@ pub struct EnergyBooks {
 /// Sums the kinetic and band energy of every body, with the bands as they are now.
 ///
 /// No other place in the game sums them (the step's books before and after, the HUD).
-pub fn mechanical_energies(
+pub(crate) fn mechanical_energies(
     params: &SceneParams,
     bodies: &Query<RigidBodyQueryReadOnly, With<RigidBox>>,
     bands: &Query<&Band>,
@@ -187,7 +187,7 @@ pub fn mechanical_energies(
 /// The scene has one band a body; the pointer never makes a second, and the step ignores one. The
 /// step's observers (`PhysicsSystems::Observe`: the recorder, the ghosts) read it as the step's
 /// input.
-pub fn acting_band(body: Entity, bands: &Query<&Band>) -> Option<BandEnds> {
+pub(crate) fn acting_band(body: Entity, bands: &Query<&Band>) -> Option<BandEnds> {
     bands
         .iter()
         .find(|band| band.body == body)
@@ -260,7 +260,7 @@ pub fn body_state(linear: &LinearState, angular: &AngularState) -> BodyState {
 /// Sets the fixed clock's step to `seconds` if the clock can keep it; tells whether it did.
 ///
 /// The clock counts whole nanoseconds and panics on a zero step.
-pub fn set_fixed_step(time: &mut Time<Fixed>, seconds: f64) -> bool {
+pub(crate) fn set_fixed_step(time: &mut Time<Fixed>, seconds: f64) -> bool {
     match Duration::try_from_secs_f64(seconds) {
         Ok(step) if !step.is_zero() => {
             time.set_timestep(step);
@@ -353,7 +353,7 @@ fn reset_bodies_and_books(
 
 /// Everything that says how to take a step (the step reads it, and so does the recorder).
 #[derive(SystemParam)]
-pub struct StepSettings<'w> {
+pub(crate) struct StepSettings<'w> {
     pub time: Res<'w, Time<Fixed>>,
     pub params: Res<'w, SceneParams>,
     pub integrator: Res<'w, Integrator>,

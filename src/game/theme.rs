@@ -27,7 +27,7 @@ const TEXT_FACE: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans-subset.tt
 const FIGURES_FACE: &[u8] = include_bytes!("../../assets/fonts/DejaVuSansMono-subset.ttf");
 
 /// The figures' face: a handle of its own, fixed so that a text can name it before it loads.
-pub const FIGURES_FONT: Handle<Font> =
+const FIGURES_FONT: Handle<Font> =
     bevy::asset::uuid_handle!("5b1c7e2a-9d04-4f6b-8a31-c2e971d03f55");
 
 /// Puts the two faces in place, the text face as the default font.
@@ -103,18 +103,18 @@ pub mod colour {
 /// Returns an integrator's colour, from the core's one table ([`Integrator::colour`]).
 ///
 /// It is the same in the game and the report's figures.
-pub fn method_colour(integrator: Integrator) -> Color {
+pub(crate) fn method_colour(integrator: Integrator) -> Color {
     let [r, g, b] = integrator.colour();
     Color::srgb_u8(r, g, b)
 }
 
 /// Returns the font of body text, in the text face.
-pub fn text_font(size: f32) -> TextFont {
+pub(crate) fn text_font(size: f32) -> TextFont {
     TextFont::from_font_size(size)
 }
 
 /// Returns the font of figures of one width, in the figures' face.
-pub fn figures_font(size: f32) -> TextFont {
+pub(crate) fn figures_font(size: f32) -> TextFont {
     TextFont {
         font: FontSource::Handle(FIGURES_FONT),
         ..TextFont::from_font_size(size)

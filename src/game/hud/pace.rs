@@ -30,7 +30,7 @@ pub fn behind(pace: f64, time_scale: f64, paused: bool) -> Option<String> {
 }
 
 /// Updates [`Pace`] from this frame's real and virtual time, with a memory of about a second.
-pub fn measure_pace(
+pub(super) fn measure_pace(
     real: Res<Time<Real>>,
     virtual_time: Res<Time<Virtual>>,
     mut pace: ResMut<Pace>,

@@ -13,7 +13,7 @@ use crate::physics::{Integrator, SceneParams};
 ///
 /// "Rubber Band Box: auto (2 substeps, 0 fall-backs), k 20, 100 Hz, time ×1, paused; keys";
 /// "behind: runs ×0.42" after the time scale while the clock falls behind ([`Pace`]).
-pub fn show_state_in_title(
+pub(super) fn show_state_in_title(
     integrator: Res<Integrator>,
     stats: Res<StepStats>,
     params: Res<SceneParams>,

@@ -408,7 +408,7 @@ fn equation_colour(equation: Equation) -> Color {
 ///
 /// There the equations' changing lengths never move them.
 #[derive(Component, Debug)]
-pub struct ChapterButtons;
+pub(crate) struct ChapterButtons;
 
 fn spawn_card(mut commands: Commands, slots: Slots) {
     let Some(card) = slots.card_body(Card::LEARN) else {

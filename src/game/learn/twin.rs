@@ -50,14 +50,14 @@ impl Twin {
     }
 }
 
-pub fn restart_on_reset(_reset: On<ResetScene>, mut twin: ResMut<CentreTwin>) {
+pub(super) fn restart_on_reset(_reset: On<ResetScene>, mut twin: ResMut<CentreTwin>) {
     twin.restart = true;
 }
 
 /// Sets the twin beside the box when its chapter is shown (`wanted`) or the scene starts over.
 ///
 /// Out of its chapter the twin is dropped.
-pub fn place_twin(twin: &mut CentreTwin, wanted: bool, boxes: &Bodies) {
+pub(super) fn place_twin(twin: &mut CentreTwin, wanted: bool, boxes: &Bodies) {
     if !wanted {
         if twin.body.is_some() {
             twin.body = None;

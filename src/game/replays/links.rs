@@ -34,7 +34,7 @@ impl Plugin for LinksPlugin {
 /// The link is `play --link`'s or the page's own address; what was wrong with it is said once
 /// the game runs.
 #[derive(Resource, Debug, Clone, Default)]
-pub struct PendingLink {
+pub(crate) struct PendingLink {
     pub link: Link,
     pub problems: Vec<String>,
 }

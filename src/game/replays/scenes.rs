@@ -27,7 +27,7 @@ fn load(load: On<LoadScene>, mut commands: Commands) {
 }
 
 /// Loads a scene: its parameters at the player's step rate, its start, and its script playing.
-pub fn load_scene(world: &mut World, name: &str) {
+pub(crate) fn load_scene(world: &mut World, name: &str) {
     let loaded = Scene::named(name)
         .map_err(|unknown| unknown.to_string())
         .and_then(|mut scene| {

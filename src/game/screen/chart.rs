@@ -67,7 +67,7 @@ impl Canvas {
 ///
 /// It is measured as the figures' face sets it (every glyph 0.602 of the font's size wide, a line
 /// 1.2 of it high).
-pub fn text_box(at: Vec2, text: &str, font_size: f32) -> Rect {
+pub(crate) fn text_box(at: Vec2, text: &str, font_size: f32) -> Rect {
     let size = Vec2::new(
         text.chars().count() as f32 * 0.602 * font_size,
         1.2 * font_size,

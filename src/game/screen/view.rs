@@ -81,7 +81,7 @@ fn publish_view(
 }
 
 /// The render layer of the dock's charts: only the chart camera draws it.
-pub const CHART_LAYER: usize = 1;
+pub(crate) const CHART_LAYER: usize = 1;
 
 /// The camera that draws the dock's charts and the UI, over the whole window.
 #[derive(Component, Debug)]
