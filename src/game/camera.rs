@@ -298,7 +298,11 @@ pub fn world_per_pixel(frame: &CameraFrame) -> f32 {
 }
 
 /// Returns the part of the world the scene's camera shows now, if it has shown any.
-pub(crate) fn shown_area(frame: &CameraFrame, viewport: &SceneViewport, window: &Window) -> Option<Rect> {
+pub(crate) fn shown_area(
+    frame: &CameraFrame,
+    viewport: &SceneViewport,
+    window: &Window,
+) -> Option<Rect> {
     let size = viewport_rect(viewport, window).size();
     frame.shown.map(|view| view.area(size))
 }
