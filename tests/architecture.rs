@@ -773,10 +773,28 @@ fn the_card_check_finds_a_card_named_in_another_room() {
 
 /// The most top-level items of `src/` that may be `pub` only for the tests: a ratchet, lowered
 /// as tests of private logic move beside the code (`#[cfg(test)]`); it may never rise.
-const PUB_FOR_TESTS_AT_MOST: usize = 60;
+const PUB_FOR_TESTS_AT_MOST: usize = 55;
+
+/// Returns a source without its `pub use` statements: a re-export names an item, but uses none.
+fn without_re_exports(source: &str) -> String {
+    let mut kept = String::new();
+    let mut in_re_export = false;
+    for line in source.lines() {
+        in_re_export |= line.trim_start().starts_with("pub use ");
+        if !in_re_export {
+            kept.push_str(line);
+            kept.push('\n');
+        }
+        in_re_export &= !line.contains(';');
+    }
+    kept
+}
 
 /// Returns the top-level `pub` items that no other file of `src/` names but `tests/` or
 /// `benches/` do, as "file: name".
+///
+/// A `pub use` elsewhere does not count: a folder's `mod.rs` re-exporting a child's item for
+/// the tests is not a use.
 fn pub_only_for_tests(src: &[(std::path::PathBuf, String)], tests: &str) -> Vec<String> {
     let kinds = [
         "const fn ",
@@ -793,6 +811,10 @@ fn pub_only_for_tests(src: &[(std::path::PathBuf, String)], tests: &str) -> Vec<
             .filter(|word| *word == wanted)
             .count()
     };
+    let used: Vec<String> = src
+        .iter()
+        .map(|(_, text)| without_re_exports(text))
+        .collect();
     let mut found = Vec::new();
     for (relative, source) in src {
         for line in source.lines() {
@@ -808,7 +830,8 @@ fn pub_only_for_tests(src: &[(std::path::PathBuf, String)], tests: &str) -> Vec<
                 .collect();
             let elsewhere: usize = src
                 .iter()
-                .filter(|(other, _)| other != relative)
+                .zip(&used)
+                .filter(|((other, _), _)| other != relative)
                 .map(|(_, text)| names(text, &name))
                 .sum();
             if elsewhere == 0 && names(tests, &name) > 0 {
@@ -855,6 +878,10 @@ fn the_visibility_check_finds_an_item_only_a_test_names() {
             "pub fn shown() {}\npub fn used() {}\nfn private() {}".to_owned(),
         ),
         ("game/hud/mod.rs".into(), "fn f() { used(); }".to_owned()),
+        (
+            "game/mod.rs".into(),
+            "pub use layout::{\n    shown,\n};\npub use layout::shown;".to_owned(),
+        ),
     ];
     let tests = "shown(); used(); private();";
     assert_eq!(

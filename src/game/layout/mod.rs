@@ -10,21 +10,36 @@
 //! into and the pointer to map through.
 //!
 //! The plugins that fill the regions find them by their `Slot`; this module spawns the
-//! frame in `PreStartup`, they spawn their content in `Startup`.
+//! frame in `PreStartup`, they spawn their content in `Startup`. The cards' registry and which
+//! are open are [`cards`], the window's shape [`shape`], the dock's scrolling [`scroll`], and
+//! what the window shows, for the checks and the page, [`visible`].
 
-use bevy::ecs::system::ScheduleSystem;
+pub mod cards;
+pub mod scroll;
+pub mod shape;
+pub mod visible;
+
 use bevy::ecs::system::SystemParam;
 use bevy::picking::Pickable;
 use bevy::prelude::*;
-use bevy::ui::{CalculatedClip, UiGlobalTransform};
+#[cfg(target_arch = "wasm32")]
+use bevy::ui::CalculatedClip;
+use bevy::ui::UiGlobalTransform;
 use bevy::ui_widgets::{
     ActivateOnPress, Button, ControlOrientation, Scrollbar, ScrollbarPlugin, ScrollbarThumb,
 };
 use bevy::window::PrimaryWindow;
 
 use crate::game::schedule::{AfterBevySystems, ScreenSystems};
-use crate::game::shared::{DockHidden, Mode, Overlays, window_rect};
+use crate::game::shared::{DockHidden, window_rect};
 use crate::game::theme::{self, colour, size, space};
+use cards::Offered;
+pub use cards::{Card, CardButton, CardRegistry, CardSpec, Cards, RegisterCard};
+pub use scroll::{DockCards, DockScrollbar};
+use scroll::{scroll_the_dock, show_the_dock_scrollbar};
+use shape::{SHEET_SHARE, dock_width};
+pub use shape::{Shape, WINDOW_SIZE, ui_scale_for};
+pub use visible::{shown_texts, visible_rect};
 
 pub struct LayoutPlugin;
 
@@ -61,337 +76,6 @@ impl Plugin for LayoutPlugin {
             publish_texts.in_set(AfterBevySystems::AfterLayout),
         );
     }
-}
-
-/// Returns the part of a node the window shows: its rectangle, in logical pixels, cut to its clip.
-///
-/// The clip is that of a node above, such as the scrolled dock. `None` when the node has no
-/// size (it, or a node above it, is not displayed) or is cut away.
-pub fn visible_rect(
-    node: &ComputedNode,
-    transform: &UiGlobalTransform,
-    clip: Option<&CalculatedClip>,
-    ui_scale: &UiScale,
-) -> Option<Rect> {
-    clipped(window_rect(node, transform, ui_scale), node, clip, ui_scale)
-}
-
-/// Cuts `rect`, in logical pixels, to the node's clip; `None` if nothing is left.
-fn clipped(
-    mut rect: Rect,
-    node: &ComputedNode,
-    clip: Option<&CalculatedClip>,
-    ui_scale: &UiScale,
-) -> Option<Rect> {
-    let scale = node.inverse_scale_factor() * ui_scale.0;
-    if let Some(clip) = clip {
-        let cut = Rect::from_corners(clip.clip.min * scale, clip.clip.max * scale);
-        rect = rect.intersect(cut);
-    }
-    (rect.width() > 0.0 && rect.height() > 0.0).then_some(rect)
-}
-
-/// Returns where a text's glyphs may lie, in logical pixels.
-///
-/// They lie in its node's content box (inside its padding), cut to its clip.
-fn visible_text_rect(
-    node: &ComputedNode,
-    transform: &UiGlobalTransform,
-    clip: Option<&CalculatedClip>,
-    ui_scale: &UiScale,
-) -> Option<Rect> {
-    let scale = node.inverse_scale_factor() * ui_scale.0;
-    let content = node.content_box();
-    let rect = Rect::from_corners(
-        (transform.translation + content.min) * scale,
-        (transform.translation + content.max) * scale,
-    );
-    clipped(rect, node, clip, ui_scale)
-}
-
-/// Lists every text the window shows and where, in logical pixels.
-///
-/// The layout's checks read it (no two meet, none on the scene, all in the window).
-pub fn shown_texts(
-    texts: &Query<(
-        &Text,
-        &ComputedNode,
-        &UiGlobalTransform,
-        Option<&CalculatedClip>,
-    )>,
-    ui_scale: &UiScale,
-) -> Vec<(String, Rect)> {
-    texts
-        .iter()
-        .filter(|(text, ..)| !text.0.trim().is_empty())
-        .filter_map(|(text, node, transform, clip)| {
-            visible_text_rect(node, transform, clip, ui_scale).map(|rect| (text.0.clone(), rect))
-        })
-        .collect()
-}
-
-/// Publishes the viewport and every text shown, for the page (and the browser test).
-///
-/// In the browser only.
-#[cfg(target_arch = "wasm32")]
-fn publish_texts(
-    texts: Query<(
-        &Text,
-        &ComputedNode,
-        &UiGlobalTransform,
-        Option<&CalculatedClip>,
-    )>,
-    ui_scale: Res<UiScale>,
-    viewport: Res<SceneViewport>,
-    mut published: Local<String>,
-) {
-    let shown: Vec<serde_json::Value> = shown_texts(&texts, &ui_scale)
-        .into_iter()
-        .map(|(text, rect)| {
-            serde_json::json!({
-                "text": text,
-                "rect": [rect.min.x, rect.min.y, rect.width(), rect.height()],
-            })
-        })
-        .collect();
-    let json = serde_json::to_string(&shown).unwrap_or_default();
-    if *published != json {
-        crate::game::web::publish_texts(&json);
-        *published = json;
-    }
-    if viewport.is_changed()
-        && let Some(rect) = viewport.0
-    {
-        crate::game::web::publish_viewport(rect.min.x, rect.min.y, rect.width(), rect.height());
-    }
-}
-
-/// The game's window when it opens, in logical pixels.
-pub const WINDOW_SIZE: UVec2 = UVec2::new(960, 720);
-
-/// An instrument card of the dock, named by the plugin that fills it.
-///
-/// Each card's own module names it (`Card::STABILITY` in `stability/`) and registers it with
-/// the dock ([`RegisterCard::register_card`]); the dock keeps no list of its own.
-#[derive(Component, Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Card(pub &'static str);
-
-/// A card as its plugin registers it: its name, its title, its place and when it is offered.
-#[derive(Debug, Clone, Copy)]
-pub struct CardSpec {
-    pub card: Card,
-    /// The title on its fold button and its tab.
-    pub title: &'static str,
-    /// Its place in the dock, top to bottom (a tall window's tabs, left to right).
-    pub place: u8,
-    /// Tells whether the card is in the dock now (the ghosts' table only with the ghosts on).
-    pub offered: fn(&Overlays, Mode) -> bool,
-}
-
-impl CardSpec {
-    /// Returns a card that is always in the dock.
-    pub const fn always(card: Card, title: &'static str, place: u8) -> Self {
-        Self {
-            card,
-            title,
-            place,
-            offered: |_, _| true,
-        }
-    }
-}
-
-/// Every card of the dock in its order: what the plugins registered.
-///
-/// The dock spawns a frame, a title and a body (`Slot::Card`) for each at start-up.
-#[derive(Resource, Debug, Default)]
-pub struct CardRegistry(Vec<CardSpec>);
-
-impl CardRegistry {
-    /// Returns the cards in the dock's order.
-    pub fn cards(&self) -> impl Iterator<Item = Card> + '_ {
-        self.0.iter().map(|spec| spec.card)
-    }
-
-    /// Tells whether `card` is in the dock now; an unregistered card never is.
-    pub fn offers(&self, card: Card, overlays: &Overlays, mode: Mode) -> bool {
-        self.0
-            .iter()
-            .any(|spec| spec.card == card && (spec.offered)(overlays, mode))
-    }
-}
-
-/// Registers cards with the dock.
-pub trait RegisterCard {
-    /// Registers a card, in the place it asks; a second registration of a name is ignored.
-    fn register_card(&mut self, spec: CardSpec) -> &mut Self;
-
-    /// Registers a card that writes its own text, and its two systems.
-    ///
-    /// `spawn` fills its body at start-up, `write` writes it every frame, in
-    /// `ScreenSystems::Cards`. The cards' writers run in any order among themselves: each writes only its own texts.
-    fn add_text_card<S, W>(
-        &mut self,
-        spec: CardSpec,
-        spawn: impl IntoScheduleConfigs<ScheduleSystem, S>,
-        write: impl IntoScheduleConfigs<ScheduleSystem, W>,
-    ) -> &mut Self;
-}
-
-impl RegisterCard for App {
-    fn register_card(&mut self, spec: CardSpec) -> &mut Self {
-        let mut registry = self.world_mut().get_resource_or_init::<CardRegistry>();
-        if registry.0.iter().any(|known| known.card == spec.card) {
-            warn!(
-                "the card {:?} is registered twice: the second ignored",
-                spec.card
-            );
-        } else {
-            registry.0.push(spec);
-            registry.0.sort_by_key(|known| known.place);
-        }
-        self
-    }
-
-    fn add_text_card<S, W>(
-        &mut self,
-        spec: CardSpec,
-        spawn: impl IntoScheduleConfigs<ScheduleSystem, S>,
-        write: impl IntoScheduleConfigs<ScheduleSystem, W>,
-    ) -> &mut Self {
-        self.register_card(spec)
-            .add_systems(Startup, spawn)
-            .add_systems(
-                Update,
-                write
-                    .in_set(ScreenSystems::Cards)
-                    .ambiguous_with(ScreenSystems::Cards),
-            )
-    }
-}
-
-/// What decides which cards the dock offers now, as a system reads it.
-#[derive(SystemParam)]
-struct Offered<'w> {
-    registry: Res<'w, CardRegistry>,
-    overlays: Res<'w, Overlays>,
-    mode: Res<'w, State<Mode>>,
-}
-
-impl Offered<'_> {
-    fn now(&self) -> Offers<'_> {
-        Offers {
-            registry: &self.registry,
-            overlays: &self.overlays,
-            mode: *self.mode.get(),
-        }
-    }
-}
-
-/// What decides which cards the dock offers now: the cards, the overlays and the mode.
-#[derive(Clone, Copy)]
-struct Offers<'a> {
-    registry: &'a CardRegistry,
-    overlays: &'a Overlays,
-    mode: Mode,
-}
-
-impl Offers<'_> {
-    fn offers(&self, card: Card) -> bool {
-        self.registry.offers(card, self.overlays, self.mode)
-    }
-
-    /// Returns every card offered, in the dock's order.
-    fn offered(&self) -> Vec<Card> {
-        self.registry
-            .cards()
-            .filter(|&card| self.offers(card))
-            .collect()
-    }
-}
-
-/// Which cards are open, kept as the player left them while the game runs.
-///
-/// A tall window shows one at a time (the first open one).
-#[derive(Resource, Debug, Clone, PartialEq, Eq, Default)]
-pub struct Cards {
-    open: std::collections::BTreeSet<Card>,
-}
-
-impl Cards {
-    pub fn is_open(&self, card: Card) -> bool {
-        self.open.contains(&card)
-    }
-
-    pub fn set(&mut self, card: Card, open: bool) {
-        if open {
-            self.open.insert(card);
-        } else {
-            self.open.remove(&card);
-        }
-    }
-
-    /// Folds or unfolds `card`, as a press on its title does.
-    ///
-    /// On the side it folds or unfolds; on a tall window, where one card shows at a time, an open
-    /// card folds and a folded one opens alone.
-    pub fn toggle(&mut self, card: Card, shape: Shape) {
-        let open = !self.is_open(card);
-        if shape == Shape::Tall && open {
-            self.open.clear();
-        }
-        self.set(card, open);
-    }
-
-    /// Returns the card a tall window shows: the first open one the dock offers.
-    fn shown_alone(&self, offers: &Offers) -> Option<Card> {
-        offers
-            .registry
-            .cards()
-            .find(|&card| self.is_open(card) && offers.offers(card))
-    }
-
-    /// Tells whether the card's body shows.
-    fn body_shows(&self, card: Card, shape: Shape, offers: &Offers) -> bool {
-        match shape {
-            Shape::Wide => self.is_open(card) && offers.offers(card),
-            Shape::Tall => self.shown_alone(offers) == Some(card),
-        }
-    }
-}
-
-/// The window's shape: the dock at the side of a wide window, below the scene on a tall one.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Shape {
-    Wide,
-    Tall,
-}
-
-impl Shape {
-    pub fn of(window: Vec2) -> Self {
-        if window.x >= window.y {
-            Shape::Wide
-        } else {
-            Shape::Tall
-        }
-    }
-}
-
-/// Returns the dock's width at the side of a wide window, in logical pixels before the UI scale.
-///
-/// It takes a share of the window, with a floor (the plot's 300 px and the ghosts' table) and a
-/// ceiling.
-fn dock_width(window_width: f32) -> f32 {
-    (window_width * 0.34).clamp(350.0, 460.0)
-}
-
-/// A tall window's sheet keeps the scene at least this share of the height.
-const SHEET_SHARE: f32 = 0.45;
-
-/// Returns the UI's scale for a window: 1 at the game's own size and above.
-///
-/// On a phone it is a little smaller, never so small that text cannot be read.
-pub fn ui_scale_for(size: Vec2) -> f32 {
-    (size.min_element() / WINDOW_SIZE.y as f32).clamp(0.85, 1.0)
 }
 
 /// Where the regions' content goes: the plugins that fill them find them by it.
@@ -445,10 +129,6 @@ pub(crate) fn card_line(text: impl Into<String>, font: TextFont, shade: Color) -
     )
 }
 
-/// A card's title: a button that folds it (the panel presses it, as its other buttons).
-#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
-pub struct CardButton(pub Card);
-
 /// The node the scene is rendered into.
 #[derive(Component, Debug)]
 struct ViewportNode;
@@ -456,14 +136,6 @@ struct ViewportNode;
 /// The dock (the side column or the bottom sheet): its cards and their scrollbar.
 #[derive(Component, Debug)]
 pub struct Dock;
-
-/// The dock's cards, in a column that scrolls when they are taller than the dock.
-#[derive(Component, Debug)]
-pub struct DockCards;
-
-/// The dock's scrollbar: seen only while the cards overflow, a sign that there is more.
-#[derive(Component, Debug)]
-pub struct DockScrollbar;
 
 /// The root of every region.
 #[derive(Component, Debug)]
@@ -823,14 +495,7 @@ fn open_cards_switched_on(
     mut before: Local<Option<Vec<Card>>>,
 ) {
     let now = offered.now().offered();
-    let before = before.get_or_insert_with(|| {
-        Offers {
-            registry: &offered.registry,
-            overlays: &Overlays::default(),
-            mode: Mode::Play,
-        }
-        .offered()
-    });
+    let before = before.get_or_insert_with(|| offered.at_start());
     if now == *before {
         return;
     }
@@ -844,74 +509,6 @@ fn open_cards_switched_on(
         }
     }
     *before = now;
-}
-
-/// Scrolls the dock with the wheel over it or a finger's drag that starts on it.
-///
-/// Over the scene the wheel zooms the view instead.
-fn scroll_the_dock(
-    mut wheel: MessageReader<bevy::input::mouse::MouseWheel>,
-    touches: Res<Touches>,
-    windows: Query<&Window, With<PrimaryWindow>>,
-    ui_scale: Res<UiScale>,
-    mut docks: Query<(&ComputedNode, &UiGlobalTransform, &mut ScrollPosition), With<DockCards>>,
-) {
-    let cursor = windows.iter().next().and_then(Window::cursor_position);
-    for event in wheel.read() {
-        let lines = match event.unit {
-            bevy::input::mouse::MouseScrollUnit::Line => event.y * 24.0,
-            bevy::input::mouse::MouseScrollUnit::Pixel => event.y,
-        };
-        for (node, transform, mut scroll) in &mut docks {
-            let rect = window_rect(node, transform, &ui_scale);
-            if cursor.is_some_and(|at| rect.contains(at)) {
-                scroll.0.y = (scroll.0.y - lines).max(0.0);
-            }
-        }
-    }
-    for touch in touches.iter() {
-        let moved = touch.delta().y;
-        for (node, transform, mut scroll) in &mut docks {
-            let rect = window_rect(node, transform, &ui_scale);
-            if moved != 0.0 && rect.contains(touch.start_position()) {
-                scroll.0.y = (scroll.0.y - moved / ui_scale.0).max(0.0);
-            }
-        }
-    }
-}
-
-/// Shows the dock's scrollbar while its cards are taller than the dock, and hides it when not.
-///
-/// Only colours change: the bar keeps its width either way, so the layout never moves.
-fn show_the_dock_scrollbar(
-    cards: Query<&ComputedNode, With<DockCards>>,
-    bars: Query<(&Children, Entity), With<DockScrollbar>>,
-    mut colours: Query<&mut BackgroundColor>,
-) {
-    let Some(node) = cards.iter().next() else {
-        return;
-    };
-    let (track, thumb) = if tells_overflow(node) {
-        (colour::CARD, colour::DIM)
-    } else {
-        (Color::NONE, Color::NONE)
-    };
-    for (thumbs, bar) in &bars {
-        if let Ok(mut background) = colours.get_mut(bar) {
-            background.set_if_neq(BackgroundColor(track));
-        }
-        for thumb_entity in thumbs {
-            if let Ok(mut background) = colours.get_mut(*thumb_entity) {
-                background.set_if_neq(BackgroundColor(thumb));
-            }
-        }
-    }
-}
-
-/// Tells whether a scrolled node's content is taller than the node (by more than a pixel).
-fn tells_overflow(node: &ComputedNode) -> bool {
-    let scale = node.inverse_scale_factor();
-    (node.content_size().y - node.size().y) * scale > 1.0
 }
 
 /// Publishes where Bevy's layout put the viewport node.
@@ -931,5 +528,41 @@ fn publish_viewport(
     let placed = (!rect.is_empty()).then_some(rect);
     if placed.is_some() && viewport.0 != placed {
         viewport.0 = placed;
+    }
+}
+
+/// Publishes the viewport and every text shown, for the page (and the browser test).
+///
+/// In the browser only.
+#[cfg(target_arch = "wasm32")]
+fn publish_texts(
+    texts: Query<(
+        &Text,
+        &ComputedNode,
+        &UiGlobalTransform,
+        Option<&CalculatedClip>,
+    )>,
+    ui_scale: Res<UiScale>,
+    viewport: Res<SceneViewport>,
+    mut published: Local<String>,
+) {
+    let shown: Vec<serde_json::Value> = shown_texts(&texts, &ui_scale)
+        .into_iter()
+        .map(|(text, rect)| {
+            serde_json::json!({
+                "text": text,
+                "rect": [rect.min.x, rect.min.y, rect.width(), rect.height()],
+            })
+        })
+        .collect();
+    let json = serde_json::to_string(&shown).unwrap_or_default();
+    if *published != json {
+        crate::game::web::publish_texts(&json);
+        *published = json;
+    }
+    if viewport.is_changed()
+        && let Some(rect) = viewport.0
+    {
+        crate::game::web::publish_viewport(rect.min.x, rect.min.y, rect.width(), rect.height());
     }
 }
