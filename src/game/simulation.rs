@@ -63,10 +63,33 @@ pub struct ResetScene;
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
 pub struct ResetAt(pub f64);
 
-impl ResetAt {
+/// The game's clocks as its texts read them: the HUD, the Readouts card and the panel.
+#[derive(SystemParam)]
+pub(crate) struct Clocks<'w> {
+    virtual_time: Res<'w, Time<Virtual>>,
+    fixed_time: Res<'w, Time<Fixed>>,
+    reset_at: Res<'w, ResetAt>,
+}
+
+impl Clocks<'_> {
+    /// Returns the fixed clock's step rate in Hz: the step in force, which a refused rate leaves.
+    pub(crate) fn step_rate_hz(&self) -> f64 {
+        1.0 / self.fixed_time.timestep().as_secs_f64()
+    }
+
+    /// Returns the time scale: simulated seconds per second of the wall's clock.
+    pub(crate) fn time_scale(&self) -> f64 {
+        self.virtual_time.relative_speed_f64()
+    }
+
+    /// Tells whether the game is paused.
+    pub(crate) fn paused(&self) -> bool {
+        self.virtual_time.is_paused()
+    }
+
     /// Returns the simulated seconds since the latest reset.
-    pub fn elapsed(self, time: &Time<Fixed>) -> f64 {
-        time.elapsed_secs_f64() - self.0
+    pub(crate) fn since_reset(&self) -> f64 {
+        self.fixed_time.elapsed_secs_f64() - self.reset_at.0
     }
 }
 

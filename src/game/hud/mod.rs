@@ -17,7 +17,7 @@ use bevy::prelude::*;
 use crate::game::layout::{Slot, Slots};
 use crate::game::schedule::ScreenSystems;
 use crate::game::shared::{StatusMessage, hertz, readable, times};
-use crate::game::simulation::{ResetAt, StepStats};
+use crate::game::simulation::{Clocks, StepStats};
 use crate::game::theme::{self, colour, size};
 use crate::physics::{Integrator, SceneParams};
 use pace::{Pace, behind, measure_pace};
@@ -172,9 +172,7 @@ struct Sources<'w> {
     integrator: Res<'w, Integrator>,
     stats: Res<'w, StepStats>,
     params: Res<'w, SceneParams>,
-    virtual_time: Res<'w, Time<Virtual>>,
-    fixed_time: Res<'w, Time<Fixed>>,
-    reset_at: Res<'w, ResetAt>,
+    clocks: Clocks<'w>,
     pace: Res<'w, Pace>,
     status: Res<'w, StatusMessage>,
 }
@@ -186,11 +184,10 @@ impl Sources<'_> {
             integrator: *self.integrator,
             stiffness: self.params.stiffness,
             divergence: self.stats.divergence,
-            // The clock's step, which a refused rate leaves as it was.
-            step_rate_hz: 1.0 / self.fixed_time.timestep().as_secs_f64(),
-            time_scale: self.virtual_time.relative_speed_f64(),
-            paused: self.virtual_time.is_paused(),
-            simulated_seconds: self.reset_at.elapsed(&self.fixed_time),
+            step_rate_hz: self.clocks.step_rate_hz(),
+            time_scale: self.clocks.time_scale(),
+            paused: self.clocks.paused(),
+            simulated_seconds: self.clocks.since_reset(),
             pace: self.pace.0,
             news,
         }

@@ -12,7 +12,7 @@ use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, card_line};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::shared::{SceneName, StatusMessage, hertz, times};
-use crate::game::simulation::{Bodies, ResetAt, StepStats};
+use crate::game::simulation::{Bodies, Clocks, StepStats};
 use crate::game::theme::{self, colour, size};
 use crate::physics::{Integrator, Scene, SceneParams};
 
@@ -160,9 +160,7 @@ struct Sources<'w, 's> {
     integrator: Res<'w, Integrator>,
     stats: Res<'w, StepStats>,
     params: Res<'w, SceneParams>,
-    virtual_time: Res<'w, Time<Virtual>>,
-    fixed_time: Res<'w, Time<Fixed>>,
-    reset_at: Res<'w, ResetAt>,
+    clocks: Clocks<'w>,
     diagnostics: Res<'w, DiagnosticsStore>,
     recorder: Res<'w, Recorder>,
     status: Res<'w, StatusMessage>,
@@ -185,11 +183,10 @@ impl Sources<'_, '_> {
             fell_back: self.stats.fell_back,
             fallbacks: self.stats.fallbacks,
             divergence: self.stats.divergence,
-            // The clock's step, which a refused rate leaves as it was.
-            step_rate_hz: 1.0 / self.fixed_time.timestep().as_secs_f64(),
-            time_scale: self.virtual_time.relative_speed_f64(),
-            paused: self.virtual_time.is_paused(),
-            simulated_seconds: self.reset_at.elapsed(&self.fixed_time),
+            step_rate_hz: self.clocks.step_rate_hz(),
+            time_scale: self.clocks.time_scale(),
+            paused: self.clocks.paused(),
+            simulated_seconds: self.clocks.since_reset(),
             frames_per_second: self
                 .diagnostics
                 .get(&FrameTimeDiagnosticsPlugin::FPS)

@@ -23,6 +23,7 @@ use crate::game::learn::ChapterButtons;
 use crate::game::schedule::AfterBevySystems;
 use crate::game::schedule::{GameSystems, ScreenSystems};
 use crate::game::shared::{DockHidden, Mode, Overlays, SceneName, hertz, times};
+use crate::game::simulation::Clocks;
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{Integrator, Scene, SceneParams};
 pub use buttons::PanelButton;
@@ -246,8 +247,7 @@ struct Shown<'w> {
     overlays: Res<'w, Overlays>,
     dock_hidden: Res<'w, DockHidden>,
     mode: Res<'w, State<Mode>>,
-    virtual_time: Res<'w, Time<Virtual>>,
-    fixed_time: Res<'w, Time<Fixed>>,
+    clocks: Clocks<'w>,
 }
 
 /// Shows what the resources say: the panel open or folded, which buttons are lit, the values.
@@ -264,10 +264,9 @@ fn show_state(
         overlays,
         dock_hidden,
         mode,
-        virtual_time,
-        fixed_time,
+        clocks,
     } = shown;
-    let paused = virtual_time.is_paused();
+    let paused = clocks.paused();
     for (button, mut background, children) in &mut buttons {
         let (lit, label) = match *button {
             PanelButton::Fold(_) => (false, None),
@@ -300,8 +299,8 @@ fn show_state(
             ValueText::Parameter(parameter) => {
                 parameter.written(parameter.get(&params), Some(params.mass))
             }
-            ValueText::StepRate => hertz(1.0 / fixed_time.timestep().as_secs_f64()),
-            ValueText::TimeScale => times(virtual_time.relative_speed_f64()),
+            ValueText::StepRate => hertz(clocks.step_rate_hz()),
+            ValueText::TimeScale => times(clocks.time_scale()),
         };
         if let Ok(mut text) = texts.get_mut(entity)
             && text.0 != shown
