@@ -138,8 +138,6 @@ pub const CHAPTERS: [Chapter; 7] = [
         equations: &[
             Equation::Arm,
             Equation::Torque,
-            // The sum's parts, as Στ's line gives the torque's: with no band a is damping's.
-            Equation::ForceSum,
             Equation::Acceleration,
             Equation::AngularAcceleration,
             Equation::CentrePull,

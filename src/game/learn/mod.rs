@@ -382,8 +382,8 @@ pub enum LearnText {
     Task,
 }
 
-/// The most equation lines a chapter writes (a force at a point's eight).
-pub const LINES: usize = 8;
+/// The most equation lines a chapter writes (a force at a point's seven).
+pub const LINES: usize = 7;
 
 /// Returns an equation's colour: that of its arrow on the box, else the text's.
 fn equation_colour(equation: Equation) -> Color {
