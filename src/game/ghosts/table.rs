@@ -26,7 +26,10 @@ pub(super) fn plugin(app: &mut App) {
         place: 50,
         offered: |overlays, _| overlays.ghosts,
     };
-    app.add_text_card(spec, spawn_table, show_table);
+    // The stability card finds the margins; without it (the plugin alone, as the benchmarks
+    // run it) the table shows none.
+    app.init_resource::<StabilityMargins>()
+        .add_text_card(spec, spawn_table, show_table);
 }
 
 /// The table's columns.
