@@ -16,7 +16,7 @@ use crate::measure::simulate::{ReplayJob, SimulateError, write_replay, write_run
 use crate::physics::{
     AutoSettings, BodyState, Integrator, MIN_STEP, Pull, Run, STEP_RATE_RANGE, Scene, SceneParams,
 };
-use crate::replay::Replay;
+use crate::replay::{AUTO_ORDERS, Replay};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -102,14 +102,14 @@ pub struct SimulateArgs {
     /// Angular damping rate c per second.
     #[arg(long, value_parser = non_negative, allow_hyphen_values = true)]
     pub angular_damping: Option<f64>,
-    /// `auto`: target error per Taylor step (px) [default: 1e-10].
-    #[arg(long, value_parser = positive, allow_hyphen_values = true)]
+    #[arg(long, value_parser = positive, allow_hyphen_values = true,
+          help = auto_help(AutoHelp::Tolerance))]
     pub auto_tolerance: Option<f64>,
-    /// `auto`: the order of its Taylor series, 2 to 24 [default: 20].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(2..=24))]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(AUTO_ORDER_RANGE),
+          help = auto_help(AutoHelp::Order))]
     pub auto_order: Option<u32>,
-    /// `auto`: most Taylor steps per fixed step before falling back to `implicit` [default: 200].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..),
+          help = auto_help(AutoHelp::MaxSubsteps))]
     pub auto_max_substeps: Option<u32>,
     /// X,Y,THETA,VX,VY,OMEGA: the initial state.
     #[arg(long, value_parser = parse_init, allow_hyphen_values = true)]
@@ -264,6 +264,37 @@ fn non_negative(text: &str) -> Result<f64, String> {
         Ok(value)
     } else {
         Err(format!("must be zero or more, got {value}"))
+    }
+}
+
+/// The orders `--auto-order` takes: the replay format's, the engine's.
+const AUTO_ORDER_RANGE: std::ops::RangeInclusive<i64> =
+    (AUTO_ORDERS.0 as i64)..=(AUTO_ORDERS.1 as i64);
+
+/// One of `auto`'s settings, for its help line.
+enum AutoHelp {
+    Tolerance,
+    Order,
+    MaxSubsteps,
+}
+
+/// Returns the help line of one of `auto`'s settings, its default read from the core.
+fn auto_help(setting: AutoHelp) -> String {
+    let defaults = AutoSettings::default();
+    match setting {
+        AutoHelp::Tolerance => format!(
+            "`auto`: target error per Taylor step (px) [default: {:e}]",
+            defaults.tolerance
+        ),
+        AutoHelp::Order => format!(
+            "`auto`: the order of its Taylor series, {} to {} [default: {}]",
+            AUTO_ORDERS.0, AUTO_ORDERS.1, defaults.order
+        ),
+        AutoHelp::MaxSubsteps => format!(
+            "`auto`: most Taylor steps per fixed step before falling back to `implicit` \
+             [default: {}]",
+            defaults.max_substeps
+        ),
     }
 }
 

@@ -232,7 +232,7 @@ proptest! {
         params in scene(),
         initial in state(),
         anchor in point(1e3),
-        order in 2usize..=24,
+        order in 2usize..=rubber_band_box::physics::integrators::taylor::MAX_ORDER,
         tolerance in log_uniform(1e-15, 1e-6),
     ) {
         use rubber_band_box::physics::integrators::taylor::{self, TaylorSettings};

@@ -125,7 +125,7 @@ pub const UNRESOLVABLE_SECONDS: f64 = 10.0;
 /// Where both agree, the report can judge errors down to their agreement.
 #[derive(Clone, Copy, Debug)]
 pub struct StiffReference {
-    /// The tightest the core has: Taylor series of order 24 at a tolerance of 1e-15 px.
+    /// The tightest the core has: Taylor series of order 32 at a tolerance of 1e-15 px.
     pub state: BodyState,
     /// How far a second, independent method (DOP853 at 1e-13 px) ends from it.
     pub agreement: f64,
@@ -145,7 +145,7 @@ pub enum Engine {
 }
 
 impl Engine {
-    pub const TIGHTEST_TAYLOR: Self = Self::Taylor(24, 1e-15);
+    pub const TIGHTEST_TAYLOR: Self = Self::Taylor(taylor::MAX_ORDER, 1e-15);
     pub const TIGHTEST_DOP853: Self = Self::Dop853(1e-13);
 
     pub fn name(&self) -> String {
@@ -292,7 +292,7 @@ pub fn replay_trajectory(
 
 /// A recorded game's converged answer.
 ///
-/// It holds the state after each recorded step of the tightest Taylor series (order 24 at
+/// It holds the state after each recorded step of the tightest Taylor series (order 32 at
 /// 1e-15 px, no budget, so it never falls back) at the recorded rate, the seconds simulated,
 /// and the box the corner distance is measured on.
 pub struct ReplayReference {

@@ -23,8 +23,8 @@ pub const VERSION: u32 = 1;
 pub const MAX_STEPS: u64 = 3_000_000;
 /// The longest line a reader accepts (a header is about 400 bytes, a step at most about 120).
 pub const MAX_LINE_BYTES: usize = 4096;
-/// The range of `auto`'s series order a replay may ask for (as `simulate --auto-order`).
-pub const AUTO_ORDERS: (usize, usize) = (2, 24);
+/// The range of `auto`'s series order a replay may ask for (as `simulate --auto-order`): the engine's.
+pub const AUTO_ORDERS: (usize, usize) = (2, crate::physics::integrators::taylor::MAX_ORDER);
 
 /// The first line: what the recording started with.
 #[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]

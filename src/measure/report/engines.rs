@@ -27,8 +27,8 @@ fn engines_compared(cases: &[StiffCase], quick: bool) -> Vec<EnginePoint> {
     } else {
         let mut all: Vec<Engine> = [25, 100, 400, 1600].map(Engine::Rk4).to_vec();
         all.extend([1e-8, 1e-9, 1e-10, 1e-11].map(Engine::Dop853));
-        for order in [12, 16, 20, 24] {
-            all.extend([1e-8, 1e-9, 3e-10, 1e-10].map(|t| Engine::Taylor(order, t)));
+        for order in [16, 20, 24, 28, 32] {
+            all.extend([1e-9, 1e-10, 3e-11, 1e-11].map(|t| Engine::Taylor(order, t)));
         }
         all
     };

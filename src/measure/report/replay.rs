@@ -2,7 +2,7 @@
 //! integrator over the player's own hand, at the recorded step rate and at 2, 4, 8 and 16
 //! times it. Finer rates split each recorded step into equal steps with the same band, so
 //! every run feels exactly the same hand (a rate that is not a multiple would move the grabs
-//! and releases). The reference is the tightest Taylor series (order 24 at 1e-15 px) at the
+//! and releases). The reference is the tightest Taylor series (order 32 at 1e-15 px) at the
 //! recorded rate; the error is the largest corner distance from it over the whole game.
 
 use crate::measure::references::{ReplayReference, replay_trajectory};

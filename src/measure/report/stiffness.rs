@@ -18,7 +18,7 @@ pub struct StiffPoint {
     pub ns_per_tick: f64,
     /// Pose error at the horizon against the case's reference.
     ///
-    /// The reference is the Taylor series of order 24 at 1e-15 px. None if diverged or beyond
+    /// The reference is the Taylor series of order 32 at 1e-15 px. None if diverged or beyond
     /// any horizon.
     pub error: Option<f64>,
     /// Beyond any horizon: the largest (E − E0) / E0 of the undamped run (positive: it grew).

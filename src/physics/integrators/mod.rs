@@ -101,7 +101,7 @@ impl Integrator {
         match self {
             Self::Verlet => 2,
             Self::Rk4 => 4,
-            Self::Auto => 20,
+            Self::Auto => auto::DEFAULT_ORDER as u32,
             _ => 1,
         }
     }

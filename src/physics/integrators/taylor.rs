@@ -15,17 +15,13 @@
 
 use bevy::math::DVec2;
 
-use super::engine_state::{
-    COMPONENTS, Components, DISSIPATED, RELATIVE_TOLERANCE, error_weights, pack, unpack,
-};
-use crate::physics::body::BodyState;
+use super::engine_state::RELATIVE_TOLERANCE;
+use crate::physics::body::{AngularState, BodyState, LinearState};
 use crate::physics::forces::ForceModel;
 use crate::physics::maths;
 
 /// The highest order the engine can be asked for.
-pub const MAX_ORDER: usize = 24;
-
-const N: usize = COMPONENTS;
+pub const MAX_ORDER: usize = 32;
 
 /// The longest step, as rate times step, at which the fastest decay's truncations still shrink.
 ///
@@ -35,6 +31,12 @@ const STABLE_RATE_TIMES_STEP: f64 = 1.5;
 
 /// The lowest order at which a step may stop early.
 const MIN_ORDER: usize = 4;
+
+/// How far under the tolerance a series that ends the fixed step early must be.
+///
+/// Only a soft band's fixed step ends early, in a few orders: one order more costs little
+/// there and keeps its error as low as the world frame's series had it.
+const EARLY_MARGIN: f64 = 1e-2;
 
 /// Slightly under the step the last two coefficients allow.
 ///
@@ -88,7 +90,8 @@ pub struct TaylorSettings {
 ///
 /// On an x86-64 with AVX the same code runs compiled for its four-lane registers: one vector
 /// multiply or add where SSE2 takes two. Each lane rounds each operation as before (no fused
-/// multiply-add), so the bits are the same on every machine and in the browser.
+/// multiply-add), so the bits are the same on every machine and in the browser. (Compiled for
+/// AVX-512's eight lanes it ran slower on a machine that has them: docs/benchmarks.md.)
 pub fn integrate(
     state: &BodyState,
     model: &ForceModel,
@@ -127,7 +130,62 @@ fn integrate_on_avx(
     integrate_here(state, model, dt, settings)
 }
 
+/// The motion in the frame that turns with the box, as the engine's series carry it.
+///
+/// D = Rᵀ(x − a) the centre seen from the anchor and V = Rᵀv the velocity, both in the box's
+/// axes, then θ, ω, the energy damping took out, and a lane of padding: two four-lane rows.
+type Row = [f64; LANES];
+const LANES: usize = 8;
+const THETA: usize = 4;
+const OMEGA: usize = 5;
+const HEAT: usize = 6;
+
+/// Returns the state seen from the turning frame, from the state, the anchor and (sin θ, cos θ).
+#[inline(always)]
+fn turned(state: &BodyState, anchor: DVec2, (sin, cos): (f64, f64)) -> Row {
+    let to_box = |v: DVec2| [cos * v.x + sin * v.y, cos * v.y - sin * v.x];
+    let [dx, dy] = to_box(state.linear.position - anchor);
+    let [vx, vy] = to_box(state.linear.velocity);
+    let (theta, omega) = (state.angular.orientation, state.angular.angular_velocity);
+    [dx, dy, vx, vy, theta, omega, 0.0, 0.0]
+}
+
+/// Returns the state after `moved` (every component's change since `start`), in the world's axes.
+///
+/// (sin θ, cos θ) are the start's.
+///
+/// The change is turned back by the start's rotation and the turn since, and added to the
+/// state it started from: turning the whole of D and V back would round each in proportion to
+/// its size, the anchor's distance, where this rounds the change (in D and V, and in the turn
+/// times the start's D and V) and the start's position and velocity once each.
+#[inline(always)]
+fn moved_from(state: &BodyState, (sin, cos): (f64, f64), start: &Row, moved: &Row) -> BodyState {
+    let (turn_sin, turn_cos) = maths::sin_cos(moved[THETA]);
+    // R(θ₀)·((R(Δθ) − 1)·p + R(Δθ)·Δp): the change of the world's R(θ)·p.
+    let change = |p: [f64; 2], change: [f64; 2]| {
+        let [px, py] = p;
+        let [cx, cy] = change;
+        let x = (turn_cos - 1.0) * px - turn_sin * py + (turn_cos * cx - turn_sin * cy);
+        let y = turn_sin * px + (turn_cos - 1.0) * py + (turn_sin * cx + turn_cos * cy);
+        DVec2::new(cos * x - sin * y, sin * x + cos * y)
+    };
+    BodyState {
+        linear: LinearState {
+            position: state.linear.position + change([start[0], start[1]], [moved[0], moved[1]]),
+            velocity: state.linear.velocity + change([start[2], start[3]], [moved[2], moved[3]]),
+        },
+        angular: AngularState {
+            orientation: state.angular.orientation + moved[THETA],
+            angular_velocity: state.angular.angular_velocity + moved[OMEGA],
+        },
+    }
+}
+
 /// Holds [`integrate`]'s body, inlined into each of its compilations.
+///
+/// In the frame that turns with the box the band's force −k R(D + r) and its torque −k r × D
+/// are linear in D, and what the turning adds, −ω J D and −ω J V (J a quarter turn), is the
+/// only product: four of them an order, besides the damping power's three squares.
 #[inline(always)]
 fn integrate_here(
     state: &BodyState,
@@ -145,29 +203,43 @@ fn integrate_here(
         Some(band) => (band.local_point, band.anchor, model.stiffness),
         None => (DVec2::ZERO, DVec2::ZERO, 0.0),
     };
-    let inverse_mass = model.mass.inverse_mass();
-    let inverse_inertia = model.mass.inverse_inertia();
+    let stiffness_per_mass = k * model.mass.inverse_mass();
+    let damping_per_mass = model.linear_damping * model.mass.inverse_mass();
+    let stiffness_per_inertia = k * model.mass.inverse_inertia();
+    let spin_damping = model.angular_damping;
     let linear_damping = model.linear_damping;
-    // c·I: the angular damping torque per unit ω.
-    let angular_damping = model.angular_damping * model.mass.inertia();
+    // c·I: the damping power per unit ω².
+    let spin_power = model.angular_damping * model.mass.inertia();
 
-    let weights = error_weights(state, model, dt);
+    let facing = maths::sin_cos(state.angular.orientation);
+    let start = turned(state, anchor, facing);
+    let weights = error_weights(state, model, dt, &start);
+    // The sizes the round-off is relative to: θ's own, as the corner's displacement (the turn
+    // of D weighs in the tolerance, not in how much round-off the series allow).
+    let sizes = {
+        let mut sizes = weights;
+        sizes[THETA] = 0.5 * model.mass.size().length();
+        sizes
+    };
+    // Every component's change since the start, summed step by step: the world's state is
+    // found from it at the end (see [`moved_from`]).
+    let mut moved: Row = [0.0; LANES];
+    let mut y = start;
 
     // Never a step past where a truncated series of the fastest decay or oscillation could
     // grow: tiny states pass any absolute tolerance, and must still decay.
     let longest = STABLE_RATE_TIMES_STEP / model.fastest_rate(state).max(f64::MIN_POSITIVE);
 
-    let mut y = pack(state);
     // The series, an order a row: row n holds every component's n-th coefficient, so that
     // a row is written at once and the sums at the end run over all components together.
-    let mut series: [Components; MAX_ORDER + 1] = [[0.0; N]; MAX_ORDER + 1];
+    let mut series: [Row; MAX_ORDER + 1] = [[0.0; LANES]; MAX_ORDER + 1];
     // Each order's operands of the products, in pairs so that one multiply-add serves two
     // sums (see [`Operands`]).
     let mut operands = [Operands::default(); MAX_ORDER + 1];
-    // The anchor's share of the offset's series past order 0 (zero, of the anchor's sign).
-    let anchor_past_start = [0.0 * anchor.y, 0.0 * anchor.x];
-    let arm_of =
-        |cos: f64, sin: f64| [cos * local.x - sin * local.y, sin * local.x + cos * local.y];
+    let operands_of = |row: &Row| {
+        let [dx, dy, vx, vy, _, omega, ..] = *row;
+        Operands::new([omega; 4], [dy, dx, vy, vx], [vx, vy, omega, 0.0])
+    };
     let mut remaining = dt;
     let mut steps = 0u32;
     let mut orders = 0u32;
@@ -177,27 +249,16 @@ fn integrate_here(
         }
         steps += 1;
         series[0] = y;
-        // Order 0: the step's start. `newest` is the latest order's operands, carried in
-        // registers from one order to the next rather than read back from memory.
-        let first = {
-            let [arm_x, arm_y] = arm_of(y[2], y[3]);
-            Operands {
-                left: [y[7], y[7], arm_x, arm_y],
-                right: [y[3], y[2], anchor.y - y[1], anchor.x - y[0]],
-                square: [y[5], y[6], y[7], 0.0],
-            }
-        };
+        // Order 0: the step's start. `newest` is the latest order's row and operands, carried
+        // in registers from one order to the next rather than read back from memory.
+        let first = operands_of(&y);
         operands[0] = first;
-        let mut newest = first;
-        let size = weighted_max(&weights, &y);
+        let mut newest = (y, first);
+        let size = weighted_max(&sizes, &y);
         let tolerance = settings.tolerance + RELATIVE_TOLERANCE * size;
-        // Jorba and Zou: the step at which each of the last two terms reaches the tolerance.
-        // The smaller of the two roots is taken as logarithms, then one exponential: an `ln`
-        // or two and an `exp` cost less than two `pow`.
-        let step_allowed = |series: &[Components; MAX_ORDER + 1], top: usize| {
-            let term = |n: usize| (weighted_max(&weights, &series[n]), n as f64);
-            maths::exp(least_log_root(tolerance, [term(top - 1), term(top)])) * SAFETY
-        };
+        // Jorba and Zou: the step at which each of the last two terms reaches the tolerance,
+        // the smaller of the two, in logarithms.
+        let log2_tolerance = rough_log2(tolerance);
         // (remaining / SAFETY)^top, the step that would end the fixed step, as a power.
         let reach_step = remaining / SAFETY;
         let mut reach_power = 1.0;
@@ -205,37 +266,31 @@ fn integrate_here(
         // step (a soft band: a few orders instead of all of them).
         let mut used = order;
         for n in 0..order {
-            let products = Products::at(n, &operands, &first, &newest);
-            let over = 1.0 / (n + 1) as f64;
-            let omega = newest.omega();
-            let [_, _, arm_x, arm_y] = newest.left;
-            let [_, _, to_anchor_y, to_anchor_x] = newest.right;
-            let [velocity_x, velocity_y, ..] = newest.square;
-            let position_x = velocity_x * over;
-            let position_y = velocity_y * over;
-            let cos = -products.omega_sin * over;
-            let sin = products.omega_cos * over;
-            let theta = omega * over;
-            let force_x = k * (to_anchor_x - arm_x) - linear_damping * velocity_x;
-            let force_y = k * (to_anchor_y - arm_y) - linear_damping * velocity_y;
-            let vx = force_x * inverse_mass * over;
-            let vy = force_y * inverse_mass * over;
-            let om = (k * products.lever - angular_damping * omega) * inverse_inertia * over;
-            let (speed_squared, spin_squared) = (products.speed_squared, products.spin_squared);
-            let e = (linear_damping * speed_squared + angular_damping * spin_squared) * over;
-            series[n + 1] = [position_x, position_y, cos, sin, theta, vx, vy, om, e];
-            let [arm_x, arm_y] = arm_of(cos, sin);
-            newest = Operands {
-                left: [om, om, arm_x, arm_y],
-                right: [
-                    sin,
-                    cos,
-                    anchor_past_start[0] - position_y,
-                    anchor_past_start[1] - position_x,
-                ],
-                square: [vx, vy, om, 0.0],
+            let (row, row_operands) = newest;
+            let turning = Products::at(n, &operands, &first, &row_operands);
+            let over = RECIPROCALS[n + 1];
+            let [dx, dy, vx, vy, _, omega, ..] = row;
+            // The band pulls the corner, D + r: r only in the order-0 term.
+            let (corner_x, corner_y) = if n == 0 {
+                (dx + local.x, dy + local.y)
+            } else {
+                (dx, dy)
             };
-            operands[n + 1] = newest;
+            let next = [
+                (vx + turning.omega_dy) * over,
+                (vy - turning.omega_dx) * over,
+                (turning.omega_vy - (stiffness_per_mass * corner_x + damping_per_mass * vx)) * over,
+                (-turning.omega_vx - (stiffness_per_mass * corner_y + damping_per_mass * vy))
+                    * over,
+                omega * over,
+                (-stiffness_per_inertia * (local.x * dy - local.y * dx) - spin_damping * omega)
+                    * over,
+                (linear_damping * turning.speed_squared + spin_power * turning.spin_squared) * over,
+                0.0,
+            ];
+            series[n + 1] = next;
+            newest = (next, operands_of(&next));
+            operands[n + 1] = newest.1;
             let top = n + 1;
             // Whether the last two terms are within the tolerance at the end of the fixed
             // step: Jorba and Zou's step reaches it (compared without roots). The terms are
@@ -243,6 +298,7 @@ fn integrate_here(
             reach_power *= reach_step;
             if (MIN_ORDER..order).contains(&top) && longest >= remaining {
                 let term = |n: usize| weighted_max(&weights, &series[n]);
+                let tolerance = tolerance * EARLY_MARGIN;
                 if term(top) * reach_power <= tolerance
                     && term(top - 1) * reach_power <= tolerance * reach_step
                 {
@@ -256,13 +312,17 @@ fn integrate_here(
         let mut h = if early {
             remaining
         } else {
-            step_allowed(&series, used).min(longest)
+            let term = |n: usize| (weighted_max(&weights, &series[n]), RECIPROCALS[n]);
+            let log2_step = least_root(log2_tolerance, [term(used - 1), term(used)]);
+            (rough_exp2(log2_step) * SAFETY).min(longest)
         };
         let last = early || h >= remaining;
         if last {
             h = remaining;
         }
-        y = horner(&series[..=used], h);
+        let change = polynomial(&series[1..=used], h).map(|sum| sum * h);
+        moved = std::array::from_fn(|i| moved[i] + change[i]);
+        y = std::array::from_fn(|i| start[i] + moved[i]);
         if !y.iter().all(|v| v.is_finite()) {
             return None;
         }
@@ -272,102 +332,173 @@ fn integrate_here(
         remaining -= h;
     }
     Some(Integrated {
-        state: unpack(&y),
+        state: moved_from(state, facing, &start, &moved),
         steps,
         orders,
-        dissipated: y[DISSIPATED],
+        dissipated: moved[HEAT],
     })
 }
 
-/// The most [`rough_ln`] is off from the natural logarithm, with a margin for its rounding.
+/// Returns the error weights for a fixed step `dt` from `state`, turned as `start`.
 ///
-/// Its log2 of the mantissa m ∈ [1, 2) is m − 1 + 0.04305, and log2(m) − (m − 1) lies in
-/// [0, 0.0861]: at most 0.04305 off in log2, 0.02984 in ln.
-const ROUGH_LN_ERROR: f64 = 0.0305;
-
-/// Returns ln x within [`ROUGH_LN_ERROR`], from x's exponent and mantissa.
-///
-/// None unless x is a positive normal number.
-#[inline(always)]
-fn rough_ln(x: f64) -> Option<f64> {
-    if !(x.is_normal() && x > 0.0) {
-        return None;
-    }
-    let bits = x.to_bits();
-    let exponent = ((bits >> 52) & 0x7ff) as f64 - 1023.0;
-    let mantissa = f64::from_bits((bits & 0x000f_ffff_ffff_ffff) | 0x3ff0_0000_0000_0000);
-    Some((exponent + (mantissa - 1.0) + 0.04305) * std::f64::consts::LN_2)
+/// Positions count in px; the orientation as the displacement it makes of the farthest corner
+/// and of the centre seen from the anchor, and of the velocity over the time the motion takes
+/// to move that far (the faster of the motion's rate and the fixed step); velocities over that
+/// time too; the energy has no weight.
+fn error_weights(state: &BodyState, model: &ForceModel, dt: f64, start: &Row) -> Row {
+    let reach = 0.5 * model.mass.size().length();
+    let [dx, dy, vx, vy, ..] = *start;
+    let rate = model.fastest_rate(state).max(1.0 / dt);
+    let turn = reach + dx.hypot(dy) + vx.hypot(vy) / rate;
+    [
+        1.0,
+        1.0,
+        1.0 / rate,
+        1.0 / rate,
+        turn,
+        reach / rate,
+        0.0,
+        0.0,
+    ]
 }
 
-/// Returns the least of ln(tolerance / term) / n over the (term, n) whose term is positive.
+/// 1/n for every n up to one past the highest order: no division in the loop.
+const RECIPROCALS: [f64; MAX_ORDER + 2] = {
+    let mut table = [0.0; MAX_ORDER + 2];
+    let mut n = 1;
+    while n < MAX_ORDER + 2 {
+        table[n] = 1.0 / n as f64;
+        n += 1;
+    }
+    table
+};
+
+/// Returns log2 x within 0.0077, from x's exponent and a quadratic of its mantissa.
 ///
-/// Infinity if neither is; bit for bit the two logarithms' minimum. Where the two roots' rough logarithms ([`rough_ln`]) lie further apart than their error,
-/// only the smaller root's exact logarithm is taken: one `ln` instead of two, the same bits.
+/// A step size needs its logarithm to a few parts in a thousand, not to the last bit: this
+/// costs a few operations that round alike everywhere, where `ln` costs a library call.
+/// Infinite or NaN where `log2` is (−∞ at zero, NaN below).
 #[inline(always)]
-fn least_log_root(tolerance: f64, terms: [(f64, f64); 2]) -> f64 {
-    let exact = |(term, n): (f64, f64)| {
+fn rough_log2(x: f64) -> f64 {
+    if x == 0.0 {
+        return f64::NEG_INFINITY;
+    }
+    if !(x > 0.0 && x < f64::INFINITY) {
+        // Infinity stays; below zero and NaN are NaN.
+        return if x > 0.0 { x } else { f64::NAN };
+    }
+    // A subnormal is scaled into the normal range first, by 2^64.
+    let (x, shift) = if x.is_normal() {
+        (x, 0.0)
+    } else {
+        (x * 18_446_744_073_709_551_616.0, 64.0)
+    };
+    let bits = x.to_bits();
+    let exponent = ((bits >> 52) & 0x7ff) as f64 - 1023.0;
+    let t = f64::from_bits((bits & 0x000f_ffff_ffff_ffff) | 0x3ff0_0000_0000_0000) - 1.0;
+    // log2(1 + t) for t in [0, 1), exact at both ends.
+    exponent - shift + t * (1.34655 - 0.34655 * t)
+}
+
+/// Returns 2^x within 0.27%, from x's whole part as the exponent and a quadratic of its fraction.
+///
+/// 0 below 2^−1022, infinite from 2^1024, NaN at NaN.
+#[inline(always)]
+fn rough_exp2(x: f64) -> f64 {
+    if x.is_nan() {
+        return x;
+    }
+    if x < -1022.0 {
+        return 0.0;
+    }
+    if x >= 1024.0 {
+        return f64::INFINITY;
+    }
+    let truncated = x as i64;
+    let whole = if truncated as f64 > x {
+        truncated - 1
+    } else {
+        truncated
+    };
+    let fraction = x - whole as f64;
+    let scale = f64::from_bits(((whole + 1023) as u64) << 52);
+    // 2^f for f in [0, 1), exact at both ends.
+    scale * (1.0 + fraction * (0.6602 + 0.3398 * fraction))
+}
+
+/// Returns log2 of the step at which the first of the positive terms reaches the tolerance.
+///
+/// That is the least of (log2 tolerance − log2 term) / n over the (term, 1/n) whose term is
+/// positive; infinity if none is.
+#[inline(always)]
+fn least_root(log2_tolerance: f64, terms: [(f64, f64); 2]) -> f64 {
+    let root = |(term, reciprocal): (f64, f64)| {
         if term > 0.0 {
-            maths::ln(tolerance / term) / n
+            (log2_tolerance - rough_log2(term)) * reciprocal
         } else {
             f64::INFINITY
         }
     };
-    let [first, second] = terms;
-    let rough = |(term, n): (f64, f64)| {
-        let root = rough_ln(tolerance / term)?;
-        (term > 0.0).then_some((root / n, ROUGH_LN_ERROR / n))
-    };
-    if let (Some((a, error_a)), Some((b, error_b))) = (rough(first), rough(second)) {
-        if a + error_a < b - error_b {
-            return f64::INFINITY.min(exact(first));
-        }
-        if b + error_b < a - error_a {
-            return f64::INFINITY.min(exact(second));
-        }
-    }
-    f64::INFINITY.min(exact(first)).min(exact(second))
+    let [first, second] = terms.map(root);
+    if first < second { first } else { second }
 }
 
 type Quad = [f64; 4];
 
+/// Two quads side by side.
+type Octet = [f64; 8];
+
 /// Returns acc + a·b, lane by lane.
 ///
 /// It is written so that the compiler makes it vector multiplies and adds where the machine has
-/// them (two SSE2 instructions each on any x86-64); the same operations, so the same bits, one
+/// them (two SSE2 instructions a quad on any x86-64); the same operations, so the same bits, one
 /// lane at a time where it has none (wasm).
 #[inline(always)]
-fn mul_add(acc: Quad, a: Quad, b: Quad) -> Quad {
+fn mul_add<const LANES: usize>(
+    acc: [f64; LANES],
+    a: [f64; LANES],
+    b: [f64; LANES],
+) -> [f64; LANES] {
     std::array::from_fn(|i| acc[i] + a[i] * b[i])
 }
 
-/// One order's operands of the Cauchy products, in lanes: one multiply-add serves four sums.
+/// One order's operands of the Cauchy products, in lanes: one multiply-add serves eight sums.
 ///
-/// `left` × `right` is [ω·sin, ω·cos, arm x · (a − x) y, arm y · (a − x) x] (the torque's cross
-/// product arm × (a − x) is then the difference of the last two lanes), and `square` × `square`
-/// is [vx², vy², ω², 0], the damping power's.
+/// Left × right is [ω·D y, ω·D x, ω·V y, ω·V x], the turning's, and `square` × `square` is
+/// [Vx², Vy², ω², 0], the damping power's: left is ω in every lane, right [D y, D x, V y, V x].
+/// One order's `left_right` times another's with its halves swapped is the two ends of a
+/// Cauchy pair at once.
 #[derive(Clone, Copy, Default)]
 struct Operands {
-    /// [ω, ω, arm x, arm y], the corner's arm R(θ) r.
-    left: Quad,
-    /// [sin, cos, (a − x) y, (a − x) x], the offset to the anchor swapped.
-    right: Quad,
+    /// [left, right].
+    left_right: Octet,
     /// [vx, vy, ω, 0].
     square: Quad,
+    /// Twice `square` (exactly): a pair of the squares' sum counted once, for both its ends.
+    double_square: Quad,
 }
 
 impl Operands {
-    fn omega(&self) -> f64 {
-        self.left[0]
+    #[inline(always)]
+    fn new(left: Quad, right: Quad, square: Quad) -> Self {
+        let [l0, l1, l2, l3] = left;
+        let [r0, r1, r2, r3] = right;
+        Self {
+            left_right: [l0, l1, l2, l3, r0, r1, r2, r3],
+            square,
+            double_square: square.map(|factor| 2.0 * factor),
+        }
     }
 }
 
 /// The Cauchy products the n-th coefficients need.
 ///
-/// They are ω·sin, ω·cos, the torque's arm × (a − x), and the damping power's |v|² and ω².
+/// They are ω times each of D y, D x, V y and V x, and the damping power's |V|² and ω².
 struct Products {
-    omega_sin: f64,
-    omega_cos: f64,
-    lever: f64,
+    omega_dy: f64,
+    omega_dx: f64,
+    omega_vy: f64,
+    omega_vx: f64,
     speed_squared: f64,
     spin_squared: f64,
 }
@@ -379,7 +510,7 @@ impl Products {
     /// (j, n − j) and (n − j, j) together: the ends hold the newest order, found only by the
     /// previous one, so the middle's additions run while that order is still being computed,
     /// and what waits on it is two multiply-adds, on operands kept in registers. The two ends
-    /// of each pair go to separate sums, which halves the chain again.
+    /// of each pair go to separate sums (the two halves of `ends`), which halves the chain again.
     #[inline(always)]
     fn at(
         n: usize,
@@ -389,18 +520,18 @@ impl Products {
     ) -> Self {
         let n = n.min(MAX_ORDER);
         let zero = [0.0; 4];
-        let (mut low_ends, mut high_ends, mut squares) = (zero, zero, zero);
+        let (mut ends, mut squares) = ([0.0; 8], zero);
         if n.is_multiple_of(2) {
             let middle = if n == 0 { first } else { &operands[n / 2] };
-            low_ends = mul_add(zero, middle.left, middle.right);
+            let [l0, l1, l2, l3, r0, r1, r2, r3] = middle.left_right;
+            let [e0, e1, e2, e3] = mul_add(zero, [l0, l1, l2, l3], [r0, r1, r2, r3]);
+            ends = [e0, e1, e2, e3, 0.0, 0.0, 0.0, 0.0];
             squares = mul_add(zero, middle.square, middle.square);
         }
         let mut add_pair = |low: &Operands, high: &Operands| {
-            low_ends = mul_add(low_ends, low.left, high.right);
-            high_ends = mul_add(high_ends, high.left, low.right);
-            // The squares' pairs once, doubled (exactly).
-            let double = low.square.map(|factor| 2.0 * factor);
-            squares = mul_add(squares, double, high.square);
+            let [l0, l1, l2, l3, r0, r1, r2, r3] = high.left_right;
+            ends = mul_add(ends, low.left_right, [r0, r1, r2, r3, l0, l1, l2, l3]);
+            squares = mul_add(squares, low.double_square, high.square);
         };
         for low in (1..n.div_ceil(2)).rev() {
             add_pair(&operands[low], &operands[n - low]);
@@ -408,23 +539,37 @@ impl Products {
         if n >= 1 {
             add_pair(first, newest);
         }
-        let sums: Quad = std::array::from_fn(|i| low_ends[i] + high_ends[i]);
+        let sums: Quad = std::array::from_fn(|i| ends[i] + ends[i + 4]);
         Self {
-            omega_sin: sums[0],
-            omega_cos: sums[1],
-            lever: sums[2] - sums[3],
+            omega_dy: sums[0],
+            omega_dx: sums[1],
+            omega_vy: sums[2],
+            omega_vx: sums[3],
             speed_squared: squares[0] + squares[1],
             spin_squared: squares[2],
         }
     }
 }
 
-/// Sums every component's series at `h`, each by Horner's rule.
+/// Sums every component's series at `h`: Σ rows[n] hⁿ.
+///
+/// Two of Horner's chains in h², the even terms' and the odd terms', run side by side: each
+/// waits on a multiply and an add per two orders instead of per order.
 #[inline(always)]
-fn horner(rows: &[Components], h: f64) -> Components {
-    rows.iter().rev().fold([0.0; N], |sums, row| {
-        std::array::from_fn(|i| sums[i] * h + row[i])
-    })
+fn polynomial(rows: &[Row], h: f64) -> Row {
+    let h_squared = h * h;
+    let pairs = rows.chunks_exact(2);
+    // An odd count of rows leaves the highest, an even power: the even chain starts from it.
+    let mut even = match pairs.remainder() {
+        [highest] => *highest,
+        _ => [0.0; LANES],
+    };
+    let mut odd = [0.0; LANES];
+    for pair in pairs.rev() {
+        even = std::array::from_fn(|i| even[i] * h_squared + pair[0][i]);
+        odd = std::array::from_fn(|i| odd[i] * h_squared + pair[1][i]);
+    }
+    std::array::from_fn(|i| even[i] + h * odd[i])
 }
 
 /// Returns the largest of weights[i]·|values[i]| over the motion's components.
@@ -433,7 +578,7 @@ fn horner(rows: &[Components], h: f64) -> Components {
 /// series takes one, and the NaN-aware `f64::max` costs five instructions a comparison. A NaN
 /// here needs no care: it reaches the state, which the step then refuses.
 #[inline(always)]
-fn weighted_max(weights: &[f64; N], values: &[f64; N]) -> f64 {
+fn weighted_max(weights: &Row, values: &Row) -> f64 {
     let w = |i: usize| weights[i] * values[i].abs();
     let larger = |a: f64, b: f64| if a > b { a } else { b };
     let pairs = [
@@ -449,71 +594,193 @@ fn weighted_max(weights: &[f64; N], values: &[f64; N]) -> f64 {
 mod tests {
     use super::*;
 
-    // The two logarithms' minimum, as the step size was taken before the rough shortcut.
-    fn both_logarithms(tolerance: f64, terms: [(f64, f64); 2]) -> f64 {
-        let mut log_h = f64::INFINITY;
-        for (term, n) in terms {
-            if term > 0.0 {
-                log_h = log_h.min(maths::ln(tolerance / term) / n);
-            }
-        }
-        log_h
+    /// The most [`rough_log2`] is off from log2, over every positive number.
+    const ROUGH_LOG2_ERROR: f64 = 0.0077;
+
+    /// The most [`rough_exp2`] is off from 2^x, relatively.
+    const ROUGH_EXP2_ERROR: f64 = 0.0027;
+    use crate::physics::forces::BandEnds;
+    use crate::physics::integrators::dop853;
+    use crate::physics::scene::SceneParams;
+
+    // Every binade's mantissas, the subnormals' among them.
+    fn positives() -> impl Iterator<Item = f64> {
+        (-1074..=1023).flat_map(|exponent| {
+            (0..64).map(move |step| (1.0 + f64::from(step) / 64.0) * 2f64.powi(exponent))
+        })
     }
 
-    // The rough logarithm stays within its stated error over every binade and mantissa.
+    // The rough log2 stays within its stated error everywhere, and the bound is tight.
     #[test]
     fn the_rough_logarithm_is_within_its_error() {
-        let mut worst: f64 = 0.0;
-        for exponent in -1020..=1020 {
-            for step in 0..=64 {
-                let x = (1.0 + f64::from(step) / 64.0) * 2f64.powi(exponent);
-                let off = (rough_ln(x).unwrap() - x.ln()).abs();
-                worst = worst.max(off);
-            }
-        }
-        assert!(worst <= ROUGH_LN_ERROR, "{worst}");
-        assert!(worst > 0.029, "the bound is tight: {worst}");
-        for outside in [0.0, -1.0, f64::INFINITY, f64::NAN, f64::MIN_POSITIVE / 2.0] {
-            assert_eq!(rough_ln(outside), None, "{outside}");
-        }
+        let worst = positives()
+            .filter(|x| *x > 0.0 && x.is_finite())
+            .map(|x| (rough_log2(x) - x.log2()).abs())
+            .fold(0.0, f64::max);
+        assert!(worst <= ROUGH_LOG2_ERROR, "{worst}");
+        assert!(
+            worst > 0.9 * ROUGH_LOG2_ERROR,
+            "the bound is tight: {worst}"
+        );
+        assert_eq!(rough_log2(1.0), 0.0);
+        assert_eq!(rough_log2(0.0), f64::NEG_INFINITY);
+        assert_eq!(rough_log2(f64::INFINITY), f64::INFINITY);
+        assert!(rough_log2(-1.0).is_nan() && rough_log2(f64::NAN).is_nan());
     }
 
-    // The least root is the two logarithms' minimum to the bit: on terms far apart (one `ln`),
-    // on terms within the rough error of each other (both), on zero, tiny, huge and NaN terms.
+    // The rough 2^x stays within its stated relative error, exact at whole numbers.
     #[test]
-    fn the_least_root_is_the_two_logarithms_minimum_to_the_bit() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
-        let mut terms = vec![0.0, f64::NAN, 1e-320, 1e300, f64::INFINITY, 1e-13, 2e-13];
-        for _ in 0..20_000 {
-            let exponent = (next() % 60) as i32 - 40;
-            let mantissa = 1.0 + (next() % 1_000_000) as f64 / 1e6;
-            terms.push(mantissa * 10f64.powi(exponent));
+    fn the_rough_power_of_two_is_within_its_error() {
+        let mut worst: f64 = 0.0;
+        for step in -1022 * 64..1023 * 64 {
+            let x = f64::from(step) / 64.0 + 1.0 / 128.0;
+            worst = worst.max((rough_exp2(x) / x.exp2() - 1.0).abs());
         }
-        let mut shortcuts = 0;
-        for (i, &a) in terms.iter().enumerate() {
-            let b = terms[(i * 7 + 3) % terms.len()];
-            // Nearby pairs too: the second term a hair from the first.
-            for b in [b, a * (1.0 + 1e-3), a * (1.0 + 1e-9)] {
-                for (tolerance, n) in [(1e-13, 20.0), (3.7e-11, 8.0), (1e-15, 24.0)] {
-                    let pair = [(a, n - 1.0), (b, n)];
-                    let fast = least_log_root(tolerance, pair);
-                    let slow = both_logarithms(tolerance, pair);
-                    assert_eq!(fast.to_bits(), slow.to_bits(), "{pair:?} at {tolerance}");
-                    let (ra, rb) = (rough_ln(tolerance / a), rough_ln(tolerance / b));
-                    if let (Some(ra), Some(rb)) = (ra, rb)
-                        && ((ra / (n - 1.0)) - (rb / n)).abs() > ROUGH_LN_ERROR
-                    {
-                        shortcuts += 1;
-                    }
+        assert!(worst <= ROUGH_EXP2_ERROR, "{worst}");
+        assert!(
+            worst > 0.9 * ROUGH_EXP2_ERROR,
+            "the bound is tight: {worst}"
+        );
+        for whole in [-1022, -3, -1, 0, 1, 7, 1023] {
+            assert_eq!(rough_exp2(f64::from(whole)), f64::from(whole).exp2());
+        }
+        assert_eq!(rough_exp2(-0.3).to_bits(), rough_exp2(-0.3).to_bits());
+        assert_eq!(rough_exp2(-2000.0), 0.0);
+        assert_eq!(rough_exp2(f64::INFINITY), f64::INFINITY);
+        assert!(rough_exp2(f64::NAN).is_nan());
+    }
+
+    // The step's root is the least of the positive terms' and ignores the others.
+    #[test]
+    fn the_least_root_takes_the_smaller_step() {
+        let log2_tolerance = rough_log2(1e-10);
+        let step = |terms| rough_exp2(least_root(log2_tolerance, terms));
+        // 1e-10 / 1e10 over 20 orders: 10^(-1); 1e-10 / 1e-6 over 19: 10^(-4/19).
+        let h = step([(1e-6, RECIPROCALS[19]), (1e10, RECIPROCALS[20])]);
+        assert!((h / 0.1 - 1.0).abs() < 0.01, "{h}");
+        let h = step([(1e-6, RECIPROCALS[19]), (0.0, RECIPROCALS[20])]);
+        assert!((h / 10f64.powf(-4.0 / 19.0) - 1.0).abs() < 0.01, "{h}");
+        assert_eq!(step([(0.0, 1.0), (f64::NAN, 0.5)]), f64::INFINITY);
+    }
+
+    // The two chains sum the series as one Horner chain does, to rounding, at every length.
+    #[test]
+    fn the_polynomial_is_the_series_summed() {
+        let rows: Vec<Row> = (0..=MAX_ORDER)
+            .map(|n| std::array::from_fn(|i| ((n * 7 + i * 3) % 11) as f64 - 5.0 + 0.1 * n as f64))
+            .collect();
+        for h in [0.0, 0.3, -0.7, 1.3] {
+            for length in 1..=rows.len() {
+                let horner = rows[..length].iter().rev().fold([0.0; LANES], |sums, row| {
+                    std::array::from_fn(|i| sums[i] * h + row[i])
+                });
+                let two_chains = polynomial(&rows[..length], h);
+                for i in 0..LANES {
+                    let scale = rows[..length]
+                        .iter()
+                        .enumerate()
+                        .map(|(n, row)| (row[i] * h.powi(n as i32)).abs())
+                        .sum::<f64>();
+                    assert!(
+                        (two_chains[i] - horner[i]).abs() <= 1e-14 * scale.max(1.0),
+                        "length {length}, h {h}, lane {i}"
+                    );
                 }
             }
         }
-        assert!(shortcuts > 50_000, "the shortcut is taken: {shortcuts}");
+    }
+
+    fn pulled(state: BodyState, anchor: DVec2, stiffness: f64) -> ForceModel {
+        let params = SceneParams {
+            stiffness,
+            ..SceneParams::tutorial()
+        };
+        let mass = params.mass_properties().unwrap();
+        params.force_model(mass, Some(BandEnds::grabbing(&mass, &state, anchor)))
+    }
+
+    // One fixed step in the turning frame lands where DOP853, in the world's, does: spinning,
+    // moving, damped, on soft and stiff bands, near the anchor and a million px from it.
+    #[test]
+    fn a_fixed_step_agrees_with_an_independent_method() {
+        let settings = TaylorSettings {
+            order: 26,
+            tolerance: 1e-12,
+            max_steps: 10_000,
+        };
+        for (i, anchor) in [
+            DVec2::new(200.0, 120.0),
+            DVec2::new(-30.0, 80.0),
+            DVec2::new(1e6, -2e5),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            for stiffness in [20.0, 1e4, 1e6] {
+                let state = BodyState {
+                    linear: LinearState {
+                        position: DVec2::new(10.0 * i as f64, -20.0),
+                        velocity: DVec2::new(40.0, -15.0),
+                    },
+                    angular: AngularState {
+                        orientation: 0.4 + i as f64,
+                        angular_velocity: 3.0 - 2.0 * i as f64,
+                    },
+                };
+                let model = pulled(state, anchor, stiffness);
+                let dt = 0.01;
+                let ours = integrate(&state, &model, dt, &settings).expect("within budget");
+                let theirs =
+                    dop853::integrate(&state, &model, model.forces(&state), dt, 1e-13, 100_000)
+                        .expect("within budget");
+                let error = ours.state.pose_error(&theirs.state, &model.mass);
+                let size = state.linear.position.distance(anchor).max(1.0);
+                assert!(
+                    error < 1e-9 + RELATIVE_TOLERANCE * size,
+                    "anchor {anchor}, k {stiffness}: {error}"
+                );
+                let speed = (ours.state.linear.velocity - theirs.state.linear.velocity).length();
+                let fast = theirs.state.linear.velocity.length();
+                assert!(
+                    speed < 1e-7 + RELATIVE_TOLERANCE * fast,
+                    "anchor {anchor}, k {stiffness}: {speed}"
+                );
+                let heat = (ours.dissipated - theirs.dissipated).abs();
+                assert!(heat <= 1e-9 * theirs.dissipated.abs().max(1.0), "{heat}");
+            }
+        }
+    }
+
+    // With no band and no damping the box coasts: a far box moves by v·dt, rounded about once.
+    #[test]
+    fn a_coasting_box_far_away_moves_by_its_velocity() {
+        let state = BodyState {
+            linear: LinearState {
+                position: DVec2::new(3e6, -1e6),
+                velocity: DVec2::new(12.5, -7.25),
+            },
+            angular: AngularState {
+                orientation: 0.7,
+                angular_velocity: 2.0,
+            },
+        };
+        let params = SceneParams {
+            linear_damping: 0.0,
+            angular_damping: 0.0,
+            ..SceneParams::tutorial()
+        };
+        let model = params.force_model(params.mass_properties().unwrap(), None);
+        let settings = TaylorSettings {
+            order: 20,
+            tolerance: 1e-10,
+            max_steps: 100,
+        };
+        let done = integrate(&state, &model, 0.01, &settings).unwrap();
+        let expected = state.linear.position + 0.01 * state.linear.velocity;
+        let ulp = 3e6 * f64::EPSILON;
+        assert!((done.state.linear.position - expected).length() <= 4.0 * ulp);
+        assert!((done.state.linear.velocity - state.linear.velocity).length() <= 1e-12);
+        assert_eq!(done.state.angular.angular_velocity, 2.0);
+        assert!((done.state.angular.orientation - 0.72).abs() <= 1e-15);
     }
 }
