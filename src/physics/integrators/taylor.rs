@@ -2,13 +2,14 @@
 //! motion by recurrence, each step as long as the series' last terms allow (Jorba and Zou's
 //! rule), run inside one fixed step.
 //!
-//! Why it fits this scene: with the orientation carried as a unit vector u = (cos θ, sin θ)
-//! (u' = ω u⊥) the equations of motion are polynomials of degree two: the band's force is
-//! linear in the corner's position, its torque k·(R r) × (a − x) bilinear, the damping linear.
-//! So every Taylor coefficient costs a handful of running products, and a high order lets a
-//! step cover a large share of the band's oscillation and the spin. The report's comparison of
-//! engines (docs/integrators.md) measured it against classical RK4 substeps
-//! and Dormand and Prince's 8(5,3) pair at the same error on the stiff pulls.
+//! Why it fits this scene: in the frame that turns with the box, with D = Rᵀ(x − a) the centre
+//! seen from the anchor and V = Rᵀv, the equations of motion are polynomials of degree two: the
+//! band's force −k R(D + r) and torque −k r × D are linear in D, the damping linear, and the
+//! turning adds −ω J D and −ω J V (J a quarter turn), the only products. So every Taylor
+//! coefficient costs four running products, and a high order lets a step cover a large share
+//! of the band's oscillation and the spin. The report's comparison of engines
+//! (docs/integrators.md) measures it against classical RK4 substeps and Dormand and Prince's
+//! 8(5,3) pair at the same error on the stiff pulls.
 //!
 //! Everything is counted, nothing timed: the steps taken depend only on the state, the model,
 //! the step and the settings, so a run is bit-identical on every machine.
@@ -53,7 +54,7 @@ pub struct Integrated {
     ///
     /// Each order is about one evaluation of the equations of motion.
     pub orders: u32,
-    /// Energy damping took out, its Taylor series integrated with the motion's.
+    /// Energy damping took out: the mechanical energy at the start less that at the end.
     pub dissipated: f64,
 }
 
@@ -133,12 +134,11 @@ fn integrate_on_avx(
 /// The motion in the frame that turns with the box, as the engine's series carry it.
 ///
 /// D = Rᵀ(x − a) the centre seen from the anchor and V = Rᵀv the velocity, both in the box's
-/// axes, then θ, ω, the energy damping took out, and a lane of padding: two four-lane rows.
+/// axes, then θ, ω, and two lanes of padding: two four-lane rows.
 type Row = [f64; LANES];
 const LANES: usize = 8;
 const THETA: usize = 4;
 const OMEGA: usize = 5;
-const HEAT: usize = 6;
 
 /// Returns the state seen from the turning frame, from the state, the anchor and (sin θ, cos θ).
 #[inline(always)]
@@ -185,7 +185,10 @@ fn moved_from(state: &BodyState, (sin, cos): (f64, f64), start: &Row, moved: &Ro
 ///
 /// In the frame that turns with the box the band's force −k R(D + r) and its torque −k r × D
 /// are linear in D, and what the turning adds, −ω J D and −ω J V (J a quarter turn), is the
-/// only product: four of them an order, besides the damping power's three squares.
+/// only product: four of them an order.
+///
+/// The energy damping took out is booked from the energy at the fixed step's ends: the anchor
+/// stays put within it, so no other force works on the box.
 #[inline(always)]
 fn integrate_here(
     state: &BodyState,
@@ -207,9 +210,6 @@ fn integrate_here(
     let damping_per_mass = model.linear_damping * model.mass.inverse_mass();
     let stiffness_per_inertia = k * model.mass.inverse_inertia();
     let spin_damping = model.angular_damping;
-    let linear_damping = model.linear_damping;
-    // c·I: the damping power per unit ω².
-    let spin_power = model.angular_damping * model.mass.inertia();
 
     let facing = maths::sin_cos(state.angular.orientation);
     let start = turned(state, anchor, facing);
@@ -238,7 +238,7 @@ fn integrate_here(
     let mut operands = [Operands::default(); MAX_ORDER + 1];
     let operands_of = |row: &Row| {
         let [dx, dy, vx, vy, _, omega, ..] = *row;
-        Operands::new([omega; 4], [dy, dx, vy, vx], [vx, vy, omega, 0.0])
+        Operands::new([omega; 4], [dy, dx, vy, vx])
     };
     let mut remaining = dt;
     let mut steps = 0u32;
@@ -285,7 +285,7 @@ fn integrate_here(
                 omega * over,
                 (-stiffness_per_inertia * (local.x * dy - local.y * dx) - spin_damping * omega)
                     * over,
-                (linear_damping * turning.speed_squared + spin_power * turning.spin_squared) * over,
+                0.0,
                 0.0,
             ];
             series[n + 1] = next;
@@ -335,8 +335,23 @@ fn integrate_here(
         state: moved_from(state, facing, &start, &moved),
         steps,
         orders,
-        dissipated: moved[HEAT],
+        dissipated: if model.linear_damping == 0.0 && model.angular_damping == 0.0 {
+            0.0
+        } else {
+            mechanical_energy(model, local, k, &start) - mechanical_energy(model, local, k, &y)
+        },
     })
+}
+
+/// Returns the box's kinetic energy and the band's, from the turned state `row`.
+///
+/// The band's is ½k|D + r|², its stretch seen from the box.
+fn mechanical_energy(model: &ForceModel, local: DVec2, k: f64, row: &Row) -> f64 {
+    let [dx, dy, vx, vy, _, omega, ..] = *row;
+    let (stretch_x, stretch_y) = (dx + local.x, dy + local.y);
+    0.5 * (model.mass.mass() * (vx * vx + vy * vy)
+        + model.mass.inertia() * omega * omega
+        + k * (stretch_x * stretch_x + stretch_y * stretch_y))
 }
 
 /// Returns the error weights for a fixed step `dt` from `state`, turned as `start`.
@@ -464,43 +479,35 @@ fn mul_add<const LANES: usize>(
 
 /// One order's operands of the Cauchy products, in lanes: one multiply-add serves eight sums.
 ///
-/// Left × right is [ω·D y, ω·D x, ω·V y, ω·V x], the turning's, and `square` × `square` is
-/// [Vx², Vy², ω², 0], the damping power's: left is ω in every lane, right [D y, D x, V y, V x].
+/// Left × right is [ω·D y, ω·D x, ω·V y, ω·V x], the turning's: left is ω in every lane, right
+/// [D y, D x, V y, V x].
 /// One order's `left_right` times another's with its halves swapped is the two ends of a
 /// Cauchy pair at once.
 #[derive(Clone, Copy, Default)]
 struct Operands {
     /// [left, right].
     left_right: Octet,
-    /// [vx, vy, ω, 0].
-    square: Quad,
-    /// Twice `square` (exactly): a pair of the squares' sum counted once, for both its ends.
-    double_square: Quad,
 }
 
 impl Operands {
     #[inline(always)]
-    fn new(left: Quad, right: Quad, square: Quad) -> Self {
+    fn new(left: Quad, right: Quad) -> Self {
         let [l0, l1, l2, l3] = left;
         let [r0, r1, r2, r3] = right;
         Self {
             left_right: [l0, l1, l2, l3, r0, r1, r2, r3],
-            square,
-            double_square: square.map(|factor| 2.0 * factor),
         }
     }
 }
 
 /// The Cauchy products the n-th coefficients need.
 ///
-/// They are ω times each of D y, D x, V y and V x, and the damping power's |V|² and ω².
+/// They are ω times each of D y, D x, V y and V x.
 struct Products {
     omega_dy: f64,
     omega_dx: f64,
     omega_vy: f64,
     omega_vx: f64,
-    speed_squared: f64,
-    spin_squared: f64,
 }
 
 impl Products {
@@ -520,18 +527,16 @@ impl Products {
     ) -> Self {
         let n = n.min(MAX_ORDER);
         let zero = [0.0; 4];
-        let (mut ends, mut squares) = ([0.0; 8], zero);
+        let mut ends = [0.0; 8];
         if n.is_multiple_of(2) {
             let middle = if n == 0 { first } else { &operands[n / 2] };
             let [l0, l1, l2, l3, r0, r1, r2, r3] = middle.left_right;
             let [e0, e1, e2, e3] = mul_add(zero, [l0, l1, l2, l3], [r0, r1, r2, r3]);
             ends = [e0, e1, e2, e3, 0.0, 0.0, 0.0, 0.0];
-            squares = mul_add(zero, middle.square, middle.square);
         }
         let mut add_pair = |low: &Operands, high: &Operands| {
             let [l0, l1, l2, l3, r0, r1, r2, r3] = high.left_right;
             ends = mul_add(ends, low.left_right, [r0, r1, r2, r3, l0, l1, l2, l3]);
-            squares = mul_add(squares, low.double_square, high.square);
         };
         for low in (1..n.div_ceil(2)).rev() {
             add_pair(&operands[low], &operands[n - low]);
@@ -545,8 +550,6 @@ impl Products {
             omega_dx: sums[1],
             omega_vy: sums[2],
             omega_vx: sums[3],
-            speed_squared: squares[0] + squares[1],
-            spin_squared: squares[2],
         }
     }
 }
