@@ -1,6 +1,7 @@
-//! The state `auto`'s candidate engines integrate (the Taylor series and DOP853): the body
-//! with its orientation carried also as a unit vector, plus the energy damping takes out, and
-//! how their errors are weighed. One layout, so that the two engines compare like with like.
+//! The state DOP853 integrates, in the world's frame: the body with its orientation carried
+//! also as a unit vector, plus the energy damping takes out, and how its errors are weighed.
+//! The Taylor engine carries its own, in the frame that turns with the box (`taylor.rs`), and
+//! shares the relative tolerance.
 
 use bevy::math::DVec2;
 
