@@ -134,7 +134,8 @@ fn integrate_on_avx(
 /// The motion in the frame that turns with the box, as the engine's series carry it.
 ///
 /// D = Rᵀ(x − a) the centre seen from the anchor and V = Rᵀv the velocity, both in the box's
-/// axes, then θ, ω, and two lanes of padding: two four-lane rows.
+/// axes, y before x (as the turning's products pair them with ω: see [`Products::at`]), then
+/// θ, ω, and two lanes of padding: two four-lane rows.
 type Row = [f64; LANES];
 const LANES: usize = 8;
 const THETA: usize = 4;
@@ -147,7 +148,7 @@ fn turned(state: &BodyState, anchor: DVec2, (sin, cos): (f64, f64)) -> Row {
     let [dx, dy] = to_box(state.linear.position - anchor);
     let [vx, vy] = to_box(state.linear.velocity);
     let (theta, omega) = (state.angular.orientation, state.angular.angular_velocity);
-    [dx, dy, vx, vy, theta, omega, 0.0, 0.0]
+    [dy, dx, vy, vx, theta, omega, 0.0, 0.0]
 }
 
 /// Returns the state after `moved` (every component's change since `start`), in the world's axes.
@@ -171,8 +172,8 @@ fn moved_from(state: &BodyState, (sin, cos): (f64, f64), start: &Row, moved: &Ro
     };
     BodyState {
         linear: LinearState {
-            position: state.linear.position + change([start[0], start[1]], [moved[0], moved[1]]),
-            velocity: state.linear.velocity + change([start[2], start[3]], [moved[2], moved[3]]),
+            position: state.linear.position + change([start[1], start[0]], [moved[1], moved[0]]),
+            velocity: state.linear.velocity + change([start[3], start[2]], [moved[3], moved[2]]),
         },
         angular: AngularState {
             orientation: state.angular.orientation + moved[THETA],
@@ -233,13 +234,6 @@ fn integrate_here(
     // The series, an order a row: row n holds every component's n-th coefficient, so that
     // a row is written at once and the sums at the end run over all components together.
     let mut series: [Row; MAX_ORDER + 1] = [[0.0; LANES]; MAX_ORDER + 1];
-    // Each order's operands of the products, in pairs so that one multiply-add serves two
-    // sums (see [`Operands`]).
-    let mut operands = [Operands::default(); MAX_ORDER + 1];
-    let operands_of = |row: &Row| {
-        let [dx, dy, vx, vy, _, omega, ..] = *row;
-        Operands::new([omega; 4], [dy, dx, vy, vx])
-    };
     let mut remaining = dt;
     let mut steps = 0u32;
     let mut orders = 0u32;
@@ -249,11 +243,10 @@ fn integrate_here(
         }
         steps += 1;
         series[0] = y;
-        // Order 0: the step's start. `newest` is the latest order's row and operands, carried
-        // in registers from one order to the next rather than read back from memory.
-        let first = operands_of(&y);
-        operands[0] = first;
-        let mut newest = (y, first);
+        // Order 0: the step's start. `newest` is the latest order's row, carried in registers
+        // from one order to the next rather than read back from memory.
+        let first = y;
+        let mut newest = y;
         let size = weighted_max(&sizes, &y);
         let tolerance = settings.tolerance + RELATIVE_TOLERANCE * size;
         // Jorba and Zou: the step at which each of the last two terms reaches the tolerance,
@@ -266,10 +259,10 @@ fn integrate_here(
         // step (a soft band: a few orders instead of all of them).
         let mut used = order;
         for n in 0..order {
-            let (row, row_operands) = newest;
-            let turning = Products::at(n, &operands, &first, &row_operands);
+            let row = newest;
+            let turning = Products::at(n, &series, &first, &row);
             let over = RECIPROCALS[n + 1];
-            let [dx, dy, vx, vy, _, omega, ..] = row;
+            let [dy, dx, vy, vx, _, omega, ..] = row;
             // The band pulls the corner, D + r: r only in the order-0 term.
             let (corner_x, corner_y) = if n == 0 {
                 (dx + local.x, dy + local.y)
@@ -277,11 +270,11 @@ fn integrate_here(
                 (dx, dy)
             };
             let next = [
-                (vx + turning.omega_dy) * over,
                 (vy - turning.omega_dx) * over,
-                (turning.omega_vy - (stiffness_per_mass * corner_x + damping_per_mass * vx)) * over,
+                (vx + turning.omega_dy) * over,
                 (-turning.omega_vx - (stiffness_per_mass * corner_y + damping_per_mass * vy))
                     * over,
+                (turning.omega_vy - (stiffness_per_mass * corner_x + damping_per_mass * vx)) * over,
                 omega * over,
                 (-stiffness_per_inertia * (local.x * dy - local.y * dx) - spin_damping * omega)
                     * over,
@@ -289,8 +282,7 @@ fn integrate_here(
                 0.0,
             ];
             series[n + 1] = next;
-            newest = (next, operands_of(&next));
-            operands[n + 1] = newest.1;
+            newest = next;
             let top = n + 1;
             // Whether the last two terms are within the tolerance at the end of the fixed
             // step: Jorba and Zou's step reaches it (compared without roots). The terms are
@@ -347,7 +339,7 @@ fn integrate_here(
 ///
 /// The band's is ½k|D + r|², its stretch seen from the box.
 fn mechanical_energy(model: &ForceModel, local: DVec2, k: f64, row: &Row) -> f64 {
-    let [dx, dy, vx, vy, _, omega, ..] = *row;
+    let [dy, dx, vy, vx, _, omega, ..] = *row;
     let (stretch_x, stretch_y) = (dx + local.x, dy + local.y);
     0.5 * (model.mass.mass() * (vx * vx + vy * vy)
         + model.mass.inertia() * omega * omega
@@ -362,7 +354,7 @@ fn mechanical_energy(model: &ForceModel, local: DVec2, k: f64, row: &Row) -> f64
 /// time too; the energy has no weight.
 fn error_weights(state: &BodyState, model: &ForceModel, dt: f64, start: &Row) -> Row {
     let reach = 0.5 * model.mass.size().length();
-    let [dx, dy, vx, vy, ..] = *start;
+    let [dy, dx, vy, vx, ..] = *start;
     let rate = model.fastest_rate(state).max(1.0 / dt);
     let turn = reach + dx.hypot(dy) + vx.hypot(vy) / rate;
     [
@@ -460,9 +452,6 @@ fn least_root(log2_tolerance: f64, terms: [(f64, f64); 2]) -> f64 {
 
 type Quad = [f64; 4];
 
-/// Two quads side by side.
-type Octet = [f64; 8];
-
 /// Returns acc + a·b, lane by lane.
 ///
 /// It is written so that the compiler makes it vector multiplies and adds where the machine has
@@ -477,27 +466,10 @@ fn mul_add<const LANES: usize>(
     std::array::from_fn(|i| acc[i] + a[i] * b[i])
 }
 
-/// One order's operands of the Cauchy products, in lanes: one multiply-add serves eight sums.
-///
-/// Left × right is [ω·D y, ω·D x, ω·V y, ω·V x], the turning's: left is ω in every lane, right
-/// [D y, D x, V y, V x].
-/// One order's `left_right` times another's with its halves swapped is the two ends of a
-/// Cauchy pair at once.
-#[derive(Clone, Copy, Default)]
-struct Operands {
-    /// [left, right].
-    left_right: Octet,
-}
-
-impl Operands {
-    #[inline(always)]
-    fn new(left: Quad, right: Quad) -> Self {
-        let [l0, l1, l2, l3] = left;
-        let [r0, r1, r2, r3] = right;
-        Self {
-            left_right: [l0, l1, l2, l3, r0, r1, r2, r3],
-        }
-    }
+/// Returns [D y, D x, V y, V x]: what ω multiplies in the turning's products.
+#[inline(always)]
+fn turned_parts(row: &Row) -> Quad {
+    [row[0], row[1], row[2], row[3]]
 }
 
 /// The Cauchy products the n-th coefficients need.
@@ -519,27 +491,26 @@ impl Products {
     /// and what waits on it is two multiply-adds, on operands kept in registers. The two ends
     /// of each pair go to separate sums (the two halves of `ends`), which halves the chain again.
     #[inline(always)]
-    fn at(
-        n: usize,
-        operands: &[Operands; MAX_ORDER + 1],
-        first: &Operands,
-        newest: &Operands,
-    ) -> Self {
+    fn at(n: usize, series: &[Row; MAX_ORDER + 1], first: &Row, newest: &Row) -> Self {
         let n = n.min(MAX_ORDER);
         let zero = [0.0; 4];
         let mut ends = [0.0; 8];
         if n.is_multiple_of(2) {
-            let middle = if n == 0 { first } else { &operands[n / 2] };
-            let [l0, l1, l2, l3, r0, r1, r2, r3] = middle.left_right;
-            let [e0, e1, e2, e3] = mul_add(zero, [l0, l1, l2, l3], [r0, r1, r2, r3]);
+            let middle = if n == 0 { first } else { &series[n / 2] };
+            let [e0, e1, e2, e3] = mul_add(zero, [middle[OMEGA]; 4], turned_parts(middle));
             ends = [e0, e1, e2, e3, 0.0, 0.0, 0.0, 0.0];
         }
-        let mut add_pair = |low: &Operands, high: &Operands| {
-            let [l0, l1, l2, l3, r0, r1, r2, r3] = high.left_right;
-            ends = mul_add(ends, low.left_right, [r0, r1, r2, r3, l0, l1, l2, l3]);
+        let mut add_pair = |low: &Row, high: &Row| {
+            let (low_omega, [l0, l1, l2, l3]) = (low[OMEGA], turned_parts(low));
+            let (high_omega, [h0, h1, h2, h3]) = (high[OMEGA], turned_parts(high));
+            let lows = [low_omega, low_omega, low_omega, low_omega, l0, l1, l2, l3];
+            let highs = [
+                h0, h1, h2, h3, high_omega, high_omega, high_omega, high_omega,
+            ];
+            ends = mul_add(ends, lows, highs);
         };
         for low in (1..n.div_ceil(2)).rev() {
-            add_pair(&operands[low], &operands[n - low]);
+            add_pair(&series[low], &series[n - low]);
         }
         if n >= 1 {
             add_pair(first, newest);
