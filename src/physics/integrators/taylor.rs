@@ -337,7 +337,10 @@ fn integrate_here(
 
 /// Returns the box's kinetic energy and the band's, from the turned state `row`.
 ///
-/// The band's is ½k|D + r|², its stretch seen from the box.
+/// The band's is ½k|D + r|², its stretch seen from the box. It is [`ForceModel::energy`] in
+/// the box's axes (a test holds the two together): that one turns the corner into the world's
+/// axes, a `sin_cos` at each end of every fixed step, which a soft band's step feels
+/// (docs/benchmarks.md#the-turning-frame).
 fn mechanical_energy(model: &ForceModel, local: DVec2, k: f64, row: &Row) -> f64 {
     let [dy, dx, vy, vx, _, omega, ..] = *row;
     let (stretch_x, stretch_y) = (dx + local.x, dy + local.y);
@@ -351,7 +354,7 @@ fn mechanical_energy(model: &ForceModel, local: DVec2, k: f64, row: &Row) -> f64
 /// Positions count in px; the orientation as the displacement it makes of the farthest corner
 /// and of the centre seen from the anchor, and of the velocity over the time the motion takes
 /// to move that far (the faster of the motion's rate and the fixed step); velocities over that
-/// time too; the energy has no weight.
+/// time too; the padding has no weight.
 fn error_weights(state: &BodyState, model: &ForceModel, dt: f64, start: &Row) -> Row {
     let reach = 0.5 * model.mass.size().length();
     let [dy, dx, vy, vx, ..] = *start;
@@ -722,6 +725,36 @@ mod tests {
                 let heat = (ours.dissipated - theirs.dissipated).abs();
                 assert!(heat <= 1e-9 * theirs.dissipated.abs().max(1.0), "{heat}");
             }
+        }
+    }
+
+    // The turned state's energy is the world state's, as `ForceModel::energy` finds it.
+    #[test]
+    fn the_turned_energy_is_the_models() {
+        for (anchor, stiffness) in [
+            (DVec2::new(200.0, 120.0), 20.0),
+            (DVec2::new(-3e4, 5.0), 1e7),
+        ] {
+            let state = BodyState {
+                linear: LinearState {
+                    position: DVec2::new(12.0, -40.0),
+                    velocity: DVec2::new(-300.0, 75.0),
+                },
+                angular: AngularState {
+                    orientation: 2.3,
+                    angular_velocity: -6.0,
+                },
+            };
+            let model = pulled(state, anchor, stiffness);
+            let band = model.band.unwrap();
+            let facing = maths::sin_cos(state.angular.orientation);
+            let row = turned(&state, band.anchor, facing);
+            let turned_energy = mechanical_energy(&model, band.local_point, stiffness, &row);
+            let energy = model.energy(&state);
+            assert!(
+                (turned_energy - energy).abs() <= 1e-12 * energy,
+                "{turned_energy} {energy}"
+            );
         }
     }
 
