@@ -18,6 +18,7 @@ pub mod dop853;
 pub mod engine_state;
 pub mod explicit;
 pub mod implicit;
+mod lanes;
 pub mod seed;
 pub mod step_info;
 pub mod taylor;

@@ -17,6 +17,9 @@
 use bevy::math::DVec2;
 
 use super::engine_state::RELATIVE_TOLERANCE;
+#[cfg(target_arch = "x86_64")]
+use super::lanes::Avx;
+use super::lanes::{Lanes, Portable, Quad};
 use crate::physics::body::{AngularState, BodyState, LinearState};
 use crate::physics::forces::ForceModel;
 use crate::physics::maths;
@@ -89,10 +92,11 @@ pub struct TaylorSettings {
 /// None when the step needs more than `settings.max_steps` (expected beforehand, or found on
 /// the way): the caller falls back to a method that is stable at any step.
 ///
-/// On an x86-64 with AVX the same code runs compiled for its four-lane registers: one vector
-/// multiply or add where SSE2 takes two. Each lane rounds each operation as before (no fused
-/// multiply-add), so the bits are the same on every machine and in the browser. (Compiled for
-/// AVX-512's eight lanes it ran slower on a machine that has them: docs/benchmarks.md.)
+/// On an x86-64 with AVX the same code runs compiled for its four-lane registers, the
+/// recurrence's lanes written as AVX's instructions (the module `lanes`). Each lane rounds each
+/// operation as the arrays do (no fused multiply-add), so the bits are the same on every
+/// machine and in the browser. (Compiled for AVX-512's eight lanes it ran slower on a machine
+/// that has them: docs/benchmarks.md.)
 pub fn integrate(
     state: &BodyState,
     model: &ForceModel,
@@ -116,7 +120,7 @@ pub fn integrate_portable(
     dt: f64,
     settings: &TaylorSettings,
 ) -> Option<Integrated> {
-    integrate_here(state, model, dt, settings)
+    integrate_here::<Portable>(state, model, dt, settings)
 }
 
 /// Runs [`integrate`] compiled for AVX's four-lane registers.
@@ -128,13 +132,13 @@ fn integrate_on_avx(
     dt: f64,
     settings: &TaylorSettings,
 ) -> Option<Integrated> {
-    integrate_here(state, model, dt, settings)
+    integrate_here::<Avx>(state, model, dt, settings)
 }
 
 /// The motion in the frame that turns with the box, as the engine's series carry it.
 ///
 /// D = Rᵀ(x − a) the centre seen from the anchor and V = Rᵀv the velocity, both in the box's
-/// axes, y before x (as the turning's products pair them with ω: see [`Products::at`]), then
+/// axes, y before x (as the turning's products pair them with ω: see [`Recurrence`]), then
 /// θ, ω, and two lanes of padding: two four-lane rows.
 type Row = [f64; LANES];
 const LANES: usize = 8;
@@ -191,7 +195,7 @@ fn moved_from(state: &BodyState, (sin, cos): (f64, f64), start: &Row, moved: &Ro
 /// The energy damping took out is booked from the energy at the fixed step's ends: the anchor
 /// stays put within it, so no other force works on the box.
 #[inline(always)]
-fn integrate_here(
+fn integrate_here<L: Lanes>(
     state: &BodyState,
     model: &ForceModel,
     dt: f64,
@@ -209,8 +213,10 @@ fn integrate_here(
     };
     let stiffness_per_mass = k * model.mass.inverse_mass();
     let damping_per_mass = model.linear_damping * model.mass.inverse_mass();
-    let stiffness_per_inertia = k * model.mass.inverse_inertia();
-    let spin_damping = model.angular_damping;
+    let spin = Spin {
+        stiffness_per_inertia: k * model.mass.inverse_inertia(),
+        damping: model.angular_damping,
+    };
 
     let facing = maths::sin_cos(state.angular.orientation);
     let start = turned(state, anchor, facing);
@@ -243,10 +249,8 @@ fn integrate_here(
         }
         steps += 1;
         series[0] = y;
-        // Order 0: the step's start. `newest` is the latest order's row, carried in registers
-        // from one order to the next rather than read back from memory.
+        // Order 0: the step's start.
         let first = y;
-        let mut newest = y;
         let size = weighted_max(&sizes, &y);
         let tolerance = settings.tolerance + RELATIVE_TOLERANCE * size;
         // Jorba and Zou: the step at which each of the last two terms reaches the tolerance,
@@ -258,31 +262,15 @@ fn integrate_here(
         // The series stops early where a lower order already reaches the end of the fixed
         // step (a soft band: a few orders instead of all of them).
         let mut used = order;
+        let recurrence =
+            Recurrence::<L>::of(&first, local, stiffness_per_mass, damping_per_mass, spin);
+        let mut newest = recurrence.first_order(&first, local);
         for n in 0..order {
-            let row = newest;
-            let turning = Products::at(n, &series, &first, &row);
-            let over = RECIPROCALS[n + 1];
-            let [dy, dx, vy, vx, _, omega, ..] = row;
-            // The band pulls the corner, D + r: r only in the order-0 term.
-            let (corner_x, corner_y) = if n == 0 {
-                (dx + local.x, dy + local.y)
-            } else {
-                (dx, dy)
-            };
-            let next = [
-                (vy - turning.omega_dx) * over,
-                (vx + turning.omega_dy) * over,
-                (-turning.omega_vx - (stiffness_per_mass * corner_y + damping_per_mass * vy))
-                    * over,
-                (turning.omega_vy - (stiffness_per_mass * corner_x + damping_per_mass * vx)) * over,
-                omega * over,
-                (-stiffness_per_inertia * (local.x * dy - local.y * dx) - spin_damping * omega)
-                    * over,
-                0.0,
-                0.0,
-            ];
-            series[n + 1] = next;
-            newest = next;
+            if n > 0 {
+                let middle = middle_sums::<L>(n, &series);
+                newest = recurrence.next(&newest, middle, RECIPROCALS[n + 1]);
+            }
+            series[n + 1] = newest.row();
             let top = n + 1;
             // Whether the last two terms are within the tolerance at the end of the fixed
             // step: Jorba and Zou's step reaches it (compared without roots). The terms are
@@ -453,79 +441,157 @@ fn least_root(log2_tolerance: f64, terms: [(f64, f64); 2]) -> f64 {
     if first < second { first } else { second }
 }
 
-type Quad = [f64; 4];
-
-/// Returns acc + a·b, lane by lane.
-///
-/// It is written so that the compiler makes it vector multiplies and adds where the machine has
-/// them (two SSE2 instructions a quad on any x86-64); the same operations, so the same bits, one
-/// lane at a time where it has none (wasm).
-#[inline(always)]
-fn mul_add<const LANES: usize>(
-    acc: [f64; LANES],
-    a: [f64; LANES],
-    b: [f64; LANES],
-) -> [f64; LANES] {
-    std::array::from_fn(|i| acc[i] + a[i] * b[i])
-}
-
 /// Returns [D y, D x, V y, V x]: what ω multiplies in the turning's products.
 #[inline(always)]
-fn turned_parts(row: &Row) -> Quad {
-    [row[0], row[1], row[2], row[3]]
+fn turned_parts(row: &Row) -> &Quad {
+    row.first_chunk().expect("a row has eight lanes")
 }
 
-/// The Cauchy products the n-th coefficients need.
+/// What turns the box: its band's stiffness over its inertia, and its angular damping.
+#[derive(Clone, Copy)]
+struct Spin {
+    stiffness_per_inertia: f64,
+    damping: f64,
+}
+
+/// One order's coefficients as the recurrence carries them to the next, in registers.
 ///
-/// They are ω times each of D y, D x, V y and V x.
-struct Products {
-    omega_dy: f64,
-    omega_dx: f64,
-    omega_vy: f64,
-    omega_vx: f64,
+/// The parts [D y, D x, V y, V x], θ, and ω in every lane.
+struct Coefficients<L: Lanes> {
+    parts: L::Four,
+    theta: f64,
+    omega: L::Four,
 }
 
-impl Products {
-    /// Computes the Cauchy products for the n-th coefficients, each sum from its middle out.
-    ///
-    /// Each sum Σ f[j] g[n − j] is taken from its middle term out to its ends, the terms
-    /// (j, n − j) and (n − j, j) together: the ends hold the newest order, found only by the
-    /// previous one, so the middle's additions run while that order is still being computed,
-    /// and what waits on it is two multiply-adds, on operands kept in registers. The two ends
-    /// of each pair go to separate sums (the two halves of `ends`), which halves the chain again.
+impl<L: Lanes> Coefficients<L> {
+    /// Returns the coefficients as a row of the series.
     #[inline(always)]
-    fn at(n: usize, series: &[Row; MAX_ORDER + 1], first: &Row, newest: &Row) -> Self {
-        let n = n.min(MAX_ORDER);
-        let zero = [0.0; 4];
-        let mut ends = [0.0; 8];
-        if n.is_multiple_of(2) {
-            let middle = if n == 0 { first } else { &series[n / 2] };
-            let [e0, e1, e2, e3] = mul_add(zero, [middle[OMEGA]; 4], turned_parts(middle));
-            ends = [e0, e1, e2, e3, 0.0, 0.0, 0.0, 0.0];
-        }
-        let mut add_pair = |low: &Row, high: &Row| {
-            let (low_omega, [l0, l1, l2, l3]) = (low[OMEGA], turned_parts(low));
-            let (high_omega, [h0, h1, h2, h3]) = (high[OMEGA], turned_parts(high));
-            let lows = [low_omega, low_omega, low_omega, low_omega, l0, l1, l2, l3];
-            let highs = [
-                h0, h1, h2, h3, high_omega, high_omega, high_omega, high_omega,
-            ];
-            ends = mul_add(ends, lows, highs);
-        };
-        for low in (1..n.div_ceil(2)).rev() {
-            add_pair(&series[low], &series[n - low]);
-        }
-        if n >= 1 {
-            add_pair(first, newest);
-        }
-        let sums: Quad = std::array::from_fn(|i| ends[i] + ends[i + 4]);
+    fn row(&self) -> Row {
+        let [dy, dx, vy, vx] = L::store(self.parts);
+        [dy, dx, vy, vx, self.theta, L::first(self.omega), 0.0, 0.0]
+    }
+}
+
+/// The recurrence of one Taylor step: the (n + 1)-th coefficients from the n-th, linear in them.
+///
+/// The turning's product ω·J·(D, V) at order n is Σ ω_j (D, V)_(n−j): its two ends, ω₀ times
+/// the newest parts and the newest ω times the start's, are linear in the newest coefficients
+/// with the start's values as factors, and its middle ([`middle_sums`]) holds only older rows,
+/// found while the newest still is. What waits on the newest is a multiply a term, a short
+/// tree of additions and the scaling by 1/(n + 1).
+struct Recurrence<L: Lanes> {
+    /// Times the parts with each pair swapped, [D x, D y, V x, V y]: ω₀ J.
+    across: L::Four,
+    /// Times the parts with the halves swapped, [V y, V x, D y, D x]: D' = V, the band's pull.
+    halves: L::Four,
+    /// Times the parts themselves: the linear damping.
+    itself: L::Four,
+    /// Times the newest ω: J times the start's parts.
+    spin: L::Four,
+    /// Turns the middle sums [D y, D x, V y, V x] swapped pairwise into J's: signs.
+    signs: L::Four,
+    /// ω's, times the parts: the band's torque from D y and D x.
+    torque: L::Four,
+    /// ω's, times ω: the angular damping.
+    spin_damping: L::Four,
+}
+
+impl<L: Lanes> Recurrence<L> {
+    /// Returns the recurrence of the Taylor step that starts at `first`.
+    #[inline(always)]
+    fn of(first: &Row, local: DVec2, stiffness: f64, damping: f64, spin: Spin) -> Self {
+        let omega = first[OMEGA];
+        let [dy, dx, vy, vx] = *turned_parts(first);
+        let torque = spin.stiffness_per_inertia;
         Self {
-            omega_dy: sums[0],
-            omega_dx: sums[1],
-            omega_vy: sums[2],
-            omega_vx: sums[3],
+            across: L::load(&[-omega, omega, -omega, omega]),
+            halves: L::load(&[1.0, 1.0, -stiffness, -stiffness]),
+            itself: L::load(&[0.0, 0.0, -damping, -damping]),
+            spin: L::load(&[-dx, dy, -vx, vy]),
+            signs: L::load(&[-1.0, 1.0, -1.0, 1.0]),
+            torque: L::load(&[-torque * local.x, torque * local.y, 0.0, 0.0]),
+            spin_damping: L::splat(-spin.damping),
         }
     }
+
+    /// Returns the first-order coefficients from the start `first`.
+    ///
+    /// There the band pulls the corner D + r and the turning's product is the single ω₀·(D, V)₀.
+    #[inline(always)]
+    fn first_order(&self, first: &Row, local: DVec2) -> Coefficients<L> {
+        let [.., stiffness, _] = L::store(self.halves);
+        let pull = L::load(&[0.0, 0.0, stiffness * local.y, stiffness * local.x]);
+        let parts = L::load(turned_parts(first));
+        let omega = L::splat(first[OMEGA]);
+        Coefficients {
+            parts: self.linear(parts, pull),
+            theta: first[OMEGA],
+            omega: self.angular(parts, omega),
+        }
+    }
+
+    /// Returns the (n + 1)-th coefficients from the n-th, `newest`, and the `middle` sums.
+    ///
+    /// `over` is 1/(n + 1).
+    #[inline(always)]
+    fn next(&self, newest: &Coefficients<L>, middle: L::Four, over: f64) -> Coefficients<L> {
+        let scale = L::splat(over);
+        let turned = L::mul(L::swap_pairs(middle), self.signs);
+        let spun = L::add(turned, L::mul(self.spin, newest.omega));
+        Coefficients {
+            parts: L::mul(self.linear(newest.parts, spun), scale),
+            theta: L::first(newest.omega) * over,
+            omega: L::mul(self.angular(newest.parts, newest.omega), scale),
+        }
+    }
+
+    /// Returns the parts' next coefficients before 1/(n + 1): `parts`' linear terms plus `rest`.
+    #[inline(always)]
+    fn linear(&self, parts: L::Four, rest: L::Four) -> L::Four {
+        let across = L::mul(self.across, L::swap_pairs(parts));
+        let halves = L::mul(self.halves, L::swap_halves(parts));
+        let itself = L::mul(self.itself, parts);
+        L::add(L::add(across, halves), L::add(itself, rest))
+    }
+
+    /// Returns ω's next coefficient before 1/(n + 1), in every lane.
+    ///
+    /// It is the torque of `parts` and the damping of `omega`.
+    #[inline(always)]
+    fn angular(&self, parts: L::Four, omega: L::Four) -> L::Four {
+        let torques = L::mul(self.torque, parts);
+        // Lanes 0 and 1 each hold the two torques' sum (in either order: the same bits).
+        let torque = L::low_half_twice(L::add(torques, L::swap_pairs(torques)));
+        L::add(torque, L::mul(self.spin_damping, omega))
+    }
+}
+
+/// Returns the middle of the turning's products at order n, as [D y, D x, V y, V x].
+///
+/// That is Σ ω_j (D, V)_(n−j) for j from 1 to n − 1.
+///
+/// Each sum is taken from its middle term out to its ends, the terms (j, n − j) and (n − j, j)
+/// into two separate sums, which halves the chain. It reads rows up to n − 1 only, so it runs
+/// while the n-th is still being found.
+#[inline(always)]
+fn middle_sums<L: Lanes>(n: usize, series: &[Row; MAX_ORDER + 1]) -> L::Four {
+    let n = n.min(MAX_ORDER);
+    let zero = L::splat(0.0);
+    let (mut lows_sum, mut highs_sum) = (zero, zero);
+    if n >= 2 && n.is_multiple_of(2) {
+        let middle = &series[n / 2];
+        lows_sum = L::mul(L::load(turned_parts(middle)), L::splat(middle[OMEGA]));
+    }
+    let half = (n.max(1) - 1) / 2;
+    let lows = &series[1..=half];
+    let highs = &series[n - half..n];
+    for (low, high) in lows.iter().rev().zip(highs) {
+        let by_low = L::mul(L::splat(low[OMEGA]), L::load(turned_parts(high)));
+        let by_high = L::mul(L::splat(high[OMEGA]), L::load(turned_parts(low)));
+        lows_sum = L::add(lows_sum, by_low);
+        highs_sum = L::add(highs_sum, by_high);
+    }
+    L::add(lows_sum, highs_sum)
 }
 
 /// Sums every component's series at `h`: Σ rows[n] hⁿ.
