@@ -571,8 +571,8 @@ impl<L: Lanes> Recurrence<L> {
 /// That is Σ ω_j (D, V)_(n−j) for j from 1 to n − 1.
 ///
 /// Each sum is taken from its middle term out to its ends, the terms (j, n − j) and (n − j, j)
-/// into two separate sums, which halves the chain. It reads rows up to n − 1 only, so it runs
-/// while the n-th is still being found.
+/// into separate sums and every other pair of them into another two: four chains a quarter as
+/// long. It reads rows up to n − 1 only, so it runs while the n-th is still being found.
 #[inline(always)]
 fn middle_sums<L: Lanes>(n: usize, series: &[Row; MAX_ORDER + 1]) -> L::Four {
     let n = n.min(MAX_ORDER);
@@ -585,13 +585,26 @@ fn middle_sums<L: Lanes>(n: usize, series: &[Row; MAX_ORDER + 1]) -> L::Four {
     let half = (n.max(1) - 1) / 2;
     let lows = &series[1..=half];
     let highs = &series[n - half..n];
-    for (low, high) in lows.iter().rev().zip(highs) {
-        let by_low = L::mul(L::splat(low[OMEGA]), L::load(turned_parts(high)));
-        let by_high = L::mul(L::splat(high[OMEGA]), L::load(turned_parts(low)));
+    let (mut lows_next, mut highs_next) = (zero, zero);
+    let mut pairs = lows.iter().rev().zip(highs);
+    let product = |low: &Row, high: &Row| {
+        (
+            L::mul(L::splat(low[OMEGA]), L::load(turned_parts(high))),
+            L::mul(L::splat(high[OMEGA]), L::load(turned_parts(low))),
+        )
+    };
+    while let Some((low, high)) = pairs.next() {
+        let (by_low, by_high) = product(low, high);
         lows_sum = L::add(lows_sum, by_low);
         highs_sum = L::add(highs_sum, by_high);
+        let Some((low, high)) = pairs.next() else {
+            break;
+        };
+        let (by_low, by_high) = product(low, high);
+        lows_next = L::add(lows_next, by_low);
+        highs_next = L::add(highs_next, by_high);
     }
-    L::add(lows_sum, highs_sum)
+    L::add(L::add(lows_sum, highs_sum), L::add(lows_next, highs_next))
 }
 
 /// Sums every component's series at `h`: Σ rows[n] hⁿ.
