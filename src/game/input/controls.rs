@@ -273,7 +273,7 @@ pub const CONTROLS: [Control; 19] = [
         actions: &[Action::ToggleGhosts],
         label: "G",
         name: "ghosts",
-        effect: "ghosts: every integrator and a reference (Taylor order 24 at 1e-13 px) beside the box under the same band, each outlined in its colour; their card lists their distance from the reference, energy residual and cost per step",
+        effect: "ghosts: every integrator and a reference (Taylor order 32 at 1e-13 px) beside the box under the same band, each outlined in its colour; their card lists their distance from the reference, energy residual and cost per step",
     },
     Control {
         keys: &[PLOT],
