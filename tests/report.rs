@@ -35,6 +35,10 @@ fn the_quick_report_writes_tables_and_a_plot_that_parse() {
         }
         rows
     };
+    // The quick sweep's cases with a horizon (k = 20 and 1e5, both rates), each over anchors.
+    let anchors = csv("anchors.csv", 8);
+    assert_eq!(anchors.len() - 1, 4);
+    assert!(anchors[1..].iter().all(|row| row[3] == "5"), "{anchors:?}");
     let work = csv("work_precision.csv", 8);
     // scenes x steps x integrators, each with a finite cost and an error or a divergence.
     assert_eq!(work.len() - 1, 4 * 3 * 7);

@@ -226,6 +226,15 @@ pub struct StiffCase {
 
 impl StiffCase {
     pub fn new(k: f64, rate: f64) -> Self {
+        Self::moved(k, rate, DVec2::ZERO)
+    }
+
+    /// Returns the case with its pull's anchor moved by `offset` (px), its references its own.
+    ///
+    /// A stiff band's chaotic motion amplifies a change at the start many times by the horizon,
+    /// so one anchor's error says little: the report judges `auto` over a few anchors a pixel
+    /// apart. Beyond any horizon the anchor does not move.
+    pub fn moved(k: f64, rate: f64, offset: DVec2) -> Self {
         let Some(horizon) = resolvable_horizon(k) else {
             let mut scene = Scene::named("undamped").expect("built-in");
             scene.params.stiffness = k;
@@ -239,6 +248,9 @@ impl StiffCase {
         };
         let mut scene = Scene::named("stiff").expect("built-in");
         scene.params.stiffness = k;
+        for pull in &mut scene.pulls {
+            pull.2 += offset;
+        }
         let ticks = ((horizon * rate).round() as u64).max(1);
         let mass = scene.params.mass_properties().expect("valid");
         let taylor = run_engine(&scene, rate, ticks, Engine::TIGHTEST_TAYLOR)

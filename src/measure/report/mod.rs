@@ -15,6 +15,7 @@ use std::time::Instant;
 
 use clap::Args;
 
+mod anchors;
 mod engines;
 mod hard_cases;
 mod invariants;
@@ -103,6 +104,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Box<dyn Error>> {
     let sweep = stiffness::sweep(&cases, quick);
     tables.extend([
         stiffness::table(&cases, &sweep),
+        anchors::table(&cases),
         engines::table(&cases, quick),
         invariants::table(quick),
         ledger::table(quick),

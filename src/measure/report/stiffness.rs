@@ -137,7 +137,7 @@ pub(super) fn table(cases: &[StiffCase], points: &[StiffPoint]) -> Table {
     let mut table = Table::new(
         format!(
             "Stiffness sweep: stiff pulls from rest, each k judged at the horizon its \
-             references resolve (error in px against the order-24 Taylor reference / ns per step; auto: \
+             references resolve (error in px against the order-32 Taylor reference / ns per step; auto: \
              mean substeps and force evaluations per step, fall-backs). Beyond k = 1e7 no \
              horizon resolves a state: undamped for {UNRESOLVABLE_SECONDS} s, bounded or not, \
              and the largest energy growth (E - E0) / E0"
