@@ -327,7 +327,7 @@ fn integrate_here<L: Lanes>(
 /// The series, an order a row, every row on a cache line of its own.
 ///
 /// Then a row's two four-lane halves never straddle two lines. Left where the stack put it, the
-/// process's start decided, and one run of the same build took longer than the next by a sixth.
+/// process's start decided how long a fixed step took (docs/benchmarks.md#the-recurrence-in-lanes).
 #[repr(align(64))]
 struct Series([Row; MAX_ORDER + 1]);
 
