@@ -639,6 +639,46 @@ fn auto_meets_the_stiff_targets_at_each_horizon_without_falling_back() {
     }
 }
 
+// The engine as the browser compiles it (no vector lanes) steps the stiff pulls to the bits of
+// the one that runs here, and so to the same targets: a replay hashes alike in both.
+#[test]
+fn the_browsers_engine_meets_the_stiff_targets_to_the_same_bits() {
+    use rubber_band_box::physics::BandEnds;
+    use rubber_band_box::physics::integrators::taylor::{self, TaylorSettings};
+    let auto = AutoSettings::default();
+    let settings = TaylorSettings {
+        order: auto.order,
+        tolerance: auto.tolerance,
+        max_steps: auto.max_substeps,
+    };
+    for (k, rate, ticks, reference, _) in stiff_references() {
+        let mut scene = Scene::named("stiff").unwrap();
+        scene.params.stiffness = k;
+        let mass = scene.params.mass_properties().unwrap();
+        // The stiff pull holds the band from the start (as the references' runs do).
+        let band = BandEnds::grabbing(&mass, &scene.initial, scene.pulls[0].2);
+        let model = scene.params.force_model(mass, Some(band));
+        let mut state = scene.initial;
+        for tick in 0..ticks {
+            let here = taylor::integrate(&state, &model, 1.0 / rate, &settings).unwrap();
+            let browser = taylor::integrate_portable(&state, &model, 1.0 / rate, &settings);
+            let browser = browser.unwrap();
+            let bits = |state: BodyState| state.to_array().map(f64::to_bits);
+            assert_eq!(
+                bits(here.state),
+                bits(browser.state),
+                "k {k:e}, tick {tick}"
+            );
+            assert_eq!((here.steps, here.orders), (browser.steps, browser.orders));
+            assert_eq!(here.dissipated.to_bits(), browser.dissipated.to_bits());
+            state = browser.state;
+        }
+        let target = if k <= 1e6 { 1e-5 } else { 1e-4 };
+        let error = state.pose_error(&reference, &mass);
+        assert!(error <= target, "k {k:e} at {rate} Hz: {error} px");
+    }
+}
+
 #[test]
 fn beyond_every_horizon_auto_falls_back_counts_it_and_never_gains_energy() {
     for k in [1e8, 1e9, 1e12] {
