@@ -142,6 +142,29 @@ mod tests {
             }
         }
         assert!(StiffCase::new(1e9, 100.0).reference.is_none());
+    }
+
+    // A moved case pulls toward its anchor moved by the offset, nothing else changed.
+    #[test]
+    fn a_moved_case_moves_its_anchor_by_the_offset() {
+        let offset = DVec2::new(-0.6, 0.8);
+        let (plain, moved) = (
+            StiffCase::new(1e6, 64.0),
+            StiffCase::moved(1e6, 64.0, offset),
+        );
+        assert_eq!(moved.scene.pulls[0].2, plain.scene.pulls[0].2 + offset);
+        assert_eq!(moved.ticks, plain.ticks);
+        assert_eq!(moved.scene.params, plain.scene.params);
+    }
+
+    // The range is the least, the middle and the most of the errors, in any order.
+    #[test]
+    fn the_range_is_the_least_the_median_and_the_most() {
+        let spread = AnchorSpread {
+            errors: vec![3.0, 1.0, 2.0, 5.0, 4.0],
+            references_agree: 0.0,
+        };
+        assert_eq!(spread.range(), [1.0, 3.0, 5.0]);
         assert!(spread_over_anchors(&StiffCase::new(1e9, 100.0)).is_none());
     }
 }
