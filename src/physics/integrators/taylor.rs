@@ -265,7 +265,7 @@ fn integrate_here<L: Lanes>(
         let mut used = order;
         let recurrence =
             Recurrence::<L>::of(&first, local, stiffness_per_mass, damping_per_mass, spin);
-        let mut newest = recurrence.first_order(&first, local);
+        let mut newest = recurrence.first_order(&first);
         for n in 0..order {
             if n > 0 {
                 let middle = middle_sums::<L>(n, series);
@@ -492,6 +492,8 @@ struct Recurrence<L: Lanes> {
     across: L::Four,
     /// Times the parts with the halves swapped, [V y, V x, D y, D x]: D' = V, the band's pull.
     halves: L::Four,
+    /// The band's pull on the corner's offset r, which only the first order has.
+    corner: L::Four,
     /// Times the parts themselves: the linear damping.
     itself: L::Four,
     /// Times the newest ω: J times the start's parts.
@@ -514,6 +516,7 @@ impl<L: Lanes> Recurrence<L> {
         Self {
             across: L::load(&[-omega, omega, -omega, omega]),
             halves: L::load(&[1.0, 1.0, -stiffness, -stiffness]),
+            corner: L::load(&[0.0, 0.0, -stiffness * local.y, -stiffness * local.x]),
             itself: L::load(&[0.0, 0.0, -damping, -damping]),
             spin: L::load(&[-dx, dy, -vx, vy]),
             signs: L::load(&[-1.0, 1.0, -1.0, 1.0]),
@@ -526,13 +529,11 @@ impl<L: Lanes> Recurrence<L> {
     ///
     /// There the band pulls the corner D + r and the turning's product is the single ω₀·(D, V)₀.
     #[inline(always)]
-    fn first_order(&self, first: &Row, local: DVec2) -> Coefficients<L> {
-        let [.., stiffness, _] = L::store(self.halves);
-        let pull = L::load(&[0.0, 0.0, stiffness * local.y, stiffness * local.x]);
+    fn first_order(&self, first: &Row) -> Coefficients<L> {
         let parts = L::load(turned_parts(first));
         let omega = L::splat(first[OMEGA]);
         Coefficients {
-            parts: self.linear(parts, pull),
+            parts: self.linear(parts, self.corner),
             theta: first[OMEGA],
             omega: self.angular(parts, omega),
         }
