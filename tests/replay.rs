@@ -263,8 +263,8 @@ fn bad_replay_files_name_the_line_and_what_is_wrong() {
         (lines[..5].join("\n") + "\n", "line 5: truncated"),
         (good[..good.len() - 20].to_owned(), "line 16: "),
         (
-            good.replacen("\"version\":1", "\"version\":2", 1),
-            "line 1: replay format version 2; this build reads version 1",
+            good.replacen("\"version\":2", "\"version\":3", 1),
+            "line 1: replay format version 3; this build reads versions 1 to 2",
         ),
         (
             good.replacen("rubber-band-box replay", "a shopping list", 1),
@@ -652,6 +652,7 @@ fn cross_platform_replay() -> Replay {
     let mut run = ReplayRun::new(&replay, None).unwrap();
     let hash = run.finish();
     assert_eq!(run.refused, None, "the fixture stays inside every bound");
+    drop(run);
     replay.hash = hash;
     replay
 }

@@ -334,9 +334,15 @@ fn apply_mass(params: Res<SceneParams>, mut boxes: Query<&mut MassProperties, Wi
 /// Every box is made or put back this way (the game, reset, the benchmarks, the side-by-side).
 /// Its render snapshots both hold `state`, so the first frame drawn never jumps.
 pub fn rigid_box(mass: MassProperties, state: BodyState) -> impl Bundle {
+    (RigidBox, mass, placed(state))
+}
+
+/// Returns a box's state as components, put there rather than stepped.
+///
+/// Nothing acts on it yet, and both render snapshots hold `state`, so the frame drawn never
+/// slides.
+pub fn placed(state: BodyState) -> impl Bundle {
     (
-        RigidBox,
-        mass,
         state.linear,
         state.angular,
         ForceAccumulator::default(),

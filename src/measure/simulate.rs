@@ -157,8 +157,8 @@ pub struct ReplayJob<'a> {
 pub fn write_replay(job: &ReplayJob, hash: bool, out: impl Write) -> Result<(), SimulateError> {
     let path = job.path;
     let mut run = ReplayRun::new(job.replay, job.integrator)
-        .map_err(|error| SimulateError::Arguments(format!("{}: {error}", path.display())))?;
-    run.stepper.auto = (job.auto)(run.stepper.auto);
+        .map_err(|error| SimulateError::Arguments(format!("{}: {error}", path.display())))?
+        .with_auto(job.auto);
     let mut output =
         Output::new(out, hash, &Row::of_replay(&run)).map_err(SimulateError::Output)?;
     while run.advance().is_some() {
@@ -169,11 +169,9 @@ pub fn write_replay(job: &ReplayJob, hash: bool, out: impl Write) -> Result<(), 
     output.finish().map_err(SimulateError::Output)?;
     if job.check_hash && run.hash != job.replay.hash {
         return Err(SimulateError::Mismatch(format!(
-            "{}: the states differ from the recorded game's (hash {}, recorded {}): this build \
-             or machine computes the steps differently",
+            "{}: {}",
             path.display(),
-            run.hash,
-            job.replay.hash
+            run.explain_mismatch()
         )));
     }
     Ok(())

@@ -14,8 +14,13 @@ use crate::physics::{
 
 /// The header's `format` field: what the file is.
 pub const FORMAT: &str = "rubber-band-box replay";
-/// The format version this build writes and reads.
-pub const VERSION: u32 = 1;
+/// The format version this build writes; it reads this one and every earlier one.
+///
+/// Version 2 added the `state`, `auto` and `check` records, the header's `made_by` and the end
+/// record's `lines`.
+pub const VERSION: u32 = 2;
+/// A check record follows at most this many steps after the previous one.
+pub const CHECK_EVERY: u64 = 1000;
 /// The most steps a replay holds; a recording stops there.
 ///
 /// 3 million is 8 hours at 100 Hz, 12 minutes at 4096 Hz, under 150 MB in memory (a record is
@@ -40,6 +45,23 @@ pub struct Header {
     pub auto: AutoRecord,
     /// The box at the scene's start, and after each reset: x, y, θ, vx, vy, ω.
     pub initial: [f64; 6],
+    /// What wrote the file: the crate's version and the platform ([`made_by`]).
+    ///
+    /// None before version 2.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub made_by: Option<String>,
+}
+
+/// Returns what this build writes in a header's `made_by`: "0.1.0 x86_64-linux".
+///
+/// Two builds that say the same compute every step to the same bits.
+pub fn made_by() -> String {
+    format!(
+        "{} {}-{}",
+        env!("CARGO_PKG_VERSION"),
+        std::env::consts::ARCH,
+        std::env::consts::OS
+    )
 }
 
 /// Everything a step is taken with, as the physics saw it.
@@ -157,6 +179,21 @@ pub enum Record {
     ///
     /// Boxed: rare, and larger than a step, which would otherwise pay for it in memory.
     Settings { step: u64, settings: Box<Settings> },
+    /// Before step `step`: the box put in this state (x, y, θ, vx, vy, ω), not by a step.
+    ///
+    /// The recorder writes one whenever the state a step starts from is not the one the
+    /// previous step left (or a reset's start): a scene loaded, a replay or a link opened,
+    /// learn mode left. Boxed, as settings are.
+    State { step: u64, state: Box<[f64; 6]> },
+    /// From step `step` on, `auto` takes these settings (a replay or a link opened with others).
+    Auto { step: u64, auto: AutoRecord },
+    /// The state the game had after step `step`.
+    ///
+    /// It says where a replay that does not reach the recorded hash first went its own way.
+    ///
+    /// The recorder writes one after the first step that follows a reset, a state or a
+    /// settings record, and at least every [`CHECK_EVERY`] steps.
+    Check { step: u64, state: Box<[f64; 6]> },
     /// Step `step` (counted from 1) ran with this band, or none.
     Step {
         step: u64,
@@ -166,8 +203,15 @@ pub enum Record {
     /// The last line: how many steps the file holds, and the hash of the states.
     ///
     /// The hash is of the states the game had after each step ([`TrajectoryHash`], 16 hex
-    /// digits).
-    End { steps: u64, hash: String },
+    /// digits). `lines` (from version 2) is the FNV-1a hash of every line before it, so that a
+    /// reader can tell a file changed after it was written.
+    End {
+        steps: u64,
+        hash: String,
+        /// Boxed: a record stays small in memory.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        lines: Option<Box<String>>,
+    },
 }
 
 /// The band during a step: the body point (body coordinates) pulled toward the anchor (world).
@@ -211,11 +255,34 @@ impl Default for TrajectoryHash {
 impl TrajectoryHash {
     pub fn add(&mut self, state: &BodyState) {
         for value in state.to_array() {
-            for byte in value.to_bits().to_le_bytes() {
-                self.0 = (self.0 ^ u64::from(byte)).wrapping_mul(0x0000_0100_0000_01b3);
-            }
+            self.add_bytes(&value.to_bits().to_le_bytes());
         }
     }
+
+    /// Adds bytes to the hash (the end record's `lines` hashes each line and a newline).
+    pub fn add_bytes(&mut self, bytes: &[u8]) {
+        for &byte in bytes {
+            self.0 = (self.0 ^ u64::from(byte)).wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+
+    /// Adds one line of a file and its newline.
+    pub fn add_line(&mut self, line: &[u8]) {
+        self.add_bytes(line);
+        self.add_bytes(b"\n");
+    }
+}
+
+/// Whether a file's lines are the ones written (its end record's `lines`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Integrity {
+    /// Made in memory, or read from a file whose lines hash to its end record's `lines`.
+    #[default]
+    Intact,
+    /// Read from a file whose lines do not: it was changed after it was written.
+    Changed,
+    /// Read from a file with no `lines` (format version 1).
+    Unknown,
 }
 
 impl fmt::Display for TrajectoryHash {
@@ -225,7 +292,10 @@ impl fmt::Display for TrajectoryHash {
 }
 
 /// A whole recording: the header, the records (no end record), the steps and their hash.
-#[derive(Clone, Debug, PartialEq)]
+///
+/// Two replays are equal when their files would say the same: the recorder's bookkeeping and
+/// the integrity of the file read are not compared.
+#[derive(Clone, Debug)]
 pub struct Replay {
     pub header: Header,
     pub records: Vec<Record>,
@@ -236,6 +306,27 @@ pub struct Replay {
     ///
     /// They are kept, not searched for, because the recorder asks at every step.
     pub(super) in_force: Settings,
+    /// `auto`'s settings after every record so far.
+    pub(super) auto_in_force: AutoRecord,
+    /// The state the next step starts from unless something puts the box elsewhere.
+    ///
+    /// The latest recorded state (after a step, a state record or a check), or the start
+    /// after a reset. None before the first step.
+    pub(super) expected: Option<[f64; 6]>,
+    /// Steps since the latest check record, and whether the next step must be checked.
+    ///
+    /// A step is checked after a reset, a state or a settings record.
+    pub(super) unchecked: u64,
+    pub(super) check_next: bool,
+    /// Whether the file read is the one written.
+    pub integrity: Integrity,
+}
+
+impl PartialEq for Replay {
+    fn eq(&self, other: &Self) -> bool {
+        (&self.header, &self.records, self.steps, self.hash)
+            == (&other.header, &other.records, other.steps, other.hash)
+    }
 }
 
 impl Replay {
@@ -249,6 +340,7 @@ impl Replay {
             settings,
             auto: auto.into(),
             initial: initial.to_array(),
+            made_by: Some(made_by()),
         })
     }
 
@@ -256,6 +348,11 @@ impl Replay {
     pub(super) fn with_header(header: Header) -> Self {
         Self {
             in_force: header.settings,
+            auto_in_force: header.auto,
+            expected: Some(header.initial),
+            unchecked: 0,
+            check_next: false,
+            integrity: Integrity::Intact,
             header,
             records: Vec::new(),
             steps: 0,
@@ -273,11 +370,13 @@ impl Replay {
         self.in_force
     }
 
-    /// Records that the scene was reset before the next step.
+    /// Records that the scene was reset before the next step: the box at the header's start.
     pub fn push_reset(&mut self) {
         self.records.push(Record::Reset {
             step: self.steps + 1,
         });
+        self.expected = Some(self.header.initial);
+        self.check_next = true;
     }
 
     /// Records these settings before the next step, if they differ from those in force.
@@ -288,6 +387,38 @@ impl Replay {
                 step: self.steps + 1,
                 settings: Box::new(settings),
             });
+            self.check_next = true;
+        }
+    }
+
+    /// Records `auto`'s settings before the next step, if they differ from those in force.
+    pub fn push_auto(&mut self, auto: AutoSettings) {
+        let auto = AutoRecord::from(auto);
+        if auto != self.auto_in_force {
+            self.auto_in_force = auto;
+            self.records.push(Record::Auto {
+                step: self.steps + 1,
+                auto,
+            });
+        }
+    }
+
+    /// Records the state the next step starts from, unless the replay has it there anyway.
+    ///
+    /// The replay has the previous step's state there, or the start after a reset; compared
+    /// to the bit.
+    pub fn push_state(&mut self, state: &BodyState) {
+        let state = state.to_array();
+        let same = self
+            .expected
+            .is_some_and(|expected| expected.map(f64::to_bits) == state.map(f64::to_bits));
+        if !same {
+            self.records.push(Record::State {
+                step: self.steps + 1,
+                state: Box::new(state),
+            });
+            self.expected = Some(state);
+            self.check_next = true;
         }
     }
 
@@ -299,18 +430,43 @@ impl Replay {
             band: band.map(BandRecord::from),
         });
         self.hash.add(after);
+        self.expected = Some(after.to_array());
+        self.unchecked += 1;
+    }
+
+    /// Records the state after the latest step as a check, if one is due ([`Record::Check`]).
+    pub fn push_check_if_due(&mut self, after: &BodyState) {
+        if self.steps > 0 && (self.check_next || self.unchecked >= CHECK_EVERY) {
+            self.records.push(Record::Check {
+                step: self.steps,
+                state: Box::new(after.to_array()),
+            });
+            self.unchecked = 0;
+            self.check_next = false;
+        }
+    }
+
+    /// Returns the state a replay has before the next step unless a record moves it.
+    pub fn expected_state(&self) -> Option<BodyState> {
+        self.expected.map(BodyState::from_array)
     }
 
     /// Writes the file: the header, the records, the end record.
     pub fn write(&self, out: impl Write) -> io::Result<()> {
         let mut out = io::BufWriter::new(out);
-        writeln!(out, "{}", json_line(&self.header))?;
+        let mut lines = TrajectoryHash::default();
+        let mut line = |out: &mut io::BufWriter<_>, text: String| {
+            lines.add_line(text.as_bytes());
+            writeln!(out, "{text}")
+        };
+        line(&mut out, json_line(&self.header))?;
         for record in &self.records {
-            writeln!(out, "{}", json_line(record))?;
+            line(&mut out, json_line(record))?;
         }
         let end = Record::End {
             steps: self.steps,
             hash: self.hash.to_string(),
+            lines: Some(Box::new(lines.to_string())),
         };
         writeln!(out, "{}", json_line(&end))?;
         out.flush()

@@ -19,8 +19,8 @@ pub mod save;
 pub mod script;
 
 pub use format::{
-    AUTO_ORDERS, AutoRecord, BandRecord, FORMAT, Header, MAX_LINE_BYTES, MAX_STEPS, Record, Replay,
-    Settings, TrajectoryHash, VERSION,
+    AUTO_ORDERS, AutoRecord, BandRecord, CHECK_EVERY, FORMAT, Header, Integrity, MAX_LINE_BYTES,
+    MAX_STEPS, Record, Replay, Settings, TrajectoryHash, VERSION, made_by,
 };
 pub use link::{Link, LinkProblem};
 pub use read::ReplayError;

@@ -5,8 +5,8 @@ use std::fmt;
 use std::io::{BufRead, Read};
 
 use super::format::{
-    AUTO_ORDERS, BandRecord, FORMAT, Header, MAX_LINE_BYTES, MAX_STEPS, Record, Replay,
-    TrajectoryHash, VERSION,
+    AUTO_ORDERS, AutoRecord, BandRecord, FORMAT, Header, Integrity, MAX_LINE_BYTES, MAX_STEPS,
+    Record, Replay, TrajectoryHash, VERSION,
 };
 use crate::physics::ParamError;
 use crate::physics::body::STATE_LIMIT;
@@ -117,6 +117,12 @@ struct Reader {
     /// steps.
     reset_noted: bool,
     settings_noted: bool,
+    state_noted: bool,
+    auto_noted: bool,
+    /// The step the latest check record was for.
+    checked: Option<u64>,
+    /// The hash of the lines so far, for the end record's `lines`.
+    lines: TrajectoryHash,
 }
 
 impl Reader {
@@ -132,9 +138,13 @@ impl Reader {
                 .map_err(|error| at(format!("not a replay header: {error}")))?;
             check_header(&header).map_err(at)?;
             self.replay = Some(Replay::with_header(header));
+            self.lines.add_line(bytes);
             return Ok(());
         };
         let record: Record = serde_json::from_str(text).map_err(|error| at(error.to_string()))?;
+        if !matches!(record, Record::End { .. }) {
+            self.lines.add_line(bytes);
+        }
         let next = replay.steps + 1;
         let in_order = |step: u64, what: &str| {
             if step == next {
@@ -162,6 +172,32 @@ impl Reader {
                     .map_err(|error| at(format!("settings: {error}")))?;
                 replay.in_force = **settings;
             }
+            Record::State { step, ref state } => {
+                in_order(step, "a state")?;
+                if std::mem::replace(&mut self.state_noted, true) {
+                    return Err(at(format!("a second state record before step {step}")));
+                }
+                check_state("state", state).map_err(at)?;
+            }
+            Record::Auto { step, auto } => {
+                in_order(step, "auto's settings")?;
+                if std::mem::replace(&mut self.auto_noted, true) {
+                    return Err(at(format!("a second auto record before step {step}")));
+                }
+                check_auto(&auto).map_err(at)?;
+            }
+            Record::Check { step, ref state } => {
+                if step != replay.steps || step == 0 {
+                    return Err(at(format!(
+                        "a check of step {step} out of order: the latest step is {}",
+                        replay.steps
+                    )));
+                }
+                if self.checked.replace(step) == Some(step) {
+                    return Err(at(format!("a second check of step {step}")));
+                }
+                check_state("check", state).map_err(at)?;
+            }
             Record::Step { step, band } => {
                 in_order(step, "a step")?;
                 if replay.is_full() {
@@ -171,9 +207,12 @@ impl Reader {
                     check_band(&band).map_err(at)?;
                 }
                 replay.steps = step;
-                (self.reset_noted, self.settings_noted) = (false, false);
+                self.reset_noted = false;
+                self.settings_noted = false;
+                self.state_noted = false;
+                self.auto_noted = false;
             }
-            Record::End { steps, hash } => {
+            Record::End { steps, hash, lines } => {
                 if steps != replay.steps {
                     return Err(at(format!(
                         "the end record counts {steps} steps, the file holds {}",
@@ -185,6 +224,11 @@ impl Reader {
                     .flatten()
                     .ok_or_else(|| at(format!("hash '{hash}' is not 16 hex digits")))?;
                 replay.hash = TrajectoryHash(value);
+                replay.integrity = match lines {
+                    None => Integrity::Unknown,
+                    Some(lines) if *lines == self.lines.to_string() => Integrity::Intact,
+                    Some(_) => Integrity::Changed,
+                };
                 self.end = Some((steps, hash));
                 return Ok(());
             }
@@ -217,9 +261,9 @@ fn check_header(header: &Header) -> Result<(), String> {
             header.format
         ));
     }
-    if header.version != VERSION {
+    if !(1..=VERSION).contains(&header.version) {
         return Err(format!(
-            "replay format version {}; this build reads version {VERSION}",
+            "replay format version {}; this build reads versions 1 to {VERSION}",
             header.version
         ));
     }
@@ -227,7 +271,11 @@ fn check_header(header: &Header) -> Result<(), String> {
         .settings
         .validate()
         .map_err(|error| format!("settings: {error}"))?;
-    let auto = header.auto;
+    check_auto(&header.auto)?;
+    check_state("initial", &header.initial)
+}
+
+fn check_auto(auto: &AutoRecord) -> Result<(), String> {
     ParamError::check_positive("auto.tolerance", auto.tolerance)
         .map_err(|error| error.to_string())?;
     if !(AUTO_ORDERS.0..=AUTO_ORDERS.1).contains(&auto.order) {
@@ -239,16 +287,19 @@ fn check_header(header: &Header) -> Result<(), String> {
     if auto.max_substeps == 0 {
         return Err("auto.max_substeps must be at least 1, got 0".to_owned());
     }
-    if let Some(bad) = header
-        .initial
+    Ok(())
+}
+
+fn check_state(name: &str, state: &[f64; 6]) -> Result<(), String> {
+    match state
         .iter()
         .find(|v| !(v.is_finite() && v.abs() <= STATE_LIMIT))
     {
-        return Err(format!(
-            "initial: each component must be finite and within {STATE_LIMIT:e} of zero, got {bad:e}"
-        ));
+        Some(bad) => Err(format!(
+            "{name}: each component must be finite and within {STATE_LIMIT:e} of zero, got {bad:e}"
+        )),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 fn check_band(band: &BandRecord) -> Result<(), String> {

@@ -4,10 +4,25 @@
 //! as the game keeps them. With the recorded integrator it gives the game's states to the bit.
 
 use crate::physics::{
-    BandEnds, BodyState, EnergyLedger, Integrator, ParamError, StepInfo, Stepper,
+    AutoSettings, BandEnds, BodyState, EnergyLedger, Integrator, ParamError, StepInfo, Stepper,
 };
 
-use super::{Record, Replay, TrajectoryHash};
+use super::{Integrity, Record, Replay, TrajectoryHash, made_by};
+
+/// Where a replay first went its own way: the first check record it did not meet.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Departure {
+    /// The step the check was of.
+    pub step: u64,
+    /// The latest check the replay met (0: the start).
+    pub agreed_until: u64,
+    /// The latest record that put the box or the settings in place before `step`, and its step.
+    ///
+    /// "a reset", "a state", "settings"; None: only steps since the last agreement.
+    pub after: Option<(&'static str, u64)>,
+    /// The largest difference of a component, relative to the component's size (at least 1).
+    pub relative: f64,
+}
 
 pub struct ReplayRun<'a> {
     replay: &'a Replay,
@@ -31,6 +46,17 @@ pub struct ReplayRun<'a> {
     pub hash: TrajectoryHash,
     /// Steps of the integrator per recorded step (1: as the game stepped).
     substeps: u32,
+    /// The first check record the run did not meet, if any.
+    ///
+    /// Only a run as recorded is checked: the recorded integrators, one step a recorded step.
+    pub departure: Option<Departure>,
+    agreed_until: u64,
+    /// The latest record that put the box or the settings in place.
+    latest_change: Option<(&'static str, u64)>,
+    /// `auto`'s settings made from the recorded ones (`simulate --auto-order`, say).
+    auto_from: Option<Box<dyn Fn(AutoSettings) -> AutoSettings + 'a>>,
+    /// `auto`'s settings as recorded, in force now.
+    recorded_auto: AutoSettings,
 }
 
 impl<'a> ReplayRun<'a> {
@@ -54,7 +80,21 @@ impl<'a> ReplayRun<'a> {
             settled: None,
             hash: TrajectoryHash::default(),
             substeps: 1,
+            departure: None,
+            agreed_until: 0,
+            latest_change: None,
+            auto_from: None,
+            recorded_auto: replay.header.auto.into(),
         })
+    }
+
+    /// Steps with `auto`'s settings made from the recorded ones by `from`.
+    ///
+    /// They are made at the start and at every auto record.
+    pub fn with_auto(mut self, from: impl Fn(AutoSettings) -> AutoSettings + 'a) -> Self {
+        self.stepper.auto = from(self.stepper.auto);
+        self.auto_from = Some(Box::new(from));
+        self
     }
 
     /// Splits each recorded step into `substeps` equal steps with the same band.
@@ -72,14 +112,15 @@ impl<'a> ReplayRun<'a> {
             let record = self.replay.records.get(self.next)?;
             self.next += 1;
             match record {
-                Record::Reset { .. } => {
+                Record::Reset { step } => {
                     self.stepper.state = BodyState::from_array(self.replay.header.initial);
                     self.stepper.band = None;
                     self.settled = None;
                     self.refused = None;
                     self.fallbacks = 0;
+                    self.latest_change = Some(("a reset", *step));
                 }
-                Record::Settings { settings, .. } => {
+                Record::Settings { settings, step } => {
                     // Checked when the file was read.
                     if let Ok(mass) = settings.params().mass_properties() {
                         self.stepper.mass = mass;
@@ -87,7 +128,21 @@ impl<'a> ReplayRun<'a> {
                     self.stepper.params = settings.params();
                     self.stepper.integrator = self.integrator.unwrap_or(settings.integrator);
                     self.dt = settings.dt;
+                    self.latest_change = Some(("settings", *step));
                 }
+                Record::State { state, step } => {
+                    self.stepper.state = BodyState::from_array(**state);
+                    self.latest_change = Some(("a state", *step));
+                }
+                Record::Auto { auto, .. } => {
+                    let recorded = AutoSettings::from(*auto);
+                    self.recorded_auto = recorded;
+                    self.stepper.auto = match &self.auto_from {
+                        Some(from) => from(recorded),
+                        None => recorded,
+                    };
+                }
+                Record::Check { step, state } => self.check(*step, state),
                 Record::Step { band, .. } => {
                     return Some(self.step_with(band.map(BandEnds::from)));
                 }
@@ -123,6 +178,109 @@ impl<'a> ReplayRun<'a> {
         self.settled = Some(self.stepper.energy());
         self.hash.add(&self.stepper.state);
         info
+    }
+
+    /// Compares the state with a check record, and notes the first one it does not meet.
+    ///
+    /// Only a run as recorded can meet them: another integrator or substeps go their own way.
+    fn check(&mut self, step: u64, recorded: &[f64; 6]) {
+        let as_recorded = self.integrator.is_none()
+            && self.substeps == 1
+            && self.stepper.auto == self.recorded_auto;
+        if !as_recorded || self.departure.is_some() {
+            return;
+        }
+        let now = self.stepper.state.to_array();
+        if now.map(f64::to_bits) == recorded.map(f64::to_bits) {
+            self.agreed_until = step;
+            return;
+        }
+        let relative = now
+            .iter()
+            .zip(recorded)
+            .map(|(a, b)| (a - b).abs() / a.abs().max(b.abs()).max(1.0))
+            .fold(0.0, f64::max);
+        self.departure = Some(Departure {
+            step,
+            agreed_until: self.agreed_until,
+            after: self
+                .latest_change
+                .filter(|&(_, changed)| changed > self.agreed_until),
+            relative,
+        });
+    }
+
+    /// Says why the run did not reach the recorded hash, for a replay that did not.
+    ///
+    /// Only a file read back as written, made by another version or platform, can blame the
+    /// build or the machine; a file whose own records contradict each other says where.
+    pub fn explain_mismatch(&self) -> String {
+        let replay = self.replay;
+        let states = format!(
+            "the states differ from the recorded game's (hash {}, recorded {})",
+            self.hash, replay.hash
+        );
+        if replay.integrity == Integrity::Changed {
+            return format!(
+                "{states}: the file was changed after it was written (its lines do not hash to \
+                 its end record's `lines`)"
+            );
+        }
+        let made_here = replay.header.made_by.as_deref() == Some(made_by().as_str());
+        let where_ = match self.departure {
+            Some(departure) => {
+                let after = departure
+                    .after
+                    .map(|(what, step)| format!(", after {what} before step {step}"))
+                    .unwrap_or_default();
+                format!(
+                    "; they first differ at step {} (the recorded states held to step {}{after}, \
+                     by {:.1e} of a component)",
+                    departure.step, departure.agreed_until, departure.relative
+                )
+            }
+            None => String::new(),
+        };
+        // A jump, not a drift of the last bits: the record before it does not hold the game.
+        let jumped = self
+            .departure
+            .is_some_and(|departure| departure.after.is_some() && departure.relative > 1e-6);
+        if made_here || jumped {
+            let culprit = match self.departure.and_then(|departure| departure.after) {
+                Some(("a reset", step)) if jumped => {
+                    format!("a reset before step {step} does not put the box where the game had it")
+                }
+                Some((what, step)) if jumped => format!(
+                    "from step {step} (where {what} record stands) the box is not where the game \
+                     had it"
+                ),
+                _ => "the records do not hold the game that was played".to_owned(),
+            };
+            let maker = if made_here {
+                format!(
+                    " (written by this version on this platform, {}, which steps the same \
+                     every time)",
+                    made_by()
+                )
+            } else {
+                String::new()
+            };
+            return format!(
+                "{states}{where_}: the file's own records contradict each other: {culprit}{maker}"
+            );
+        }
+        let maker = replay
+            .header
+            .made_by
+            .as_deref()
+            .map_or("an earlier build (format version 1)".to_owned(), |by| {
+                format!("version {by}")
+            });
+        format!(
+            "{states}{where_}: the file was written by {maker}; this build ({}) or this machine \
+             computes the steps differently",
+            made_by()
+        )
     }
 
     /// Returns the ledger's residual after the latest step: the integrator's energy error.

@@ -21,7 +21,7 @@ use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
-use crate::game::shared::{DockHidden, Mode, Overlays, SceneName};
+use crate::game::shared::{DockHidden, Mode, Overlays, SceneName, StatusMessage};
 use crate::game::simulation::{
     Band, Bodies, EnergyBooks, ResetScene, RigidBodyQueryReadOnly, RigidBox, StepCount,
     acting_band, rigid_box, set_fixed_step,
@@ -283,8 +283,11 @@ fn restore_the_game(world: &mut World) {
             world.entity_mut(body).insert(rigid_box(mass, state));
         }
     }
-    // A recording from here on starts where the game was.
-    world.resource_mut::<Recorder>().restart();
+    // The recorder notes the box put back as it notes any other change, and goes on.
+    if let Some(goes_on) = world.resource::<Recorder>().goes_on() {
+        info!("{goes_on}");
+        world.resource_mut::<StatusMessage>().0 = Some(goes_on);
+    }
 }
 
 /// Checks the chapter's task, after the frame's steps, against what the steps did.

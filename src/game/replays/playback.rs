@@ -5,8 +5,9 @@
 //!
 //! A replay can also be opened while the game runs: dropped on the window, or in the browser
 //! chosen with the open control or dropped on the page. The scene is reset to the replay's
-//! start and the recorder starts over with it, so that at the replay's end the two hashes say
-//! whether the game stepped to the recorded bits.
+//! start; the recorder goes on (it notes the box put there), and the playback hashes the
+//! states the game has from there, so that at the replay's end the two hashes say whether the
+//! game stepped to the recorded bits.
 
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
@@ -16,7 +17,9 @@ use crate::game::replays::recording::Recorder;
 use crate::game::schedule::{AfterStepsSystems, GameSystems, PhysicsSystems};
 use crate::game::shared::SceneName;
 use crate::game::shared::StatusMessage;
-use crate::game::simulation::{Band, ResetScene, RigidBox, rigid_box, set_fixed_step};
+use crate::game::simulation::{
+    Band, Bodies, ResetScene, RigidBox, placed, rigid_box, set_fixed_step,
+};
 use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams};
 use crate::replay::{Record, Replay, TrajectoryHash};
 
@@ -35,7 +38,13 @@ impl Plugin for PlaybackPlugin {
                         .in_set(AfterStepsSystems::Conclude),
                 ),
             )
-            .add_systems(FixedUpdate, play_step.in_set(PhysicsSystems::Playback));
+            .add_systems(
+                FixedUpdate,
+                (
+                    play_step.in_set(PhysicsSystems::Playback),
+                    hash_the_played_state.in_set(PhysicsSystems::AfterStep),
+                ),
+            );
         // A replay file opened is input: it acts on the very next step.
         #[cfg(not(target_arch = "wasm32"))]
         app.add_systems(
@@ -95,6 +104,9 @@ pub struct Playback {
     next: usize,
     /// Steps played so far.
     pub played: u64,
+    /// The hash of the states the game had after each step played.
+    hash: TrajectoryHash,
+    hashed: u64,
     /// How the latest playback ended.
     pub ended: Option<PlaybackEnd>,
 }
@@ -149,6 +161,7 @@ fn take_over_on_press(mut actions: MessageReader<PointerAction>, mut playback: R
 struct RecordedSettings<'w> {
     params: ResMut<'w, SceneParams>,
     integrator: ResMut<'w, Integrator>,
+    auto: ResMut<'w, AutoSettings>,
     time: ResMut<'w, Time<Fixed>>,
 }
 
@@ -160,7 +173,6 @@ fn play_step(
     mut commands: Commands,
     mut playback: ResMut<Playback>,
     mut settings: RecordedSettings,
-    recorder: Res<Recorder>,
     boxes: Query<Entity, With<RigidBox>>,
     mut bands: Query<(Entity, &mut Band)>,
 ) {
@@ -184,14 +196,11 @@ fn play_step(
             .and_then(|replay| replay.records.get(next))
             .cloned()
         else {
-            // The recorder started with the playback (`of` before the game's first step,
-            // `open` restarts it), so its hash is of the states the game had since.
-            let recorded = playback.replay.take().map(|replay| replay.hash);
-            if let (Some(recorded), Some(game)) = (recorded, recorder.replay.as_ref()) {
+            if let Some(replay) = playback.replay.take() {
                 playback.ended = Some(PlaybackEnd::Finished {
-                    steps: game.steps,
-                    hash: game.hash,
-                    recorded,
+                    steps: playback.hashed,
+                    hash: playback.hash,
+                    recorded: replay.hash,
                 });
             }
             return;
@@ -199,10 +208,23 @@ fn play_step(
         playback.next += 1;
         match record {
             Record::Reset { .. } => {
-                // Its observers put the box, the books and the bands back before this step.
+                // Its observers put the box, the books and the bands back before this step;
+                // the replay's reset puts the box at the replay's start, not the game's.
                 commands.trigger(ResetScene);
+                if let Some(replay) = playback.replay.as_ref() {
+                    let start = BodyState::from_array(replay.header.initial);
+                    commands.entity(body).insert(placed(start));
+                }
                 reset = true;
             }
+            Record::State { state, .. } => {
+                commands
+                    .entity(body)
+                    .insert(placed(BodyState::from_array(*state)));
+            }
+            Record::Auto { auto, .. } => *settings.auto = auto.into(),
+            // What the game had after a step: the playback's hash says it at the end.
+            Record::Check { .. } => {}
             Record::Settings {
                 settings: recorded, ..
             } => {
@@ -235,6 +257,17 @@ fn play_step(
     }
 }
 
+/// Adds the state a played step left to the playback's hash.
+fn hash_the_played_state(mut playback: ResMut<Playback>, boxes: Bodies) {
+    if playback.is_playing()
+        && playback.hashed < playback.played
+        && let Ok(body) = boxes.single()
+    {
+        playback.hashed = playback.played;
+        playback.hash.add(&body.state());
+    }
+}
+
 /// Places the step's band, and no other.
 ///
 /// After a reset the old bands are the reset's to remove.
@@ -264,9 +297,9 @@ fn place_band(
 
 /// Opens `replay` in the running game and plays it from its first step.
 ///
-/// The scene is reset, the replay's settings put in place and the recorder started over. The
-/// caller has held the replay to the game's ranges (`Replay::check_playable`; a scene's script
-/// is made in them).
+/// The scene is reset and the replay's settings put in place; the recorder goes on, and the
+/// player is told so. The caller has held the replay to the game's ranges
+/// (`Replay::check_playable`; a scene's script is made in them).
 pub fn open(world: &mut World, replay: Replay) {
     let header = &replay.header;
     let params = header.settings.params();
@@ -278,9 +311,12 @@ pub fn open(world: &mut World, replay: Replay) {
     world.insert_resource(integrator);
     world.insert_resource(auto);
     set_fixed_step(&mut world.resource_mut::<Time<Fixed>>(), dt);
-    world.resource_mut::<Recorder>().restart();
     world.insert_resource(SceneName(replay.header.scene.clone()));
     world.insert_resource(Playback::of(replay));
+    if let Some(goes_on) = world.resource::<Recorder>().goes_on() {
+        info!("{goes_on}");
+        world.resource_mut::<StatusMessage>().0 = Some(goes_on);
+    }
 }
 
 /// Plays a replay file's text the player opened, or says why it cannot be played.
@@ -294,7 +330,12 @@ fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, Stri
             let message = format!("playing {name} ({} steps)", replay.steps);
             commands.queue(move |world: &mut World| {
                 open(world, replay);
-                world.resource_mut::<StatusMessage>().0 = Some(message);
+                let goes_on = world.resource::<Recorder>().goes_on();
+                let said = match goes_on {
+                    Some(goes_on) => format!("{message}; {goes_on}"),
+                    None => message,
+                };
+                world.resource_mut::<StatusMessage>().0 = Some(said);
             });
         }
         Err(error) => {

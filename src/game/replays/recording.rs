@@ -2,9 +2,11 @@
 //! the settings in force, the resets), kept as a [`Replay`] from the first step on, so that a
 //! game can be saved at any moment and stepped again to the bit (`simulate --replay`).
 //!
-//! It reads the step's inputs as the step will take them (the band that acts, the settings in
-//! force) and the state after it, so it sees exactly what the integrator saw; it never writes
-//! anything the physics reads. Saving writes a new file beside the target and renames it into
+//! It reads the step's inputs as the step will take them (the band that acts, the settings and
+//! `auto`'s settings in force, the state the step starts from) and the state after it, so it
+//! sees exactly what the integrator saw, whatever put it there: a key, the panel, a link, a
+//! scene, learn mode or a replay opened. It never writes anything the physics reads, and it
+//! never starts over: one recording holds the whole session. Saving writes a new file beside the target and renames it into
 //! place ([`crate::replay::save`]). `play --record FILE` saves to FILE when the game ends (the
 //! window closed, Ctrl-C, or SIGTERM); the save control saves the game so far at any time.
 
@@ -69,19 +71,29 @@ impl Recorder {
         }
     }
 
-    /// Starts a new recording from the next step on, to the same target.
-    ///
-    /// A replay opened in the game starts one, and so does leaving learn mode.
-    pub fn restart(&mut self) {
-        *self = Self {
-            #[cfg(not(target_arch = "wasm32"))]
-            target: self.target.take(),
-            ..default()
-        };
-    }
-
     pub fn steps(&self) -> u64 {
         self.replay.as_ref().map_or(0, |replay| replay.steps)
+    }
+
+    /// Returns what to tell the player when the game changes under the recording.
+    ///
+    /// A replay, a scene or a link opened, learn mode left: the recording goes on, and this
+    /// says where it goes.
+    pub fn goes_on(&self) -> Option<String> {
+        let steps = self.steps();
+        if steps == 0 {
+            return None;
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        let place = match &self.target {
+            Some(target) => format!("saved to {} when the game ends", target.display()),
+            None => "S saves it".to_owned(),
+        };
+        #[cfg(target_arch = "wasm32")]
+        let place = "S downloads it".to_owned();
+        Some(format!(
+            "the recording goes on: its {steps} steps so far are kept ({place})"
+        ))
     }
 }
 
@@ -93,7 +105,9 @@ fn note_reset(_reset: On<ResetScene>, mut recorder: ResMut<Recorder>) {
     recorder.reset_pending = true;
 }
 
-/// Notes the settings in force and the band the step will use, before the step.
+/// Notes what the step will take, before it: settings, start state and band.
+///
+/// Each is recorded only when it is not what the replay would have there anyway.
 fn note_step_inputs(
     mut recorder: ResMut<Recorder>,
     step: StepSettings,
@@ -121,6 +135,8 @@ fn note_step_inputs(
         replay.push_reset();
     }
     replay.push_settings(settings);
+    replay.push_auto(*step.auto);
+    replay.push_state(&body.state());
     recorder.band = acting_band(body.entity, &bands);
     recorder.step_noted = true;
 }
@@ -133,7 +149,9 @@ fn note_step_result(mut recorder: ResMut<Recorder>, boxes: Bodies) {
     }
     let band = recorder.band.take();
     if let (Some(replay), Ok(body)) = (recorder.replay.as_mut(), boxes.single()) {
-        replay.push_step(band, &body.state());
+        let after = body.state();
+        replay.push_step(band, &after);
+        replay.push_check_if_due(&after);
     }
 }
 

@@ -1,8 +1,8 @@
 //! A recorded game on a contender (`report --replay FILE --peers`): each recorded step taken
 //! as one or more fixed steps with the recorded band. The peers cannot change a scene's
 //! parameters in place, so a settings change builds the contender again from the state it
-//! had, and a reset from the replay's start; a change of integrator alone changes nothing for
-//! them.
+//! had, a reset from the replay's start and a state record from that state; a change of
+//! integrator alone changes nothing for them.
 
 use std::time::Instant;
 
@@ -68,6 +68,13 @@ impl<'a, C: Contender> PeerReplay<'a, C> {
                         self.contender.set_band(self.band);
                     }
                 }
+                Record::State { state, .. } => {
+                    let state = BodyState::from_array(**state);
+                    self.contender = build(&self.settings, self.substeps, state);
+                    self.contender.set_band(self.band);
+                }
+                // Our `auto`'s settings, and the recorder's checks: nothing for a peer.
+                Record::Auto { .. } | Record::Check { .. } => {}
                 Record::Step { band, .. } => {
                     let band = band.map(BandEnds::from);
                     if band != self.band {
