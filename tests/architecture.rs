@@ -277,7 +277,7 @@ fn each_room_imports_only_the_rooms_under_it() {
 /// wiring imports. So a new card is its folder and its lines in `game/mod.rs`, and nothing here.
 const GAME_LAYERS: [&[&str]; 9] = [
     &["schedule", "shared", "theme", "web"],
-    &["simulation"],
+    &["simulation", "budget"],
     &["ghosts", "layout", "pointer", "camera", "stability"],
     &["replays"],
     &["learn"],

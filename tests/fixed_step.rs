@@ -451,3 +451,65 @@ fn fall_backs_are_counted_a_step_each() {
     assert!(!stats.fell_back);
     assert_eq!(stats.fallbacks, last);
 }
+
+/// The heaviest settings (4096 Hz, ×16, the ghosts and the plot on, k = 1e12) with frames of
+/// a quarter second: a frame owes 16,384 steps, and with the game's wall budget each update
+/// runs at most the budget's steps, the status line says the game falls behind, and a pause
+/// sent in one frame holds from the next (issue 51).
+#[test]
+fn the_heaviest_settings_keep_each_frame_within_its_budget() {
+    use rubber_band_box::game::input::controls::{Action, Parameter};
+    let mut game = Game::new(Duration::from_millis(250));
+    game.world().insert_resource(FrameBudget::default());
+    for action in [
+        Action::Set(Parameter::Stiffness, 1e12),
+        Action::ToggleGhosts,
+        Action::TogglePlot,
+    ]
+    .into_iter()
+    .chain([Action::MoreSteps; 6])
+    .chain([Action::Faster; 4])
+    {
+        game.world().write_message(action);
+    }
+    game.update(1);
+    assert_eq!(game.world().resource::<SceneParams>().step_rate_hz, 4096.0);
+    game.press_at(DVec2::new(200.0, 100.0));
+    for _ in 0..8 {
+        let before = game.steps();
+        game.update(1);
+        let taken = game.steps() - before;
+        assert!(
+            (1..=u64::from(FrameBudget::MAX_STEPS)).contains(&taken),
+            "{taken} steps in one update"
+        );
+        let budget = *game.world().resource::<FrameBudget>();
+        assert!(
+            budget.dropped > Duration::ZERO,
+            "the time owed past the budget is dropped"
+        );
+    }
+    assert!(game.line("HUD Status").contains("behind"));
+    game.world().write_message(Action::TogglePause);
+    game.update(1);
+    let paused_at = game.steps();
+    game.update(3);
+    assert_eq!(game.steps(), paused_at, "a pause holds from the next frame");
+}
+
+/// Two presses of one key between two frames are two actions: the keys are read as
+/// messages, not as "just pressed" (a slow frame never eats a press).
+#[test]
+fn every_key_press_counts_even_several_in_one_frame() {
+    let mut game = Game::stepping();
+    let k = game.world().resource::<SceneParams>().stiffness;
+    for _ in 0..3 {
+        game.tap_key(KeyCode::BracketRight);
+    }
+    game.update(1);
+    let now = game.world().resource::<SceneParams>().stiffness;
+    assert!(
+        (now / k - 1e3).abs() < 1e-6,
+        "k {k} to {now}: three presses, ×1000"
+    );
+}

@@ -5,10 +5,7 @@
 
 mod common;
 
-use bevy::camera::{ManualTextureViewHandle, NormalizedRenderTarget};
-use bevy::picking::backend::HitData;
-use bevy::picking::events::{Click, Pointer, Press, Release};
-use bevy::picking::pointer::{Location, PointerButton, PointerId};
+use bevy::picking::pointer::PointerId;
 use bevy::ui_widgets::{SetSliderValue, SliderValue, SliderValueChange};
 
 use common::*;
@@ -43,47 +40,6 @@ fn title(game: &mut Game, card: Card) -> Entity {
 
 fn open(game: &mut Game, card: Card) -> bool {
     game.world().resource::<Cards>().is_open(card)
-}
-
-/// What a mouse click (or a finger's tap, `PointerId::Touch`) on `entity` sends through picking.
-fn click(game: &mut Game, entity: Entity, pointer: PointerId) {
-    let location = Location {
-        target: NormalizedRenderTarget::TextureView(ManualTextureViewHandle(0)),
-        position: Vec2::new(900.0, 40.0),
-    };
-    let hit = HitData::new(Entity::PLACEHOLDER, 0.0, None, None);
-    let button = PointerButton::Primary;
-    let world = game.world();
-    world.trigger(Pointer::new(
-        pointer,
-        location.clone(),
-        Press {
-            button,
-            hit: hit.clone(),
-            count: 1,
-        },
-        entity,
-    ));
-    world.flush();
-    world.trigger(Pointer::new(
-        pointer,
-        location.clone(),
-        Click {
-            button,
-            hit: hit.clone(),
-            duration: Duration::from_millis(80),
-            count: 1,
-        },
-        entity,
-    ));
-    world.trigger(Pointer::new(
-        pointer,
-        location,
-        Release { button, hit },
-        entity,
-    ));
-    world.flush();
-    game.update(1);
 }
 
 #[test]

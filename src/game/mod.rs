@@ -10,6 +10,7 @@
 //! - [`layout`]: the window's regions: the scene's viewport, the status and hint lines, the
 //!   dock of instrument cards;
 //! - [`simulation`]: the physics plugin that steps the core in `FixedUpdate`;
+//! - [`budget`]: the wall time and the steps one frame's fixed loop may take;
 //! - [`mod@pointer`]: the mouse and the finger, which hold the band;
 //! - [`camera`]: what the scene shows (home, following the box, zoomed and panned) and the
 //!   map between the window and the world;
@@ -27,6 +28,7 @@
 //! - `web`, in the browser only: the page's side (downloads, files opened, what the page
 //!   reads back).
 
+pub mod budget;
 pub mod camera;
 pub mod energy;
 pub mod ghosts;
@@ -62,7 +64,7 @@ impl Plugin for GameLogicPlugin {
             shared::SharedPlugin,
             theme::ThemePlugin,
             layout::LayoutPlugin,
-            simulation::SimulationPlugin,
+            (simulation::SimulationPlugin, budget::BudgetPlugin),
             (pointer::PointerPlugin, camera::CameraPlugin),
             input::controls::ControlsPlugin,
             replays::recording::RecordingPlugin,

@@ -42,6 +42,8 @@ pub enum GameSystems {
     Controls,
     /// What derives from the settings the controls wrote (the fixed clock's step).
     ApplySettings,
+    /// The frame's budget for fixed steps opened, just before the loop (`budget`).
+    Budget,
 }
 
 /// The fixed step, in this order.
@@ -65,6 +67,8 @@ pub enum PhysicsSystems {
     ///
     /// The readers are the recorder (its state after the step) and the Energy card's history.
     AfterStep,
+    /// The frame's budget: the loop stopped once the frame's steps have taken it (`budget`).
+    Budget,
 }
 
 /// After the fixed loop, each frame.
@@ -126,6 +130,7 @@ pub fn order_the_physics(app: &mut App) {
             PhysicsSystems::Observe,
             PhysicsSystems::Step,
             PhysicsSystems::AfterStep,
+            PhysicsSystems::Budget,
         )
             .chain(),
     )
@@ -149,6 +154,7 @@ pub fn order_the_frame(app: &mut App) {
                 GameSystems::Input,
                 GameSystems::Controls,
                 GameSystems::ApplySettings,
+                GameSystems::Budget,
             )
                 .chain()
                 .in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),

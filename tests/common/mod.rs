@@ -22,6 +22,7 @@ pub use bevy::window::{
 };
 
 pub use rubber_band_box::game::GameLogicPlugin;
+pub use rubber_band_box::game::budget::FrameBudget;
 pub use rubber_band_box::game::camera::SceneCamera;
 pub use rubber_band_box::game::energy::EnergyHistory;
 pub use rubber_band_box::game::input::controls::CYCLE_INTEGRATOR;
@@ -88,6 +89,10 @@ impl Game {
             GameLogicPlugin,
         ))
         .insert_resource(TimeUpdateStrategy::ManualDuration(frame))
+        // The manual clock's frames keep every step they owe, however long the steps take on
+        // a loaded machine: the step counts a test asserts never vary (a test of the budget
+        // puts the wall back).
+        .insert_resource(FrameBudget::steps_only())
         .init_resource::<AccumulatorAudit>()
         .add_systems(FixedUpdate, audit_accumulators.after(PhysicsSystems::Step));
 
@@ -423,12 +428,19 @@ impl Game {
     /// applied as [`Game::with`] does.
     pub fn keeping_trajectory(frame: Duration, extra: impl FnOnce(&mut App)) -> Self {
         Self::with(frame, |app| {
-            app.init_resource::<Trajectory>()
-                .add_systems(FixedUpdate, keep_trajectory.after(PhysicsSystems::Step));
+            keep_the_trajectory(app);
             extra(app);
         })
     }
 }
+
+/// Keeps the [`Trajectory`] of the app's box.
+pub fn keep_the_trajectory(app: &mut App) {
+    app.init_resource::<Trajectory>()
+        .add_systems(FixedUpdate, keep_trajectory.after(PhysicsSystems::Step));
+}
+
+impl Game {}
 
 /// States as their bits, for comparing trajectories exactly.
 pub fn bits(states: &[BodyState]) -> Vec<[u64; 6]> {
@@ -548,4 +560,49 @@ pub fn binary(subcommand: &str) -> std::process::Command {
     let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_rubber_band_box"));
     command.arg(subcommand);
     command
+}
+
+/// What a mouse click (or a finger's tap, `PointerId::Touch`) on `entity` sends through picking.
+pub fn click(game: &mut Game, entity: Entity, pointer: bevy::picking::pointer::PointerId) {
+    use bevy::camera::{ManualTextureViewHandle, NormalizedRenderTarget};
+    use bevy::picking::backend::HitData;
+    use bevy::picking::events::{Click, Pointer, Press, Release};
+    use bevy::picking::pointer::{Location, PointerButton};
+    let location = Location {
+        target: NormalizedRenderTarget::TextureView(ManualTextureViewHandle(0)),
+        position: Vec2::new(900.0, 40.0),
+    };
+    let hit = HitData::new(Entity::PLACEHOLDER, 0.0, None, None);
+    let button = PointerButton::Primary;
+    let world = game.world();
+    world.trigger(Pointer::new(
+        pointer,
+        location.clone(),
+        Press {
+            button,
+            hit: hit.clone(),
+            count: 1,
+        },
+        entity,
+    ));
+    world.flush();
+    world.trigger(Pointer::new(
+        pointer,
+        location.clone(),
+        Click {
+            button,
+            hit: hit.clone(),
+            duration: Duration::from_millis(80),
+            count: 1,
+        },
+        entity,
+    ));
+    world.trigger(Pointer::new(
+        pointer,
+        location,
+        Release { button, hit },
+        entity,
+    ));
+    world.flush();
+    game.update(1);
 }

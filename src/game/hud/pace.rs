@@ -3,6 +3,8 @@
 
 use bevy::prelude::*;
 
+use crate::game::budget::FrameBudget;
+
 /// The share of the set pace below which the status line says the game falls behind.
 const BEHIND: f64 = 0.95;
 
@@ -10,8 +12,9 @@ const BEHIND: f64 = 0.95;
 ///
 /// The set pace is the wall clock times the time scale. 1 while every frame's time reaches the
 /// simulation. Bevy's virtual clock takes at most 250 ms from a frame (`Time<Virtual>`'s
-/// `max_delta`): when frames (their fixed steps, their drawing) take longer, the simulated
-/// time falls behind the wall clock, and this says by how much.
+/// `max_delta`), and a frame's fixed steps stop at its budget (`budget`), dropping the time
+/// still owed: when frames (their fixed steps, their drawing) take longer, the simulated time
+/// falls behind the wall clock, and this says by how much.
 #[derive(Resource, Debug, Clone, Copy, PartialEq)]
 pub struct Pace(pub f64);
 
@@ -33,6 +36,7 @@ pub fn behind(pace: f64, time_scale: f64, paused: bool) -> Option<String> {
 pub(super) fn measure_pace(
     real: Res<Time<Real>>,
     virtual_time: Res<Time<Virtual>>,
+    budget: Res<FrameBudget>,
     mut pace: ResMut<Pace>,
 ) {
     let wall = real.delta_secs_f64();
@@ -40,7 +44,8 @@ pub(super) fn measure_pace(
     if virtual_time.is_paused() || set <= 0.0 {
         return;
     }
-    let kept = (virtual_time.delta_secs_f64() / set).clamp(0.0, 1.0);
+    let stepped = virtual_time.delta_secs_f64() - budget.dropped.as_secs_f64();
+    let kept = (stepped / set).clamp(0.0, 1.0);
     let weight = 1.0 - (-wall).exp();
     let next = pace.0 + (kept - pace.0) * weight;
     if pace.0 != next {

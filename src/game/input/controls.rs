@@ -6,6 +6,8 @@
 //! is not applied, and the HUD's status line says why.
 
 use bevy::ecs::system::SystemParam;
+use bevy::input::ButtonState;
+use bevy::input::keyboard::KeyboardInput;
 use bevy::prelude::*;
 
 use crate::game::camera::HomeView;
@@ -358,12 +360,21 @@ pub fn key_hint() -> String {
     labels.join(" ")
 }
 
-/// Sends the action of each key pressed this frame.
-fn keys_to_actions(keys: Res<ButtonInput<KeyCode>>, mut actions: MessageWriter<Action>) {
-    for control in &CONTROLS {
-        for (key, action) in control.keys.iter().zip(control.actions) {
-            if keys.just_pressed(*key) {
-                actions.write(*action);
+/// Sends the action of every key press since the last frame, in the order pressed.
+///
+/// It reads the keyboard's messages rather than "just pressed": two presses of one key between
+/// two frames (a slow frame, a fast typist) are two actions. A key held down and repeating
+/// sends one.
+fn keys_to_actions(mut keys: MessageReader<KeyboardInput>, mut actions: MessageWriter<Action>) {
+    for press in keys
+        .read()
+        .filter(|key| key.state == ButtonState::Pressed && !key.repeat)
+    {
+        for control in &CONTROLS {
+            for (key, action) in control.keys.iter().zip(control.actions) {
+                if *key == press.key_code {
+                    actions.write(*action);
+                }
             }
         }
     }
