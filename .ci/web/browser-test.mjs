@@ -7,7 +7,7 @@
 // native build (NATIVE_BINARY, `simulate --replay FILE --hash`) steps to the page's hash; and
 // the fixture opened in the page with the O key plays back to its recorded hash. Then the
 // stiff scene (3) with the ghosts (G) and the plot (P), the Controls card's buttons, the
-// stability card; then phones (touch); last, a monkey of random input.
+// stability card; last, phones (touch). The monkey of random input is .ci/web/monkey.mjs.
 // The window is divided into regions: a scene column (a status line, the scene's viewport, a
 // hint) and a dock of cards, at the side of a wide window, a bottom sheet of a tall one (its
 // titles a row of tabs, one card open at a time). The page publishes where each thing lies
@@ -1018,121 +1018,6 @@ try {
       }
     }
     if (name === "phone-390") await walkChapters(phone, where, finger, (label) => snap(label));
-    await context.close();
-  }
-  // The monkey (issue 51): a minute of random input from a fixed seed (MONKEY_SEED; a new one
-  // for as long as one likes: MONKEY_SEED=7 MONKEY_SECONDS=600 node .ci/web/browser-test.mjs),
-  // through the real pointer, finger, wheel and keys, on the page and off it, every panel
-  // button, and resizes from a phone's to a desktop's. Sampled every few inputs: the page's
-  // published box finite and in its viewport (the camera may take a moment to catch a box put
-  // far away). At the end S saves the game, which must step natively and in the page to the
-  // hash it ends with. A failure prints the seed and its inputs.
-  {
-    const seed = Number(process.env.MONKEY_SEED ?? 1);
-    const seconds = Number(process.env.MONKEY_SECONDS ?? 60);
-    let state = seed >>> 0;
-    // mulberry32: the same inputs for a seed on every machine.
-    const random = () => {
-      state = (state + 0x6d2b79f5) >>> 0;
-      let t = state;
-      t = Math.imul(t ^ (t >>> 15), t | 1);
-      t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-      return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-    };
-    const pick = (list) => list[Math.floor(random() * list.length)];
-    const sizes = [[960, 720], [390, 844], [844, 390], [1280, 720], [320, 480]];
-    // Every key of the controls but S (the download is the end's) and O (a file chooser).
-    const keys = ["Space", "n", "r", "i", "[", "]", "-", "=", "PageDown", "PageUp", "v", "t", "g", "p", "h", "f",
-      "1", "2", "3", "4", "5", "6", "7", "8", "9", "0", "c", "u", "l", "Escape", "Tab", "ArrowLeft", "z"];
-    const context = await browser.newContext({ viewport: { width: 960, height: 720 }, hasTouch: true, deviceScaleFactor: 1 });
-    const p = await context.newPage();
-    await p.addInitScript(countFrames);
-    p.on("pageerror", (e) => { if (!String(e).includes("Using exceptions for control flow")) errors.push(String(e)); });
-    await p.goto(url);
-    await until(p, () => Boolean(window.rubberBandBox?.panel?.instruments), null, 120000);
-    const cdp = await context.newCDPSession(p);
-    const finger = fingerOf(p, cdp);
-    const script = [];
-    let size = [960, 720], held = false, touching = false, samples = 0, outOfView = 0, worst = 0, broken = null;
-    const end = Date.now() + seconds * 1000;
-    for (let input = 0; Date.now() < end && !broken; input++) {
-      const r = random();
-      const at = [(random() * 1.3 - 0.15) * size[0], (random() * 1.3 - 0.15) * size[1]];
-      if (r < 0.3) {
-        if (held && random() < 0.3) { await p.mouse.up(); held = false; script.push("mouse up"); }
-        else {
-          await p.mouse.move(...at);
-          if (!held && random() < 0.4) { await p.mouse.down(); held = true; }
-          script.push(`mouse at ${at.map(Math.round)} held ${held}`);
-        }
-      } else if (r < 0.45) {
-        const phase = touching ? pick(["move", "move", "up"]) : "down";
-        if (phase === "down") { await finger.down(...at); touching = true; }
-        else if (phase === "move") await finger.move(...at);
-        else { await finger.up(); touching = false; }
-        script.push(`finger ${phase} at ${at.map(Math.round)}`);
-      } else if (r < 0.5) {
-        const dy = (random() - 0.5) * 600;
-        await p.mouse.wheel(0, dy);
-        script.push(`wheel ${Math.round(dy)}`);
-      } else if (r < 0.75) {
-        const key = pick(keys);
-        const times = 1 + Math.floor(random() * 3);
-        for (let k = 0; k < times; k++) await p.keyboard.press(key);
-        script.push(`key ${key} x${times}`);
-      } else if (r < 0.9) {
-        const s = await api(p);
-        const labels = Object.keys(s.panel).filter((label) => label !== "save" && label !== "open");
-        if (labels.length) {
-          const label = pick(labels);
-          const point = pressPoint(s, label) ?? centre(s.panel[label]);
-          await p.mouse.click(...point);
-          script.push(`click ${label}`);
-        }
-      } else if (r < 0.93) {
-        size = pick(sizes);
-        await p.setViewportSize({ width: size[0], height: size[1] });
-        script.push(`resize ${size}`);
-      }
-      await p.waitForTimeout(Math.floor(random() * 80));
-      if (input % 8 === 0) {
-        const s = await api(p);
-        samples++;
-        const finite = (s.box ?? []).every((c) => c.every(Number.isFinite)) && (s.viewport ?? []).every(Number.isFinite);
-        if (!finite) broken = `a published number is not finite: box ${JSON.stringify(s.box)}, viewport ${JSON.stringify(s.viewport)}`;
-        const shown = s.box?.length && s.viewport && s.viewport[2] > 1 && s.viewport[3] > 1;
-        const inside = shown && s.box.every((c) => contains(s.viewport, c, 1));
-        outOfView = !shown || inside ? 0 : outOfView + 1;
-        worst = Math.max(worst, outOfView);
-        // About three seconds of samples: longer than the camera takes to catch any box.
-        if (outOfView > 12) broken = `the box out of its viewport for ${outOfView} samples: box ${fmt(s.box)}, viewport ${fmt(s.viewport)}`;
-      }
-    }
-    if (held) await p.mouse.up();
-    if (touching) await finger.up();
-    check(!broken, `monkey, seed ${seed}: ${script.length} inputs in ${seconds} s, ${samples} samples of the page, the box in view (at most ${worst} samples in a row out)${broken ? ": " + broken + "\n  last inputs: " + script.slice(-30).join("; ") : ""}`);
-    await p.keyboard.press("Escape");
-    const [download] = await Promise.all([p.waitForEvent("download", { timeout: 20000 }).catch(() => null), p.keyboard.press("s")]);
-    if (download) {
-      const saved = path.join(screens, `monkey-${seed}.jsonl`);
-      await download.saveAs(saved);
-      const text = fs.readFileSync(saved, "utf8");
-      const hash = recordedHash(text);
-      const inPage = await p.evaluate((text) => window.rubberBandBox?.replayHash(text), text);
-      let stepped = "not stepped natively (NATIVE_BINARY unset)";
-      if (process.env.NATIVE_BINARY) {
-        try {
-          stepped = execFileSync(process.env.NATIVE_BINARY, ["simulate", "--replay", saved, "--hash"], { encoding: "utf8" }).trim();
-        } catch (error) {
-          stepped = `exit ${error.status}: ${String(error.stderr).trim()}`;
-        }
-      }
-      const steps = JSON.parse(text.trim().split("\n").at(-1)).steps;
-      check(inPage === hash && (stepped === hash || (!process.env.NATIVE_BINARY && process.env.CI !== "true")),
-        `monkey, seed ${seed}: its game saved (${steps} steps, hash ${hash}) steps in the page (${inPage}) and natively (${stepped}) to that hash${inPage === hash && stepped === hash ? "" : "\n  last inputs: " + script.slice(-30).join("; ")}`);
-    } else {
-      check(false, `monkey, seed ${seed}: S offered no download after the monkey`);
-    }
     await context.close();
   }
   check(errors.length === 0, `no console errors${errors.length ? ": " + errors.join(" | ") : ""}`);

@@ -15,10 +15,11 @@ const browser = await chromium.launch({
   args: ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader", "--ignore-gpu-blocklist",
     "--disable-background-networking", "--disable-component-update", "--disable-sync"],
 });
-const RATE = 100;
-const modes = [
-  ["lab off", "?v=1&scene=tutorial"],
-  ["lab on", "?v=1&scene=tutorial&ghosts=on&plot=on&vectors=on&trail=on"],
+const heaviest = ["heaviest", "?v=1&scene=stiff&k=1e12&rate=4096&time=16&ghosts=on&plot=on&vectors=on&trail=on", 4096];
+const modes = process.env.REAL_TIME_HEAVIEST_ONLY ? [heaviest] : [
+  ["lab off", "?v=1&scene=tutorial", 100],
+  ["lab on", "?v=1&scene=tutorial&ghosts=on&plot=on&vectors=on&trail=on", 100],
+  heaviest,
 ];
 // The simulated time the status line says ("... · t 12.3 s ..."), and the frames counted.
 const read = (page) => page.evaluate(() => {
@@ -26,10 +27,10 @@ const read = (page) => page.evaluate(() => {
   const status = texts.map((t) => t.text).find((t) => / · t [\d.]+ s/.test(t)) ?? "";
   return { t: Number((status.match(/ · t ([\d.]+) s/) ?? [])[1]), status, frames: window.__frames ?? 0 };
 });
-const results = { "lab off": [], "lab on": [] };
+const results = Object.fromEntries(modes.map(([mode]) => [mode, []]));
 try {
   for (let round = 1; round <= 2; round++) {
-    for (const [mode, query] of modes) {
+    for (const [mode, query, rate] of modes) {
       const page = await browser.newPage({ viewport: { width: 960, height: 720 } });
       await page.addInitScript(() => {
         window.__frames = 0;
@@ -38,7 +39,7 @@ try {
       });
       await page.goto(base + query);
       await page.waitForFunction(() => window.rubberBandBox?.scene && window.rubberBandBox?.panel?.Stability, null, { timeout: 120000 });
-      if (mode === "lab on") {
+      if (mode !== "lab off") {
         const [x, y, w, h] = await page.evaluate(() => window.rubberBandBox.panel.Stability);
         await page.mouse.move(x + w / 2, y + h / 2);
         await page.waitForTimeout(300);
@@ -55,11 +56,20 @@ try {
       const frames = b.frames - a.frames;
       const row = {
         ms: (1000 * wall) / frames,
-        steps: ((b.t - a.t) * RATE) / frames,
+        steps: ((b.t - a.t) * rate) / frames,
         pace: (b.t - a.t) / wall,
       };
+      if (mode === "heaviest") {
+        // The pause: Space, one frame, then the simulated time must stand still.
+        await page.keyboard.press("Space");
+        await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+        const paused = await read(page);
+        await page.waitForTimeout(2000);
+        const later = await read(page);
+        row.pause = `paused at t ${paused.t} s, ${later.frames - paused.frames} frames later t ${later.t} s`;
+      }
       results[mode].push(row);
-      console.log(`${mode}, round ${round}: ${row.ms.toFixed(1)} ms a frame, ${row.steps.toFixed(2)} fixed steps a frame, pace ${row.pace.toFixed(2)} (${frames} frames in ${wall.toFixed(1)} s; status: "${b.status}")`);
+      console.log(`${mode}, round ${round}: ${row.ms.toFixed(1)} ms a frame, ${row.steps.toFixed(2)} fixed steps a frame, pace ${row.pace.toFixed(2)} (${frames} frames in ${wall.toFixed(1)} s; status: "${b.status}")${row.pause ? "; " + row.pause : ""}`);
       await page.screenshot({ path: `/tmp/real-time-${mode.replace(" ", "-")}-${round}.png` });
       await page.close();
     }

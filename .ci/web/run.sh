@@ -32,3 +32,7 @@ export NATIVE_BINARY="$CARGO_TARGET_DIR/debug/rubber_band_box"
 start=$(date +%s)
 node .ci/web/browser-test.mjs site
 echo "browser test: $(( $(date +%s) - start )) s"
+# The monkey: a minute of random input from a fixed seed (MONKEY_SEED; docs/testing.md).
+start=$(date +%s)
+node .ci/web/monkey.mjs site
+echo "browser monkey: $(( $(date +%s) - start )) s"
