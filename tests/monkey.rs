@@ -32,8 +32,6 @@ use rubber_band_box::game::play::{PlayOptions, prepare};
 use rubber_band_box::game::replays::playback;
 use rubber_band_box::game::replays::recording::Recorder;
 use rubber_band_box::physics::MassProperties;
-use rubber_band_box::replay::run::ReplayRun;
-use rubber_band_box::replay::{Replay, TrajectoryHash};
 
 /// Frames a seed plays in CI.
 const FRAMES: usize = 1500;
@@ -396,33 +394,6 @@ impl Monkey {
              {corners:?}, {side} px across, viewport {viewport:?}"
         );
     }
-
-    /// Checks that the recording replays to the hash of the states the game had.
-    fn check_the_recording(&mut self) {
-        let trajectory = &self.game.world().resource::<Trajectory>().0;
-        let mut own = TrajectoryHash::default();
-        for state in trajectory {
-            own.add(state);
-        }
-        let steps = trajectory.len() as u64;
-        let replay = self
-            .game
-            .world()
-            .resource::<Recorder>()
-            .replay
-            .clone()
-            .expect("a recording");
-        assert_eq!(replay.steps, steps, "every step recorded");
-        assert_eq!(replay.hash, own, "the recorder's hash is the game's");
-        let read = Replay::from_bytes(&replay.to_bytes()).expect("the recording reads back");
-        let mut run = ReplayRun::new(&read, None).unwrap();
-        let replayed = run.finish();
-        assert!(
-            replayed == own,
-            "the recording replays to another game: {}",
-            run.explain_mismatch()
-        );
-    }
 }
 
 /// Plays `frames` frames of seed `seed`; a failure prints the inputs and saves the recording.
@@ -434,7 +405,7 @@ fn run_seed(seed: u64, frames: usize) {
             monkey.game.update(1);
             monkey.check(frame);
         }
-        monkey.check_the_recording();
+        assert_replays(&mut monkey.game, &format!("monkey seed {seed}"));
     }));
     if let Err(panic) = outcome {
         let folder = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("monkey");

@@ -14,21 +14,11 @@ use rubber_band_box::game::replays::recording::Recorder;
 use rubber_band_box::game::shared::StatusMessage;
 use rubber_band_box::physics::{AutoSettings, BodyState, Scene};
 use rubber_band_box::replay::run::ReplayRun;
-use rubber_band_box::replay::{Header, Integrity, Replay, Settings, TrajectoryHash};
+use rubber_band_box::replay::{Header, Integrity, Replay, Settings};
 
 /// A game at 100 Hz, one step a frame, that keeps every state its steps left.
 fn game() -> Game {
     Game::keeping_trajectory(Duration::from_millis(10), |_| {})
-}
-
-/// The hash of every state the game's steps left, kept apart from the recorder.
-fn own_hash(game: &mut Game) -> (u64, TrajectoryHash) {
-    let trajectory = &game.world().resource::<Trajectory>().0;
-    let mut hash = TrajectoryHash::default();
-    for state in trajectory {
-        hash.add(state);
-    }
-    (trajectory.len() as u64, hash)
 }
 
 /// A pull that circles for `frames` frames from a point right of the centre.
@@ -46,28 +36,6 @@ fn pull(game: &mut Game, frames: usize) {
 
 fn send(game: &mut Game, action: Action) {
     game.world().write_message(action);
-}
-
-/// Checks that the game's recording, written and read back, steps to the game's own hash.
-fn assert_replays(game: &mut Game, what: &str) {
-    let (steps, hash) = own_hash(game);
-    let recorded = game
-        .world()
-        .resource::<Recorder>()
-        .replay
-        .clone()
-        .expect("a recording");
-    assert_eq!(recorded.steps, steps, "{what}: every step recorded");
-    assert_eq!(recorded.hash, hash, "{what}: the recorder's hash");
-    let read = Replay::from_bytes(&recorded.to_bytes()).expect("the recording reads back");
-    assert_eq!(read.integrity, Integrity::Intact);
-    let mut run = ReplayRun::new(&read, None).unwrap();
-    let replayed = run.finish();
-    assert!(
-        replayed == hash,
-        "{what}: the recording replays to another game: {}",
-        run.explain_mismatch()
-    );
 }
 
 /// Plays `action` with a pull held across it, another after it, a reset and a last pull.

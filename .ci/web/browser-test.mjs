@@ -23,6 +23,7 @@ import fs from "node:fs";
 import path from "node:path";
 import { execFileSync } from "node:child_process";
 import zlib from "node:zlib";
+import { centre, contains, pressPoint } from "./page.mjs";
 
 const site = path.resolve(process.argv[2] ?? "site");
 const fixture = path.resolve("tests/fixtures/cross-platform.jsonl");
@@ -108,9 +109,6 @@ const settle = async (p, timeout = 5000) => {
   }
   return false;
 };
-const centre = (r) => [r[0] + r[2] / 2, r[1] + r[3] / 2];
-const contains = (r, [x, y], tolerance = 0) =>
-  x >= r[0] - tolerance && x <= r[0] + r[2] + tolerance && y >= r[1] - tolerance && y <= r[1] + r[3] + tolerance;
 // Two rectangles meet when they share more than a sliver (`tolerance` px) each way.
 const meet = (a, b, tolerance = 0.5) =>
   Math.min(a[0] + a[2], b[0] + b[2]) - Math.max(a[0], b[0]) > tolerance &&
@@ -210,17 +208,6 @@ const dockTop = (s) => {
   const bottom = s.viewport[1] + s.viewport[3];
   const hint = (s.texts ?? []).filter((t) => t.rect[1] >= bottom - 1 && t.rect[1] <= bottom + 12);
   return Math.max(bottom + 20, ...hint.map((t) => t.rect[1] + t.rect[3] + 3));
-};
-// Where to press a button: the page lists a scrolled-away button's rectangle too, but its
-// label's text only where the dock shows it; so the button can be pressed where its text shows
-// across the button's middle.
-const pressPoint = (s, label) => {
-  const r = s.panel[label];
-  if (!r || !s.texts) return null;
-  const y = r[1] + r[3] / 2;
-  const text = s.texts.find((t) => t.text === label && t.rect[1] <= y && t.rect[1] + t.rect[3] >= y &&
-    t.rect[0] >= r[0] - 1 && t.rect[0] + t.rect[2] <= r[0] + r[2] + 1);
-  return text ? [text.rect[0] + text.rect[2] / 2, y] : null;
 };
 // A spot of the dock where a finger may land without pressing a button: a text of a card
 // that lies in no button and is no button's label (the page lists one rectangle a label:

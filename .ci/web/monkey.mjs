@@ -14,6 +14,7 @@ import fs from "node:fs";
 import path from "node:path";
 import { execFileSync } from "node:child_process";
 import { serve } from "./serve.mjs";
+import { centre, contains, pressPoint } from "./page.mjs";
 
 const site = path.resolve(process.argv[2] ?? "site");
 const screens = path.join(site, "screens");
@@ -45,19 +46,7 @@ const api = (p) => p.evaluate(() => {
   const a = window.rubberBandBox ?? {};
   return { panel: a.panel ?? {}, viewport: a.viewport ?? null, texts: a.texts ?? null, box: a.box ?? null };
 });
-const contains = (r, [x, y], tolerance = 0) =>
-  x >= r[0] - tolerance && x <= r[0] + r[2] + tolerance && y >= r[1] - tolerance && y <= r[1] + r[3] + tolerance;
-const centre = (r) => [r[0] + r[2] / 2, r[1] + r[3] / 2];
 const fmt = (r) => JSON.stringify(r, (_, v) => (typeof v === "number" ? Math.round(v * 10) / 10 : v));
-// Where a button's label shows across its middle (a scrolled-away button is listed too).
-const pressPoint = (s, label) => {
-  const r = s.panel[label];
-  if (!r || !s.texts) return null;
-  const y = r[1] + r[3] / 2;
-  const text = s.texts.find((t) => t.text === label && t.rect[1] <= y && t.rect[1] + t.rect[3] >= y &&
-    t.rect[0] >= r[0] - 1 && t.rect[0] + t.rect[2] <= r[0] + r[2] + 1);
-  return text ? [text.rect[0] + text.rect[2] / 2, y] : null;
-};
 // What the status line and the readouts say now, for a failure's message.
 const said = async (p) => ((await api(p)).texts ?? []).map((t) => t.text).filter((t) => / · t |saved|recording|behind/.test(t)).join(" | ");
 

@@ -54,7 +54,7 @@ pub struct ReplayRun<'a> {
     /// The latest record that put the box or the settings in place.
     latest_change: Option<(&'static str, u64)>,
     /// `auto`'s settings made from the recorded ones (`simulate --auto-order`, say).
-    auto_from: Option<Box<dyn Fn(AutoSettings) -> AutoSettings + 'a>>,
+    auto_from: Option<&'a dyn Fn(AutoSettings) -> AutoSettings>,
     /// `auto`'s settings as recorded, in force now.
     recorded_auto: AutoSettings,
 }
@@ -91,9 +91,9 @@ impl<'a> ReplayRun<'a> {
     /// Steps with `auto`'s settings made from the recorded ones by `from`.
     ///
     /// They are made at the start and at every auto record.
-    pub fn with_auto(mut self, from: impl Fn(AutoSettings) -> AutoSettings + 'a) -> Self {
+    pub fn with_auto(mut self, from: &'a dyn Fn(AutoSettings) -> AutoSettings) -> Self {
         self.stepper.auto = from(self.stepper.auto);
-        self.auto_from = Some(Box::new(from));
+        self.auto_from = Some(from);
         self
     }
 

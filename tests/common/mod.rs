@@ -606,3 +606,41 @@ pub fn click(game: &mut Game, entity: Entity, pointer: bevy::picking::pointer::P
     world.flush();
     game.update(1);
 }
+
+/// The hash of every state the game's steps left ([`Trajectory`]), kept apart from the
+/// recorder, and the number of steps.
+pub fn own_hash(game: &mut Game) -> (u64, rubber_band_box::replay::TrajectoryHash) {
+    let trajectory = &game.world().resource::<Trajectory>().0;
+    let mut hash = rubber_band_box::replay::TrajectoryHash::default();
+    for state in trajectory {
+        hash.add(state);
+    }
+    (trajectory.len() as u64, hash)
+}
+
+/// Checks that the game's recording, written and read back, steps to the game's own hash.
+///
+/// The game keeps its [`Trajectory`]; `what` names the case in a failure.
+pub fn assert_replays(game: &mut Game, what: &str) {
+    use rubber_band_box::game::replays::recording::Recorder;
+    use rubber_band_box::replay::Integrity;
+    use rubber_band_box::replay::run::ReplayRun;
+    let (steps, hash) = own_hash(game);
+    let recorded = game
+        .world()
+        .resource::<Recorder>()
+        .replay
+        .clone()
+        .expect("a recording");
+    assert_eq!(recorded.steps, steps, "{what}: every step recorded");
+    assert_eq!(recorded.hash, hash, "{what}: the recorder's hash");
+    let read = Replay::from_bytes(&recorded.to_bytes()).expect("the recording reads back");
+    assert_eq!(read.integrity, Integrity::Intact);
+    let mut run = ReplayRun::new(&read, None).unwrap();
+    let replayed = run.finish();
+    assert!(
+        replayed == hash,
+        "{what}: the recording replays to another game: {}",
+        run.explain_mismatch()
+    );
+}

@@ -18,10 +18,10 @@ use crate::game::camera::{CameraFrame, Stage};
 use crate::game::layout::{Card, CardSpec, Cards, RegisterCard, Slots};
 use crate::game::pointer::Grip;
 use crate::game::replays::playback::Playback;
-use crate::game::replays::recording::Recorder;
+use crate::game::replays::recording::say_it_goes_on;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
-use crate::game::shared::{DockHidden, Mode, Overlays, SceneName, StatusMessage};
+use crate::game::shared::{DockHidden, Mode, Overlays, SceneName};
 use crate::game::simulation::{
     Band, Bodies, EnergyBooks, ResetScene, RigidBodyQueryReadOnly, RigidBox, StepCount,
     acting_band, rigid_box, set_fixed_step,
@@ -284,10 +284,7 @@ fn restore_the_game(world: &mut World) {
         }
     }
     // The recorder notes the box put back as it notes any other change, and goes on.
-    if let Some(goes_on) = world.resource::<Recorder>().goes_on() {
-        info!("{goes_on}");
-        world.resource_mut::<StatusMessage>().0 = Some(goes_on);
-    }
+    say_it_goes_on(world);
 }
 
 /// Checks the chapter's task, after the frame's steps, against what the steps did.

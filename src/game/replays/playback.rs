@@ -13,7 +13,7 @@ use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
 use crate::game::pointer::PointerAction;
-use crate::game::replays::recording::Recorder;
+use crate::game::replays::recording::{Recorder, say_it_goes_on};
 use crate::game::schedule::{AfterStepsSystems, GameSystems, PhysicsSystems};
 use crate::game::shared::SceneName;
 use crate::game::shared::StatusMessage;
@@ -313,10 +313,7 @@ pub fn open(world: &mut World, replay: Replay) {
     set_fixed_step(&mut world.resource_mut::<Time<Fixed>>(), dt);
     world.insert_resource(SceneName(replay.header.scene.clone()));
     world.insert_resource(Playback::of(replay));
-    if let Some(goes_on) = world.resource::<Recorder>().goes_on() {
-        info!("{goes_on}");
-        world.resource_mut::<StatusMessage>().0 = Some(goes_on);
-    }
+    say_it_goes_on(world);
 }
 
 /// Plays a replay file's text the player opened, or says why it cannot be played.
