@@ -37,6 +37,23 @@ pub enum Mode {
     Learn,
 }
 
+/// What the learn controls and links ask of learn mode (`game::learn` answers).
+///
+/// Shared, so that a link (under learn mode) can open a chapter.
+#[derive(Event, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Learn {
+    /// Into learn mode at its first chapter, or out of it.
+    Toggle,
+    Next,
+    Previous,
+    /// This chapter (entering the mode if need be).
+    Chapter(usize),
+    /// This answer to the chapter's prediction.
+    Predict(usize),
+    /// More point masses across the box, or fewer (the moment of inertia's sum).
+    PointMasses(i32),
+}
+
 /// The scene the game plays, which a recording's header names.
 ///
 /// The tutorial's, a named scene loaded, or the one a replay opened was recorded in.

@@ -42,11 +42,12 @@ pub enum Key {
     Vectors,
     Trail,
     Dock,
+    Learn,
 }
 
 impl Key {
     /// In the order a link writes them.
-    pub const ALL: [Self; 15] = [
+    pub const ALL: [Self; 16] = [
         Self::Version,
         Self::Scene,
         Self::Integrator,
@@ -62,6 +63,7 @@ impl Key {
         Self::Vectors,
         Self::Trail,
         Self::Dock,
+        Self::Learn,
     ];
 
     pub fn name(self) -> &'static str {
@@ -81,6 +83,7 @@ impl Key {
             Self::Vectors => "vectors",
             Self::Trail => "trail",
             Self::Dock => "dock",
+            Self::Learn => "learn",
         }
     }
 
@@ -102,6 +105,7 @@ impl Key {
             Self::Vectors => "velocity and force arrows",
             Self::Trail => "the pulled corner's trail",
             Self::Dock => "the dock of instruments",
+            Self::Learn => "learn mode at this chapter (its scene and settings are the chapter's)",
         }
     }
 
@@ -119,6 +123,7 @@ impl Key {
             Self::Ghosts | Self::Plot | Self::Vectors | Self::Trail | Self::Dock => {
                 "on, off".to_owned()
             }
+            Self::Learn => "a chapter's number, 1 to the last".to_owned(),
             _ => self.range().map(|r| r.to_string()).unwrap_or_default(),
         }
     }
@@ -138,6 +143,7 @@ impl Key {
             Self::StepRate => exact(tutorial.step_rate_hz),
             Self::TimeScale => "1".to_owned(),
             Self::Dock => "on".to_owned(),
+            Self::Learn => "none (play)".to_owned(),
             Self::Ghosts | Self::Plot | Self::Vectors | Self::Trail => "off".to_owned(),
         }
     }
@@ -188,6 +194,8 @@ pub struct Link {
     pub overlays: LinkOverlays,
     /// A whole game, played from its start (its scene and settings are the replay's).
     pub replay: Option<Replay>,
+    /// Learn mode's chapter, counted from 1.
+    pub learn: Option<u32>,
 }
 
 /// A part of a link that was not taken, and why.
@@ -298,6 +306,10 @@ impl Link {
             Key::Vectors => self.overlays.vectors = Some(switch()?),
             Key::Trail => self.overlays.trail = Some(switch()?),
             Key::Dock => self.overlays.dock = Some(switch()?),
+            Key::Learn => match value.trim().parse::<u32>() {
+                Ok(chapter) if chapter >= 1 => self.learn = Some(chapter),
+                _ => return Err(format!("'{value}' is not a chapter's number (1, 2, ...)")),
+            },
         }
         Ok(())
     }
@@ -349,6 +361,7 @@ impl Link {
         put(Key::Vectors, switch(self.overlays.vectors));
         put(Key::Trail, switch(self.overlays.trail));
         put(Key::Dock, switch(self.overlays.dock));
+        put(Key::Learn, self.learn.map(|chapter| chapter.to_string()));
         let mut text = format!("?{}", pairs.join("&"));
         if let Some(replay) = &self.replay {
             let data = encode_replay(replay);

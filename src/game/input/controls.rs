@@ -11,11 +11,11 @@ use bevy::input::keyboard::KeyboardInput;
 use bevy::prelude::*;
 
 use crate::game::camera::HomeView;
-use crate::game::learn::Learn;
 use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
 use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
+use crate::game::shared::Learn;
 use crate::game::shared::{DockHidden, Overlays, StatusMessage, readable};
 use crate::game::simulation::ResetScene;
 use crate::physics::{
@@ -117,6 +117,10 @@ pub enum Action {
     Learn,
     NextChapter,
     PreviousChapter,
+    /// This answer to the chapter's prediction.
+    Predict(usize),
+    /// More point masses across the box, or fewer.
+    PointMasses(i32),
     /// The scene at this place in [`Scene::NAMES`].
     Scene(usize),
 }
@@ -324,7 +328,7 @@ pub const CONTROLS: [Control; 19] = [
         actions: &[Action::ShareLink],
         label: "C",
         name: "link",
-        effect: "the link of what is on screen (scene, integrator, settings, overlays; docs/links.md): in the browser it becomes the page's address and is copied, on the desktop it is printed to the terminal (open it with `play --link`)",
+        effect: "the link of what is on screen (scene, integrator, settings, overlays; docs/links.md; in learn mode the chapter's, `?learn=N`): in the browser it becomes the page's address and is copied, on the desktop it is printed to the terminal (open it with `play --link`)",
     },
     Control {
         keys: &[GAME_LINK],
@@ -338,7 +342,7 @@ pub const CONTROLS: [Control; 19] = [
         actions: &[Action::Learn],
         label: "L",
         name: "learn",
-        effect: "learn mode: the tutorial's chapters, each with its equations written with the numbers of the moment and a task the game checks (docs/learn.md); L again leaves it and puts the game back as it was",
+        effect: "learn mode: the tutorial's chapters, each with its equations written with the numbers of the moment and a prediction the game checks by experiment (docs/learn.md; a link `?learn=N` opens chapter N); L again leaves it and puts the game back as it was",
     },
 ];
 
@@ -458,6 +462,8 @@ fn apply_actions(
             Action::Learn => commands.trigger(Learn::Toggle),
             Action::NextChapter => commands.trigger(Learn::Next),
             Action::PreviousChapter => commands.trigger(Learn::Previous),
+            Action::Predict(choice) => commands.trigger(Learn::Predict(choice)),
+            Action::PointMasses(by) => commands.trigger(Learn::PointMasses(by)),
             Action::ShareLink => commands.trigger(ShareLink { game: false }),
             Action::ShareGame => commands.trigger(ShareLink { game: true }),
             Action::Scene(index) => {

@@ -19,19 +19,25 @@ pub enum Equation {
     AngularDecay,
     /// r = p − x: from the centre to the band's corner.
     Arm,
-    /// τ = r × F.
+    /// τ = r × F = r_x F_y − r_y F_x.
     Torque,
+    /// The velocity of the band's corner: v_p = v + ω r⊥.
+    PointVelocity,
     /// The centre twin: the box's band force at its centre, r = 0, so it never turns.
     CentrePull,
+    /// I = Σ mᵢ |rᵢ|² over n × n point masses, against the box's closed form.
+    PointMasses,
     /// I = m (w² + h²) / 12.
     Inertia,
+    /// L = I ω, and τ = dL / dt against the change of L over the next step.
+    AngularMomentum,
     /// α = Στ / I.
     AngularAcceleration,
-    /// The band's part of α, τ_band / I, against what it was with the chapter's first I.
+    /// The band's part of α, τ_band / I.
     BandShareOfAlpha,
     /// F = −k (p − q).
     Spring,
-    /// The corner nearest the pointer.
+    /// The corner the band holds: the one nearest the pointer when pressed.
     NearestCorner,
     /// F_damp = −b v.
     LinearDamping,
@@ -39,31 +45,42 @@ pub enum Equation {
     AngularDamping,
     /// E = ½ m v² + ½ I ω² + ½ k |p − q|².
     Energy,
-    /// Where the energy went: in by the hand, out by damping.
+    /// Where the energy went: in by the hand, out by damping; and E's distance from that.
     Ledger,
     /// The update loop, one line a stage.
     Update,
+    /// The energy books of the seed's and explicit Euler's ghosts, stepped from the same start.
+    UpdateOrder,
 }
 
-/// What a chapter asks the player to do; learn mode checks it (`check_task`).
+/// The experiment a chapter's prediction is checked against; learn mode runs it (`check_task`).
+///
+/// Each yields one of the chapter's choices as what happened.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Task {
-    /// Move the box 40 px with a band while it turns less than 0.05 rad.
-    MoveWithoutTurning,
-    /// Angular damping c set to 0 while the box still spins (|ω| above 1 rad/s).
+    /// A pull of 40 px along a line through the centre: did the box turn (0) or not (1)?
+    TurnThroughTheCentre,
+    /// Angular damping c at 0 while the box spins: did ω fall (0), stay (1) or grow (2)?
     SpinWithoutDamping,
-    /// A band turning the box clockwise, faster than 1 rad/s.
-    SpinClockwise,
-    /// The moment of inertia at least twice what the chapter started with.
+    /// A pull of the player's: did ω pass 1 rad/s counter-clockwise (0) or clockwise (1)?
+    SignOfTorque,
+    /// I doubled while a band holds: did τ_band / I double (0), stay (1) or halve (2)?
     DoubleTheInertia,
-    /// The band grabbed at three different corners.
-    ThreeCorners,
-    /// After a pull, the box back to rest, with no band.
-    ///
-    /// At rest means its kinetic energy is under 1% of the most it had.
+    /// The pointer dragged nearer another corner: did the band hold the first (0) or move (1)?
+    HeldCorner,
+    /// A pull let go: did the box come to rest (0) or keep moving (1)?
     ComeToRest,
-    /// Five single steps taken while paused.
-    StepFiveTimes,
+    /// A single step while paused: did x move with the v before the step (0) or after it (1)?
+    StepOrder,
+}
+
+/// What the learner commits to before the experiment: a question and its answers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Prediction {
+    pub question: &'static str,
+    pub choices: &'static [&'static str],
+    /// What to do once an answer is chosen.
+    pub then: &'static str,
 }
 
 /// One chapter.
@@ -86,9 +103,10 @@ pub struct Chapter {
     pub frame: [f32; 4],
     /// A twin of the box beside it, pushed at its centre by the box's band force ([`super::twin`]).
     pub centre_twin: bool,
+    /// The ghosts of every integrator beside the box (the update loop's seed and Euler).
+    pub ghosts: bool,
     pub task: Task,
-    /// The task, as the player reads it.
-    pub ask: &'static str,
+    pub prediction: Prediction,
 }
 
 /// The chapters, in the tutorial's order.
@@ -98,100 +116,144 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§3.2, §4.2",
         scene: "diagonal",
         integrator: None,
-        text: "A force whose line passes through the centre of mass moves the box as if all \
-               its mass sat there: F\u{a0}=\u{a0}m\u{a0}a, and the box does not turn. Here the band pulls \
-               along the diagonal, through the centre.",
+        text: "Axes: x to the right, y up (the tutorial's screen counts y down); the centre's \
+               position is x (the tutorial's s). Every force moves the centre as if all the \
+               mass sat there, wherever it acts: ΣF\u{a0}=\u{a0}m\u{a0}a (§4.2). A force whose line \
+               of action passes through the centre has no torque besides, so it leaves ω as it \
+               is: this box starts with ω\u{a0}=\u{a0}0, and the band along its diagonal does not \
+               turn it. Time is in seconds: the tutorial's k\u{a0}=\u{a0}0.002 and b\u{a0}=\u{a0}0.05 a \
+               frame are k\u{a0}=\u{a0}0.002\u{a0}×\u{a0}100²\u{a0}=\u{a0}20 and b\u{a0}=\u{a0}0.05\u{a0}×\u{a0}100\u{a0}=\u{a0}5 \
+               at its 100 frames a second.",
         equations: &[Equation::ForceSum, Equation::Acceleration, Equation::Motion],
         frame: [-70.0, -70.0, 230.0, 230.0],
         centre_twin: false,
-        task: Task::MoveWithoutTurning,
-        ask: "pull along a diagonal so that the box moves 40 px without turning",
+        ghosts: false,
+        task: Task::TurnThroughTheCentre,
+        prediction: Prediction {
+            question: "pulled along its diagonal, through the centre: will the box turn?",
+            choices: &["it turns", "it does not turn"],
+            then: "then pull the box 40 px along the diagonal, from a corner away from the centre",
+        },
     },
     Chapter {
         title: "Orientation and angular velocity",
         sections: "§3.3",
         scene: "spin",
         integrator: None,
-        text: "A rigid body also has an orientation θ, one number in 2D, and an angular \
-               velocity ω = dθ/dt. Nothing pulls this box: it only spins, and angular damping \
-               takes ω down at the rate c.",
-        equations: &[
-            Equation::Orientation,
-            Equation::AngularDecay,
-            Equation::Inertia,
-        ],
+        text: "A rigid body also has an orientation θ (the tutorial's Ω): one number, because \
+               a plane has one way to turn (§3.3.1). Its angular velocity is ω\u{a0}=\u{a0}dθ/dt. \
+               θ, ω and torques count counter-clockwise as positive, as the arc between the axes in the scene's corner \
+               shows (on the tutorial's y-down screen its positive angle looks clockwise). \
+               Nothing pulls this box: it spins, and angular damping takes ω down at the rate \
+               c, dω/dt\u{a0}=\u{a0}−c\u{a0}ω: the tutorial's ω\u{a0}×\u{a0}0.98 a frame is \
+               c\u{a0}=\u{a0}−ln\u{a0}0.98\u{a0}×\u{a0}100\u{a0}=\u{a0}2.02\u{a0}/s.",
+        equations: &[Equation::Orientation, Equation::AngularDecay],
         frame: [-130.0, -100.0, 130.0, 100.0],
         centre_twin: false,
+        ghosts: false,
         task: Task::SpinWithoutDamping,
-        ask: "set the angular damping to 0 while it spins: ω stops falling",
+        prediction: Prediction {
+            question: "with the angular damping c at 0, what will ω do?",
+            choices: &["fall to 0", "stay as it is", "grow"],
+            then: "then set angular damping to 0 (Controls card) and watch ω for half a second",
+        },
     },
     Chapter {
-        title: "A force at a point",
-        sections: "§4.2, §4.3",
+        title: "Torque: a force at a point",
+        sections: "§4.2, §4.3.1-4.3.3",
         scene: "tutorial",
         integrator: None,
-        text: "A force applied away from the centre still accelerates the centre by F\u{a0}/\u{a0}m, \
-               and also turns the box: the torque is the perpendicular dot product of the arm \
-               r, from the centre to the point, with the force. The outline below is a twin \
-               that the box's own band force pushes at its centre, with the same damping: its \
-               centre moves exactly as the box's does, and with r\u{a0}=\u{a0}0 it never turns.",
+        text: "The arm r runs from the centre to the point p where the force acts. The torque \
+               is τ\u{a0}=\u{a0}r\u{a0}×\u{a0}F\u{a0}=\u{a0}r_x\u{a0}F_y\u{a0}−\u{a0}r_y\u{a0}F_x (the tutorial's \
+               'perpendicular dot product'): zero when the force's line of action passes \
+               through the centre, positive when it turns the box counter-clockwise. A point of \
+               the box moves at v\u{a0}+\u{a0}ω\u{a0}r⊥, with r⊥\u{a0}=\u{a0}(−r_y,\u{a0}r_x) (§4.3.2). The \
+               centre still accelerates by ΣF\u{a0}/\u{a0}m. The outline below is a twin that the \
+               box's own band force pushes at its centre, with the same damping: its centre \
+               moves as the box's, and with r\u{a0}=\u{a0}0 it never turns. How much a torque \
+               changes ω takes the moment of inertia: chapter 4.",
         equations: &[
             Equation::Arm,
             Equation::Torque,
+            Equation::PointVelocity,
             Equation::Acceleration,
-            Equation::AngularAcceleration,
+            Equation::Orientation,
             Equation::CentrePull,
         ],
         frame: [-70.0, -180.0, 270.0, 190.0],
         centre_twin: true,
-        task: Task::SpinClockwise,
-        ask: "pull so that the box spins clockwise",
+        ghosts: false,
+        task: Task::SignOfTorque,
+        prediction: Prediction {
+            question: "which way will your pull turn the box?",
+            choices: &["counter-clockwise (τ > 0)", "clockwise (τ < 0)"],
+            then: "then press and pull until ω passes ±1 rad/s",
+        },
     },
     Chapter {
         title: "The moment of inertia",
-        sections: "§4.3.4, §4.3.6",
-        scene: "tutorial",
+        sections: "§4.3.4-4.3.6",
+        scene: "undamped",
         integrator: None,
-        text: "The moment of inertia is to turning what mass is to moving: the same torque \
-               gives a box with twice the inertia half the angular acceleration. For a box it \
-               grows with the mass and the square of its size (the Controls card's mass and \
-               size sliders). Change either while the band pulls: the band holds the same point, \
-               so the torque is the same and its part of α halves (damping's −c\u{a0}ω does not \
-               depend on I). A larger box grabbed afresh at its corner is held further from its \
-               centre, so the same stretch gives it more torque.",
+        text: "The moment of inertia is to turning what mass is to moving. Cut the box into \
+               n\u{a0}×\u{a0}n small masses mᵢ at arms rᵢ: its kinetic energy of turning is \
+               ½\u{a0}Σ\u{a0}mᵢ\u{a0}|ω\u{a0}rᵢ|²\u{a0}=\u{a0}½\u{a0}I\u{a0}ω², so I\u{a0}=\u{a0}Σ\u{a0}mᵢ\u{a0}|rᵢ|², which tends to \
+               the box's m\u{a0}(w²\u{a0}+\u{a0}h²)\u{a0}/\u{a0}12 as n grows (the dots; n\u{a0}−, n\u{a0}+). The \
+               angular momentum L\u{a0}=\u{a0}I\u{a0}ω changes at the rate of the torque, \
+               τ\u{a0}=\u{a0}dL/dt, so α\u{a0}=\u{a0}Στ\u{a0}/\u{a0}I. This scene has no damping and its band \
+               stays, so your hand is free for the sliders: the band holds the same point of \
+               the box when the mass or the size changes.",
         equations: &[
+            Equation::PointMasses,
             Equation::Inertia,
-            Equation::Torque,
+            Equation::AngularMomentum,
             Equation::AngularAcceleration,
             Equation::BandShareOfAlpha,
         ],
         frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
+        ghosts: false,
         task: Task::DoubleTheInertia,
-        ask: "double I while the band pulls (mass ×2 or size ×1.41): τ_band / I halves",
+        prediction: Prediction {
+            question: "I doubled, the band where it is: what will τ_band / I do?",
+            choices: &["double", "stay the same", "halve"],
+            then: "then pause (Space) and double I: mass ×2 or size ×1.41 (Controls card)",
+        },
     },
     Chapter {
         title: "The rubber band",
         sections: "§5.2.3",
         scene: "rest",
         integrator: None,
-        text: "The band is a spring of zero rest length between the pointer and the corner \
-               nearest it when pressed: its force is k times the stretch, toward the pointer.",
+        text: "The band is a spring of zero rest length from the pointer q to a corner p: its \
+               force is F\u{a0}=\u{a0}−k\u{a0}(p\u{a0}−\u{a0}q), k times the stretch, toward the pointer \
+               (the tutorial's x is the stretch p\u{a0}−\u{a0}q; its p is the momentum). The \
+               corner is the one nearest the pointer when pressed, and it stays that corner \
+               while the band is held, wherever the pointer goes.",
         equations: &[Equation::NearestCorner, Equation::Spring, Equation::Torque],
         frame: [-130.0, -100.0, 130.0, 100.0],
         centre_twin: false,
-        task: Task::ThreeCorners,
-        ask: "press near three different corners: the band takes the nearest each time",
+        ghosts: false,
+        task: Task::HeldCorner,
+        prediction: Prediction {
+            question: "press by one corner, then drag until another is nearer: which does the band hold?",
+            choices: &["the one it took", "the one now nearest"],
+            then: "then press by a corner and drag the pointer round to another",
+        },
     },
     Chapter {
         title: "Damping",
         sections: "§5.2.4",
         scene: "tutorial",
         integrator: None,
-        text: "Damping forces oppose the motion: −b v on the centre and −c I ω on the turn. \
-               They turn the band's work into heat, so the box always comes to rest: the ledger \
-               adds what the hand put in to the energy at the start and takes away what damping \
-               took out, which leaves E.",
+        text: "Damping opposes the motion: −b\u{a0}v on the centre and −c\u{a0}I\u{a0}ω on the turn. It \
+               turns kinetic energy into heat at the rate b\u{a0}|v|²\u{a0}+\u{a0}c\u{a0}I\u{a0}ω². The hand \
+               puts energy into the band as it moves the pointer, and at release the band's \
+               ½\u{a0}k\u{a0}|p\u{a0}−\u{a0}q|² leaves with the hand. The books add what the hand put in to \
+               the energy at the start and take away what damping took out; E differs from \
+               them only by the integrator's error, the last line. With b\u{a0}>\u{a0}0, \
+               c\u{a0}>\u{a0}0 and no band the box comes to rest; with c\u{a0}=\u{a0}0 a spin never stops, \
+               with b\u{a0}=\u{a0}0 a drift never does.",
         equations: &[
             Equation::LinearDamping,
             Equation::AngularDamping,
@@ -200,25 +262,36 @@ pub const CHAPTERS: [Chapter; 7] = [
         ],
         frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
+        ghosts: false,
         task: Task::ComeToRest,
-        ask: "pull, let go, and watch the energy leave until the box rests",
+        prediction: Prediction {
+            question: "once you let go, will the box come to rest?",
+            choices: &["it comes to rest", "it keeps moving"],
+            then: "then pull and let go (set b or c to 0 first, if you like)",
+        },
     },
     Chapter {
         title: "The update loop",
         sections: "§5.2.4; appendix §8.1: RigidBody.update, AngularDamping",
         scene: "tutorial",
         integrator: Some("seed"),
-        text: "The tutorial's own loop, run here by the seed integrator, its lines the \
-               seed's numbers for the next step: the angular damping first scales ω by \
-               e^(−c\u{a0}dt), 0.98 a step at 100\u{a0}Hz; the band's force and the damping force \
-               give a, the band's torque α; then ω and θ, then v and x, each from the one just \
-               updated. Other integrators take the same forces at other points of the step: G \
-               shows them all beside the box and P plots their error against their cost, the \
-               way into the lab.",
-        equations: &[Equation::Update],
+        text: "The tutorial's own loop, run here by the seed integrator; the lines are its \
+               numbers for the next step. Angular damping first scales ω by e^(−c\u{a0}dt), 0.98 a \
+               step at 100\u{a0}Hz; the forces give a and the band's torque α; then ω and θ, then \
+               v and x, each from the one just updated, so x moves with the new v. That order \
+               (semi-implicit Euler) keeps the energy's error bounded; explicit Euler moves x \
+               with the old v and gains energy step after step. The ghosts step both from the \
+               same start, their books' errors the last lines; the other ghosts are the other \
+               integrators, and P plots their error against their cost.",
+        equations: &[Equation::Update, Equation::UpdateOrder],
         frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
-        task: Task::StepFiveTimes,
-        ask: "pause (Space) and step (N) five times, reading each line",
+        ghosts: true,
+        task: Task::StepOrder,
+        prediction: Prediction {
+            question: "paused, one step (N): x moves by v dt with which v?",
+            choices: &["the v before the step", "the v after it"],
+            then: "then pause (Space) and step (N) while the box moves",
+        },
     },
 ];

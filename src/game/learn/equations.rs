@@ -9,7 +9,17 @@ use super::twin::Twin;
 use crate::game::shared::readable;
 use crate::physics::forces::ForceModel;
 use crate::physics::integrators::seed::{SeedStages, tutorial_stages};
-use crate::physics::{BandEnds, BodyState, EnergyLedger, MassProperties, SceneParams};
+use crate::physics::{
+    AutoSettings, BandEnds, BodyState, EnergyLedger, Integrator, MassProperties, SceneParams,
+    Stepper,
+};
+
+/// A ghost's energy and its books' error (E minus what the books say), for the update loop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GhostBooks {
+    pub energy: f64,
+    pub residual: f64,
+}
 
 /// Everything a chapter's equations read, for one frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -24,11 +34,19 @@ pub struct Quantities {
     /// The band's corner (world) and anchor, while a band acts.
     pub band: Option<(DVec2, DVec2)>,
     pub ledger: EnergyLedger,
+    /// The energy right after the latest step, which the books are kept against.
+    pub settled_energy: f64,
+    /// The integrator the game steps with.
+    pub integrator: Integrator,
+    /// The state after the next step, with the game's integrator, and Στ there.
+    pub next: Option<(BodyState, f64)>,
+    /// The point masses across the box, n (I = Σ mᵢ |rᵢ|² over n × n of them).
+    pub point_masses: u32,
+    /// The seed's and explicit Euler's ghosts, stepped from the same start.
+    pub update_order: Option<[GhostBooks; 2]>,
     pub dt: f64,
     /// The centre twin's state, when a chapter shows one ([`super::twin`]).
     pub twin: Option<BodyState>,
-    /// The moment of inertia the chapter started with, I₀.
-    pub inertia_at_start: f64,
     /// The `seed` integrator's stages for the next step from this state, its own numbers.
     pub seed: SeedStages,
 }
@@ -60,9 +78,13 @@ impl Quantities {
             angular_damping: params.angular_damping,
             band: band.map(|band| (band.attachment(&state), band.anchor)),
             ledger,
+            settled_energy: ledger.expected(),
+            integrator: Integrator::default(),
+            next: None,
+            point_masses: 1,
+            update_order: None,
             dt: params.dt(),
             twin: None,
-            inertia_at_start: mass.inertia(),
             seed,
         }
     }
@@ -75,12 +97,75 @@ impl Quantities {
         }
     }
 
-    /// Adds the moment of inertia the chapter started with.
-    pub fn with_inertia_at_start(self, inertia_at_start: f64) -> Self {
+    /// Adds the energy right after the latest step and the integrator that took it.
+    pub fn with_books(self, settled_energy: f64, integrator: Integrator) -> Self {
         Self {
-            inertia_at_start,
+            settled_energy,
+            integrator,
             ..self
         }
+    }
+
+    /// Adds the next step, taken on a copy with the game's integrator, and Στ after it.
+    pub fn with_next_step(
+        self,
+        mass: &MassProperties,
+        params: &SceneParams,
+        band: Option<BandEnds>,
+        auto: AutoSettings,
+    ) -> Self {
+        let mut stepper = Stepper {
+            params: *params,
+            mass: *mass,
+            state: self.state,
+            band,
+            integrator: self.integrator,
+            auto,
+        };
+        stepper.step(params.dt());
+        let after = Self {
+            state: stepper.state,
+            band: band.map(|band| (band.attachment(&stepper.state), band.anchor)),
+            ..self
+        };
+        Self {
+            next: Some((stepper.state, after.torque_sum())),
+            ..self
+        }
+    }
+
+    /// Adds the number of point masses across the box.
+    pub fn with_point_masses(self, point_masses: u32) -> Self {
+        Self {
+            point_masses,
+            ..self
+        }
+    }
+
+    /// Adds the seed's and explicit Euler's ghosts' books.
+    pub fn with_update_order(self, update_order: Option<[GhostBooks; 2]>) -> Self {
+        Self {
+            update_order,
+            ..self
+        }
+    }
+
+    /// Returns Σ mᵢ |rᵢ|² over n × n equal masses at the centres of the box's n × n cells.
+    pub fn point_mass_inertia(&self) -> f64 {
+        let n = self.point_masses.max(1);
+        let share = self.mass / f64::from(n * n);
+        let cell = self.size / f64::from(n);
+        let mut sum = 0.0;
+        for i in 0..n {
+            for j in 0..n {
+                let r = DVec2::new(
+                    (f64::from(i) + 0.5) * cell.x - 0.5 * self.size.x,
+                    (f64::from(j) + 0.5) * cell.y - 0.5 * self.size.y,
+                );
+                sum += share * r.length_squared();
+            }
+        }
+        sum
     }
 
     /// Returns the arm r from the centre to the band's corner (zero without a band).
@@ -98,7 +183,7 @@ impl Quantities {
     }
 
     /// Returns the band's torque τ = r × F.
-    fn band_torque(&self) -> f64 {
+    pub fn band_torque(&self) -> f64 {
         self.arm().perp_dot(self.band_force())
     }
 
@@ -141,7 +226,7 @@ fn n(value: f64) -> String {
 }
 
 /// Formats a factor after an operator: a negative one in parentheses, `× (−0.6)`.
-fn f(value: f64) -> String {
+fn f_(value: f64) -> String {
     if value.is_sign_negative() && value != 0.0 {
         format!("({})", n(value))
     } else {
@@ -184,7 +269,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
         Equation::AngularDecay => vec![format!(
             "dω/dt = −c ω = −{} × {} = {} rad/s²",
             n(q.angular_damping),
-            f(omega),
+            f_(omega),
             n(-q.angular_damping * omega)
         )],
         Equation::Arm => match q.band {
@@ -199,12 +284,28 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
         Equation::Torque => {
             let (r, f) = (q.arm(), q.band_force());
             vec![format!(
-                "τ = r × F = {} × {} = {}",
-                v(r),
-                v(f),
+                "τ = r × F = r_x F_y − r_y F_x = {} × {} − {} × {} = {}",
+                n(r.x),
+                f_(f.y),
+                f_(r.y),
+                f_(f.x),
                 n(q.band_torque())
             )]
         }
+        Equation::PointVelocity => match q.band {
+            Some(_) => {
+                let r = q.arm();
+                let perp = DVec2::new(-r.y, r.x);
+                vec![format!(
+                    "v_p = v + ω r⊥ = {} + {} × {} = {}",
+                    v(velocity),
+                    n(omega),
+                    v(perp),
+                    v(velocity + omega * perp)
+                )]
+            }
+            None => vec!["v_p = v + ω r⊥, r⊥ = (−r_y, r_x): at the band's corner".to_owned()],
+        },
         Equation::CentrePull => match (q.twin, q.band) {
             (Some(twin), Some(_)) => vec![
                 format!(
@@ -221,43 +322,62 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
             ],
             _ => vec!["twin (below): the box's band force at its centre, r = 0, τ = 0".to_owned()],
         },
+        Equation::PointMasses => {
+            let count = q.point_masses.max(1);
+            let sum = q.point_mass_inertia();
+            vec![format!(
+                "I ≈ Σ mᵢ |rᵢ|² over {count} × {count} masses of m / {} = {} ({}% of the box's)",
+                count * count,
+                n(sum),
+                n(100.0 * sum / q.inertia)
+            )]
+        }
         Equation::Inertia => vec![format!(
             "I = m (w² + h²) / 12 = {m} × ({}² + {}²) / 12 = {}",
             n(q.size.x),
             n(q.size.y),
             n(q.inertia)
         )],
+        Equation::AngularMomentum => {
+            let momentum = q.inertia * omega;
+            let mut lines = vec![format!(
+                "L = I ω = {} × {} = {}",
+                n(q.inertia),
+                f_(omega),
+                n(momentum)
+            )];
+            if let Some((after, torque_after)) = q.next {
+                let change = (q.inertia * after.angular.angular_velocity - momentum) / q.dt;
+                lines.push(format!(
+                    "over the next step ΔL / dt = {}; Στ goes {} → {}, mean {}",
+                    n(change),
+                    n(torque),
+                    n(torque_after),
+                    n(0.5 * (torque + torque_after))
+                ));
+            }
+            lines
+        }
         Equation::AngularAcceleration => vec![
             format!(
                 "Στ = τ_band + τ_damp = {} + {} = {}",
                 n(q.band_torque()),
-                f(q.damping_torque()),
+                f_(q.damping_torque()),
                 n(torque)
             ),
             format!(
                 "α = Στ / I = {} / {} = {} rad/s²",
-                f(torque),
+                f_(torque),
                 n(q.inertia),
                 n(torque / q.inertia)
             ),
         ],
-        Equation::BandShareOfAlpha => {
-            let share = q.band_torque() / q.inertia;
-            vec![
-                format!(
-                    "τ_band / I = {} / {} = {} rad/s²",
-                    f(q.band_torque()),
-                    n(q.inertia),
-                    n(share)
-                ),
-                format!(
-                    "with I₀ = {}: τ_band / I₀ = {}, and I₀ / I = {}",
-                    n(q.inertia_at_start),
-                    n(q.band_torque() / q.inertia_at_start),
-                    n(q.inertia_at_start / q.inertia)
-                ),
-            ]
-        }
+        Equation::BandShareOfAlpha => vec![format!(
+            "τ_band / I = {} / {} = {} rad/s²",
+            f_(q.band_torque()),
+            n(q.inertia),
+            n(q.band_torque() / q.inertia)
+        )],
         Equation::Spring => match q.band {
             Some((corner, anchor)) => vec![format!(
                 "F = −k (p − q) = −{} × ({} − {}) = {}",
@@ -270,12 +390,12 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
         },
         Equation::NearestCorner => match q.band {
             Some((corner, anchor)) => vec![format!(
-                "p = the corner nearest q = {}: {}, {} away",
-                v(anchor),
+                "p = the corner nearest q when pressed, held since = {}; q = {}, {} away",
                 v(corner),
+                v(anchor),
                 n(corner.distance(anchor))
             )],
-            None => vec!["p = the corner nearest the pointer, when pressed".to_owned()],
+            None => vec!["p = the corner nearest the pointer q, taken when pressed".to_owned()],
         },
         Equation::LinearDamping => vec![format!(
             "F_damp = −b v = −{} × {} = {}",
@@ -287,7 +407,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
             "τ_damp = −c I ω = −{} × {} × {} = {}",
             n(q.angular_damping),
             n(q.inertia),
-            f(omega),
+            f_(omega),
             n(q.damping_torque())
         )],
         Equation::Energy => {
@@ -300,13 +420,23 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
                 n(linear + turning + band)
             )]
         }
-        Equation::Ledger => vec![format!(
-            "E₀ + W_hand − W_damp = {} + {} − {} = {}",
-            n(q.ledger.initial),
-            f(q.ledger.work_in),
-            f(q.ledger.dissipated),
-            n(q.ledger.initial + q.ledger.work_in - q.ledger.dissipated)
-        )],
+        Equation::Ledger => {
+            let books = q.ledger.expected();
+            vec![
+                format!(
+                    "books: E₀ + W_hand − W_damp = {} + {} − {} = {}",
+                    n(q.ledger.initial),
+                    f_(q.ledger.work_in),
+                    f_(q.ledger.dissipated),
+                    n(books)
+                ),
+                format!(
+                    "E after the step − books = {}: the error of {}",
+                    n(q.settled_energy - books),
+                    q.integrator.name()
+                ),
+            ]
+        }
         Equation::Update => {
             // The `seed` integrator's own stages for the next step, in its order.
             let s = &q.seed;
@@ -315,7 +445,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
                 format!(
                     "1  ω ← e^(−c dt) ω = {} × {} = {}   (c = {} /s)",
                     n(s.damping_factor),
-                    f(omega),
+                    f_(omega),
                     n(s.damped_angular_velocity),
                     n(q.angular_damping)
                 ),
@@ -327,7 +457,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
                 ),
                 format!(
                     "3  α = τ_band / I = {} / {} = {}",
-                    f(s.torque),
+                    f_(s.torque),
                     n(q.inertia),
                     n(s.angular_acceleration)
                 ),
@@ -344,5 +474,22 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
                 ),
             ]
         }
+        Equation::UpdateOrder => match q.update_order {
+            Some([seed, euler]) => vec![
+                format!(
+                    "seed's ghost: E = {}, E − books = {}",
+                    n(seed.energy),
+                    n(seed.residual)
+                ),
+                format!(
+                    "explicit Euler's ghost: E = {}, E − books = {}",
+                    n(euler.energy),
+                    n(euler.residual)
+                ),
+            ],
+            None => {
+                vec!["the ghosts (G) step seed and explicit Euler from the same start".to_owned()]
+            }
+        },
     }
 }

@@ -7,29 +7,36 @@
 
 pub mod chapters;
 pub mod equations;
+mod experiments;
+
+pub use self::experiments::Verdict;
+use self::experiments::{Look, Progress};
 pub mod twin;
 
+use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
-use self::chapters::{CHAPTERS, Equation, Task};
-use self::equations::Quantities;
+use self::chapters::{CHAPTERS, Equation};
+use self::equations::{GhostBooks, Quantities};
 use self::twin::{CentreTwin, TWIN_OFFSET};
 use crate::game::camera::{CameraFrame, Stage};
+use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::layout::{Card, CardSpec, Cards, RegisterCard, Slots};
 use crate::game::pointer::Grip;
+use crate::game::replays::links::{ShareLink, publish};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::say_it_goes_on;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
-use crate::game::shared::{DockHidden, Mode, Overlays, SceneName};
+pub use crate::game::shared::Learn;
+use crate::game::shared::{DockHidden, Mode, Overlays, SceneName, StatusMessage};
 use crate::game::simulation::{
     Band, Bodies, EnergyBooks, ResetScene, RigidBodyQueryReadOnly, RigidBox, StepCount,
     acting_band, rigid_box, set_fixed_step,
 };
 use crate::game::theme::{self, colour, size, space};
-use crate::physics::{
-    AutoSettings, BodyState, Integrator, MassProperties, SceneParams, kinetic_energy,
-};
+use crate::physics::{AutoSettings, BodyState, Integrator, MassProperties, SceneParams};
+use crate::replay::link::Link;
 
 pub struct LearnPlugin;
 
@@ -45,6 +52,7 @@ impl Plugin for LearnPlugin {
         .init_resource::<Learning>()
         .init_resource::<CentreTwin>()
         .add_observer(learn)
+        .add_observer(share_the_chapter)
         .add_observer(twin::restart_on_reset)
         .add_systems(Startup, spawn_card)
         .add_systems(OnEnter(Mode::Learn), save_the_game)
@@ -70,44 +78,46 @@ impl Card {
     pub const LEARN: Card = Card("learn");
 }
 
-/// What the learn controls ask.
-#[derive(Event, Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Learn {
-    /// Into learn mode at its first chapter, or out of it.
-    Toggle,
-    Next,
-    Previous,
-    /// This chapter (entering the mode if need be).
-    Chapter(usize),
-}
-
-/// Learn mode's chapters: the one shown, what each task has seen, and the game to go back to.
+/// Learn mode's chapters: the one shown, its prediction and experiment, the game to go back to.
 ///
 /// Whether the mode is on is the state [`Mode`], asked nowhere else.
-#[derive(Resource, Debug, Default)]
+#[derive(Resource, Debug)]
 pub struct Learning {
     /// The chapter shown in learn mode (the one it shows next when entered).
     pub chapter: usize,
-    /// Each chapter's task done.
+    /// Each chapter's prediction found right by its experiment.
     pub done: [bool; CHAPTERS.len()],
+    /// The point masses across the box (the moment of inertia's sum is over n × n).
+    pub point_masses: u32,
     progress: Progress,
     saved: Option<Box<Saved>>,
 }
 
-/// What a task has seen since its chapter began.
-#[derive(Debug, Default, Clone)]
-struct Progress {
-    inertia_at_start: f64,
-    /// The player's band: where its pull started (position, orientation).
-    ///
-    /// `turned` says whether the box turned too much since.
-    pull_start: Option<(Vec2, f64)>,
-    turned: bool,
-    corners: Vec<[i64; 2]>,
-    pulled: bool,
-    most_energy: f64,
-    steps_seen: u64,
-    single_steps: u32,
+impl Default for Learning {
+    fn default() -> Self {
+        Self {
+            chapter: 0,
+            done: [false; CHAPTERS.len()],
+            point_masses: 4,
+            progress: Progress::default(),
+            saved: None,
+        }
+    }
+}
+
+/// The most point masses across the box.
+pub const MOST_POINT_MASSES: u32 = 64;
+
+impl Learning {
+    /// Returns the answer chosen for this chapter's prediction.
+    pub fn predicted(&self) -> Option<usize> {
+        self.progress.predicted
+    }
+
+    /// Returns what the chapter's experiment found last, against the answer held then.
+    pub fn verdict(&self) -> Option<&Verdict> {
+        self.progress.verdict.as_ref()
+    }
 }
 
 /// The game as it was when learn mode was entered.
@@ -160,8 +170,50 @@ fn learn(learn: On<Learn>, mut commands: Commands) {
             (Learn::Previous, Some(index)) => go_to(world, index.saturating_sub(1)),
             (Learn::Chapter(index), Some(_)) if index <= last => go_to(world, index),
             (Learn::Chapter(index), None) if index <= last => enter_at(world, index),
+            (Learn::Chapter(index), _) => {
+                world.resource_mut::<StatusMessage>().0 = Some(format!(
+                    "learn: no chapter {} (there are {})",
+                    index + 1,
+                    CHAPTERS.len()
+                ));
+            }
+            (Learn::Predict(choice), Some(index))
+                if choice < CHAPTERS[index].prediction.choices.len() =>
+            {
+                let mut learning = world.resource_mut::<Learning>();
+                learning.progress.predicted = Some(choice);
+                learning.progress.verdict = None;
+            }
+            (Learn::PointMasses(by), Some(_)) => {
+                let mut learning = world.resource_mut::<Learning>();
+                let n = learning.point_masses.saturating_add_signed(by);
+                learning.point_masses = n.clamp(1, MOST_POINT_MASSES);
+            }
             _ => {}
         }
+    });
+}
+
+/// Writes the link of the chapter shown (`?v=1&learn=N`), as the share control asks in learn mode.
+///
+/// Everything else of the game is the chapter's own, so the link needs nothing more.
+fn share_the_chapter(share: On<ShareLink>, mut commands: Commands) {
+    if share.game {
+        return;
+    }
+    commands.queue(|world: &mut World| {
+        let Some(index) = chapter_shown(world) else {
+            return;
+        };
+        let link = Link {
+            learn: Some(index as u32 + 1),
+            ..default()
+        };
+        let said = match link.to_query() {
+            Ok(query) => publish(&query, false),
+            Err(error) => format!("no link: {error}"),
+        };
+        world.resource_mut::<StatusMessage>().0 = Some(said);
     });
 }
 
@@ -209,7 +261,7 @@ fn save_the_game(world: &mut World) {
 /// Shows chapter `index` in learn mode.
 ///
 /// The chapter's scene is loaded (its scripted pull plays until the player presses), its
-/// integrator put in place, its task started over, the *Learn* card open.
+/// integrator put in place, its prediction and experiment started over, the *Learn* card open.
 fn go_to(world: &mut World, index: usize) {
     let Some(chapter) = CHAPTERS.get(index) else {
         return;
@@ -221,6 +273,8 @@ fn go_to(world: &mut World, index: usize) {
     let mut overlays = world.resource_mut::<Overlays>();
     // The arrows of force and velocity are the chapters' pictures.
     overlays.vectors = true;
+    // The update loop's seed and explicit Euler step beside the box as ghosts.
+    overlays.ghosts |= chapter.ghosts;
     // The chapter is in the dock: it shows.
     world.resource_mut::<DockHidden>().0 = false;
     world.resource_mut::<Cards>().set(Card::LEARN, true);
@@ -229,16 +283,9 @@ fn go_to(world: &mut World, index: usize) {
         close: Some(Rect::new(left, bottom, right, top)),
         copy_at: chapter.centre_twin.then_some(TWIN_OFFSET.as_vec2()),
     };
-    let inertia = world
-        .resource::<SceneParams>()
-        .mass_properties()
-        .map_or(0.0, |mass| mass.inertia());
     let mut learning = world.resource_mut::<Learning>();
     learning.chapter = index;
-    learning.progress = Progress {
-        inertia_at_start: inertia,
-        ..default()
-    };
+    learning.progress = Progress::default();
 }
 
 /// Puts the game back as learn mode was entered, as the mode is left.
@@ -287,13 +334,17 @@ fn restore_the_game(world: &mut World) {
     say_it_goes_on(world);
 }
 
-/// Checks the chapter's task, after the frame's steps, against what the steps did.
+/// Checks the chapter's experiment, after the frame's steps, against what the steps did.
+///
+/// When it concludes, the answer held at its start is judged by what happened.
+#[allow(clippy::too_many_arguments)]
 fn check_task(
     mut learning: ResMut<Learning>,
     params: Res<SceneParams>,
     grip: Res<Grip>,
     steps: Res<StepCount>,
     time: Res<Time<Virtual>>,
+    fixed: Res<Time<Fixed>>,
     boxes: Bodies,
     bands: Query<&Band>,
 ) {
@@ -301,74 +352,36 @@ fn check_task(
     let Ok(body) = boxes.single() else {
         return;
     };
-    let mass = body.mass;
-    // Only the player's own band counts, not a scene's script.
-    let band = acting_band(body.entity, &bands).filter(|_| grip.0.is_some());
-    let state = body.state();
+    let any_band = acting_band(body.entity, &bands);
     let progress = &mut learning.progress;
     let stepped = steps.0.saturating_sub(progress.steps_seen);
     let first_look = progress.steps_seen == 0;
     progress.steps_seen = steps.0;
-    let done = match CHAPTERS[index].task {
-        Task::MoveWithoutTurning => {
-            let here = (state.linear.position.as_vec2(), state.angular.orientation);
-            match (band, progress.pull_start) {
-                (Some(_), None) => {
-                    progress.pull_start = Some(here);
-                    progress.turned = false;
-                    false
-                }
-                (Some(_), Some((from, angle))) => {
-                    progress.turned |= (here.1 - angle).abs() >= 0.05;
-                    !progress.turned && here.0.distance(from) >= 40.0
-                }
-                (None, _) => {
-                    progress.pull_start = None;
-                    false
-                }
-            }
-        }
-        Task::SpinWithoutDamping => {
-            params.angular_damping == 0.0 && state.angular.angular_velocity.abs() > 1.0
-        }
-        Task::SpinClockwise => band.is_some() && state.angular.angular_velocity < -1.0,
-        Task::DoubleTheInertia => {
-            // A side times √2 doubles I up to the last bit.
-            let twice = 2.0 * progress.inertia_at_start * (1.0 - 1e-12);
-            progress.inertia_at_start > 0.0 && mass.inertia() >= twice
-        }
-        Task::ThreeCorners => {
-            if let Some(band) = band {
-                let corner = [
-                    band.local_point.x.signum() as i64,
-                    band.local_point.y.signum() as i64,
-                ];
-                if !progress.corners.contains(&corner) {
-                    progress.corners.push(corner);
-                }
-            }
-            progress.corners.len() >= 3
-        }
-        Task::ComeToRest => {
-            let energy = kinetic_energy(&state, mass);
-            progress.pulled |= band.is_some();
-            if progress.pulled {
-                progress.most_energy = progress.most_energy.max(energy);
-            }
-            progress.pulled
-                && band.is_none()
-                && progress.most_energy > 1.0
-                && energy < 0.01 * progress.most_energy
-        }
-        Task::StepFiveTimes => {
-            if time.is_paused() && !first_look && stepped == 1 {
-                progress.single_steps += 1;
-            }
-            progress.single_steps >= 5
-        }
+    let single_step = time.is_paused() && progress.was_paused && !first_look && stepped == 1;
+    progress.was_paused = time.is_paused();
+    let look = Look {
+        state: body.state(),
+        mass: body.mass,
+        params: &params,
+        player_band: any_band.filter(|_| grip.0.is_some()),
+        any_band,
+        clock: fixed.elapsed_secs_f64(),
+        single_step,
     };
-    if done && !learning.done[index] {
-        learning.done[index] = true;
+    let found = experiments::observe(CHAPTERS[index].task, progress, &look);
+    progress.last_state = Some(look.state);
+    if let Some((outcome, why)) = found {
+        let verdict = Verdict {
+            answer: progress.committed,
+            outcome,
+            why,
+        };
+        progress.judged = true;
+        let right = verdict.right();
+        progress.verdict = Some(verdict);
+        if right {
+            learning.done[index] = true;
+        }
     }
 }
 
@@ -379,7 +392,10 @@ pub enum LearnText {
     Body,
     /// A line of the chapter's equations, in the colour of what it is about.
     Line(usize),
+    /// The prediction asked, or the answer chosen, and what to do.
     Task,
+    /// What the experiment found, against the answer.
+    Verdict,
 }
 
 /// The most equation lines a chapter writes (a force at a point's seven).
@@ -399,7 +415,9 @@ fn equation_colour(equation: Equation) -> Color {
         Equation::Torque
         | Equation::AngularAcceleration
         | Equation::BandShareOfAlpha
+        | Equation::AngularMomentum
         | Equation::AngularDamping => colour::TORQUE,
+        Equation::PointVelocity => colour::VELOCITY,
         _ => colour::TEXT,
     }
 }
@@ -409,6 +427,23 @@ fn equation_colour(equation: Equation) -> Color {
 /// There the equations' changing lengths never move them.
 #[derive(Component, Debug)]
 pub(crate) struct ChapterButtons;
+
+/// Where the panel puts the prediction's answers: under the question.
+#[derive(Component, Debug)]
+pub(crate) struct ChoiceButtons;
+
+/// The button of the prediction's answer at this place.
+///
+/// Learn mode writes its label and hides it where the chapter has fewer answers.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ChoiceButton(pub usize);
+
+/// The most answers a prediction offers.
+pub const CHOICES: usize = 3;
+
+/// The buttons for more or fewer point masses, shown where the chapter sums them.
+#[derive(Component, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PointMassButton;
 
 fn spawn_card(mut commands: Commands, slots: Slots) {
     let Some(card) = slots.card_body(Card::LEARN) else {
@@ -444,6 +479,17 @@ fn spawn_card(mut commands: Commands, slots: Slots) {
         text(&mut commands, LearnText::Line(line), size::BODY, 1.0);
     }
     text(&mut commands, LearnText::Task, size::BODY, 3.0);
+    commands.spawn((
+        Name::new("Learn answers"),
+        ChoiceButtons,
+        Node {
+            flex_direction: FlexDirection::Row,
+            flex_wrap: FlexWrap::Wrap,
+            ..default()
+        },
+        ChildOf(card),
+    ));
+    text(&mut commands, LearnText::Verdict, size::BODY, 3.0);
 }
 
 /// Writes the chapter's texts from the game's state this frame, each with its colour.
@@ -480,35 +526,127 @@ fn chapter_texts(
         let (text, colour) = lines.get(line).cloned().unwrap_or_default();
         texts.push((LearnText::Line(line), text, colour));
     }
-    let task = if learning.done[index] {
-        (format!("✓ {}: done", chapter.ask), colour::VELOCITY)
+    let prediction = &chapter.prediction;
+    let done = if learning.done[index] {
+        "✓ done. "
     } else {
-        (format!("▸ {}", chapter.ask), colour::TEXT)
+        ""
+    };
+    let task = match learning
+        .progress
+        .predicted
+        .and_then(|i| prediction.choices.get(i))
+    {
+        Some(answer) => format!(
+            "{done}▸ {} You say: {answer}; {}",
+            prediction.question, prediction.then
+        ),
+        None => format!(
+            "{done}▸ Predict: {} Choose an answer below, {}",
+            prediction.question, prediction.then
+        ),
+    };
+    let task = (task, colour::TEXT);
+    let verdict = match learning.verdict() {
+        None => (String::new(), colour::DIM),
+        Some(verdict) => {
+            let said = |choice: Option<usize>| {
+                choice
+                    .and_then(|i| prediction.choices.get(i))
+                    .copied()
+                    .unwrap_or("nothing")
+            };
+            match (verdict.answer, verdict.outcome) {
+                (_, None) => (format!("… {}", verdict.why), colour::DIM),
+                (None, Some(outcome)) => (
+                    format!(
+                        "It was: {}; {}. No answer was chosen before it began: choose one, then again.",
+                        said(Some(outcome)),
+                        verdict.why
+                    ),
+                    colour::DIM,
+                ),
+                (Some(_), Some(_)) if verdict.right() => (
+                    format!("✓ Right: {}. {}", said(verdict.outcome), verdict.why),
+                    colour::VELOCITY,
+                ),
+                (answer, outcome) => (
+                    format!(
+                        "✗ You said {}; it was {}: {}. Choose again and try once more.",
+                        said(answer),
+                        said(outcome),
+                        verdict.why
+                    ),
+                    colour::FORCE,
+                ),
+            }
+        }
     };
     texts.push((LearnText::Task, task.0, task.1));
+    texts.push((LearnText::Verdict, verdict.0, verdict.1));
     Some(texts)
+}
+
+/// The answers' buttons and the point masses' buttons, with their labels.
+type ChoiceButtonsQuery<'w, 's> = Query<
+    'w,
+    's,
+    (
+        &'static mut Node,
+        &'static Children,
+        Option<&'static ChoiceButton>,
+    ),
+    Or<(With<ChoiceButton>, With<PointMassButton>)>,
+>;
+
+/// What the card's numbers are read from: the settings, the books, the twin and the ghosts.
+#[derive(SystemParam)]
+struct CardSources<'w> {
+    params: Res<'w, SceneParams>,
+    integrator: Res<'w, Integrator>,
+    auto: Res<'w, AutoSettings>,
+    books: Res<'w, EnergyBooks>,
+    twin: Res<'w, CentreTwin>,
+    ghosts: Res<'w, Ghosts>,
 }
 
 /// Writes the card from this frame's components.
 fn show_chapter(
     learning: Res<Learning>,
-    params: Res<SceneParams>,
-    books: Res<EnergyBooks>,
-    twin: Res<CentreTwin>,
+    sources: CardSources,
     boxes: Bodies,
     bands: Query<&Band>,
     mut texts: Query<(&LearnText, &mut Text, &mut TextColor)>,
+    mut buttons: ChoiceButtonsQuery,
+    mut labels: Query<&mut Text, Without<LearnText>>,
 ) {
+    let CardSources {
+        params,
+        integrator,
+        auto,
+        books,
+        twin,
+        ghosts,
+    } = sources;
+    let Some(chapter) = CHAPTERS.get(learning.chapter) else {
+        return;
+    };
     let quantities = boxes.single().ok().map(|body| {
-        Quantities::of(
-            body.state(),
-            body.mass,
-            &params,
-            acting_band(body.entity, &bands),
-            books.ledger,
-        )
-        .with_twin(twin.body.as_ref())
-        .with_inertia_at_start(learning.progress.inertia_at_start)
+        let band = acting_band(body.entity, &bands);
+        let energies = books.energies;
+        let q = Quantities::of(body.state(), body.mass, &params, band, books.ledger)
+            .with_books(
+                energies.linear + energies.rotational + energies.band,
+                *integrator,
+            )
+            .with_twin(twin.body.as_ref())
+            .with_point_masses(learning.point_masses)
+            .with_update_order(update_order(&ghosts));
+        if chapter.equations.contains(&Equation::AngularMomentum) {
+            q.with_next_step(body.mass, &params, band, *auto)
+        } else {
+            q
+        }
     });
     let Some(shown) = chapter_texts(&learning, quantities.as_ref()) else {
         return;
@@ -521,4 +659,43 @@ fn show_chapter(
             colour.set_if_neq(TextColor(*wanted));
         }
     }
+    let choices = chapter.prediction.choices;
+    let sums = chapter.equations.contains(&Equation::PointMasses);
+    for (mut node, children, choice) in &mut buttons {
+        let label = match choice {
+            Some(ChoiceButton(i)) => choices.get(*i).copied(),
+            None => sums.then_some(""),
+        };
+        let display = if label.is_some() {
+            Display::Flex
+        } else {
+            Display::None
+        };
+        if node.display != display {
+            node.display = display;
+        }
+        if let Some(label) = label.filter(|label| !label.is_empty())
+            && let Some(mut text) = children
+                .first()
+                .and_then(|child| labels.get_mut(*child).ok())
+            && text.0 != label
+        {
+            text.0 = label.to_owned();
+        }
+    }
+}
+
+/// Returns the books of the seed's and explicit Euler's ghosts, while the ghosts step.
+fn update_order(ghosts: &Ghosts) -> Option<[GhostBooks; 2]> {
+    let books = |integrator: Integrator| {
+        ghosts
+            .ghosts
+            .iter()
+            .find(|ghost| ghost.kind == GhostKind::Method(integrator))
+            .map(|ghost| GhostBooks {
+                energy: ghost.stepper.energy(),
+                residual: ghost.residual(),
+            })
+    };
+    Some([books(Integrator::Seed)?, books(Integrator::Euler)?])
 }

@@ -11,7 +11,7 @@ use crate::game::replays::playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::GameSystems;
-use crate::game::shared::{DockHidden, Overlays, SceneName, StatusMessage};
+use crate::game::shared::{DockHidden, Learn, Mode, Overlays, SceneName, StatusMessage};
 use crate::game::simulation::set_fixed_step;
 use crate::physics::{Integrator, Scene, SceneParams};
 use crate::replay::link::{Link, LinkOverlays};
@@ -67,7 +67,21 @@ fn open_pending_link(mut commands: Commands) {
 fn open_link(world: &mut World, link: Link) -> Vec<String> {
     let mut problems = Vec::new();
     let settings_keys = link.settings_keys();
-    if let Some(replay) = link.replay {
+    if let Some(chapter) = link.learn {
+        // The chapter sets its own scene and settings, as its buttons do.
+        let mut left = settings_keys.clone();
+        if link.replay.is_some() {
+            left.push("replay");
+        }
+        if !left.is_empty() {
+            problems.push(format!(
+                "{}: left: the link's chapter sets the scene and its settings",
+                left.join(", ")
+            ));
+        }
+        world.trigger(Learn::Chapter(chapter.saturating_sub(1) as usize));
+        world.flush();
+    } else if let Some(replay) = link.replay {
         if !settings_keys.is_empty() {
             problems.push(format!(
                 "{}: left: the link's replay sets the scene and its settings",
@@ -174,6 +188,10 @@ pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
 fn share(share: On<ShareLink>, mut commands: Commands) {
     let game = share.game;
     commands.queue(move |world: &mut World| {
+        // In learn mode the link is the chapter's, which learn mode writes.
+        if !game && *world.resource::<State<Mode>>().get() == Mode::Learn {
+            return;
+        }
         let said = match current_link(world, game).and_then(|link| link.to_query()) {
             Ok(query) => publish(&query, game),
             Err(error) => format!("no link: {error}"),
@@ -186,7 +204,7 @@ fn share(share: On<ShareLink>, mut commands: Commands) {
 ///
 /// Natively the link is printed (the terminal is where a long one can be copied from); in the
 /// browser it becomes the page's address and is copied.
-fn publish(query: &str, game: bool) -> String {
+pub(crate) fn publish(query: &str, game: bool) -> String {
     #[cfg(not(target_arch = "wasm32"))]
     let (address, place) = {
         println!("{query}");

@@ -19,7 +19,7 @@ use crate::game::schedule::ScreenSystems;
 use crate::game::shared::{Mode, Overlays};
 use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox, interpolated_state};
 use crate::game::theme::colour;
-use crate::physics::{Integrator, MassProperties, SCENE_SIZE, SceneParams};
+use crate::physics::{BodyState, Integrator, MassProperties, SCENE_SIZE, SceneParams};
 
 const BOX_FILL: Color = Color::srgb(0.16, 0.42, 0.72);
 pub const BOX_OUTLINE: Color = Color::WHITE;
@@ -227,6 +227,8 @@ fn draw_learning(
         return;
     };
     let shows = |equation: Equation| chapter.equations.contains(&equation);
+    let [left, _, _, top] = chapter.frame;
+    axes_marker(&mut gizmos, Vec2::new(left + 14.0, top - 44.0));
     for (body, snapshots, mass) in &bodies {
         let state = interpolated_state(snapshots, &fixed_time);
         let centre = state.linear.position.as_vec2();
@@ -242,6 +244,9 @@ fn draw_learning(
                 let arrow = force_arrow(band.ends.wrench(&state, params.stiffness).force);
                 gizmos.arrow_2d(beside.as_vec2(), (beside + arrow).as_vec2(), FORCE_COLOUR);
             }
+        }
+        if shows(Equation::PointMasses) {
+            point_masses(&mut gizmos, &state, mass.size(), learning.point_masses);
         }
         if let Some(band) = band {
             let corner = band.ends.attachment(&state).as_vec2();
@@ -268,6 +273,40 @@ fn draw_learning(
             let corner = state.local_to_world(nearest).as_vec2();
             gizmos.circle_2d(corner, 6.0, colour::FORCE);
             gizmos.line_2d(corner, anchor.as_vec2(), colour::FORCE.with_alpha(0.4));
+        }
+    }
+}
+
+/// Draws the axes, x to the right and y up, and an arc from x to y: positive θ, counter-clockwise.
+fn axes_marker(gizmos: &mut Gizmos, origin: Vec2) {
+    const LENGTH: f32 = 30.0;
+    let dim = colour::DIM;
+    gizmos.arrow_2d(origin, origin + Vec2::X * LENGTH, dim);
+    gizmos.arrow_2d(origin, origin + Vec2::Y * LENGTH, dim);
+    let radius = 0.6 * LENGTH;
+    let at = |angle: f32| origin + radius * Vec2::from_angle(angle);
+    let quarter = std::f32::consts::FRAC_PI_2;
+    gizmos.linestrip_2d((2..=14).map(|k| at(quarter * k as f32 / 16.0)), dim);
+    let tip = at(quarter * 14.0 / 16.0);
+    let ahead = Vec2::from_angle(quarter * 14.0 / 16.0 + quarter);
+    for side in [-0.5f32, 0.5] {
+        gizmos.line_2d(tip, tip + Vec2::from_angle(side).rotate(-ahead) * 5.0, dim);
+    }
+}
+
+/// Draws the n × n point masses whose Σ mᵢ |rᵢ|² the moment of inertia's chapter sums.
+fn point_masses(gizmos: &mut Gizmos, state: &BodyState, size: DVec2, n: u32) {
+    let n = n.max(1);
+    let cell = size / f64::from(n);
+    let radius = (0.25 * cell.min_element()).clamp(0.6, 3.0) as f32;
+    for i in 0..n {
+        for j in 0..n {
+            let local = DVec2::new(
+                (f64::from(i) + 0.5) * cell.x - 0.5 * size.x,
+                (f64::from(j) + 0.5) * cell.y - 0.5 * size.y,
+            );
+            let at = state.local_to_world(local).as_vec2();
+            gizmos.circle_2d(at, radius, colour::TEXT);
         }
     }
 }

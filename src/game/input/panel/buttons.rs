@@ -50,27 +50,29 @@ pub(super) fn spawn_button(
     parent: Entity,
     label: &str,
     does: PanelButton,
-) {
-    commands.spawn((
-        Name::new(format!("Panel button {label}")),
-        Button,
-        // On the press, not the release: a quick tap (down and up in one frame) still counts.
-        ActivateOnPress,
-        does,
-        Node {
-            min_height: px(BUTTON_HEIGHT),
-            padding: UiRect::axes(px(8), px(4)),
-            margin: UiRect::all(px(2)),
-            border: UiRect::all(px(1)),
-            justify_content: JustifyContent::Center,
-            align_items: AlignItems::Center,
-            ..default()
-        },
-        BackgroundColor(BUTTON),
-        BorderColor::all(BORDER),
-        ChildOf(parent),
-        children![text(label)],
-    ));
+) -> Entity {
+    commands
+        .spawn((
+            Name::new(format!("Panel button {label}")),
+            Button,
+            // On the press, not the release: a quick tap (down and up in one frame) still counts.
+            ActivateOnPress,
+            does,
+            Node {
+                min_height: px(BUTTON_HEIGHT),
+                padding: UiRect::axes(px(8), px(4)),
+                margin: UiRect::all(px(2)),
+                border: UiRect::all(px(1)),
+                justify_content: JustifyContent::Center,
+                align_items: AlignItems::Center,
+                ..default()
+            },
+            BackgroundColor(BUTTON),
+            BorderColor::all(BORDER),
+            ChildOf(parent),
+            children![text(label)],
+        ))
+        .id()
 }
 
 fn press(does: PanelButton, cards: &mut Cards, shape: Shape, actions: &mut MessageWriter<Action>) {

@@ -18,7 +18,9 @@ use bevy::ui_widgets::{ButtonPlugin, SliderPlugin};
 
 use crate::game::input::controls::{Action, Parameter, help_line};
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slot, Slots, card_line};
-use crate::game::learn::ChapterButtons;
+use crate::game::learn::{
+    CHOICES, ChapterButtons, ChoiceButton, ChoiceButtons, Learning, PointMassButton,
+};
 #[cfg(target_arch = "wasm32")]
 use crate::game::schedule::AfterBevySystems;
 use crate::game::schedule::{GameSystems, ScreenSystems};
@@ -108,7 +110,13 @@ fn spawn_row(commands: &mut Commands, parent: Entity, title: &str) -> Entity {
 /// Spawns learn mode's buttons where its card keeps them.
 ///
 /// The card is spawned in `Startup`, so this runs in `PostStartup` to find it.
-fn spawn_chapter_buttons(mut commands: Commands, rows: Query<Entity, With<ChapterButtons>>) {
+///
+/// The answers' labels are the chapter's, written by learn mode, which also hides the unused.
+fn spawn_chapter_buttons(
+    mut commands: Commands,
+    rows: Query<Entity, With<ChapterButtons>>,
+    answers: Query<Entity, With<ChoiceButtons>>,
+) {
     for row in &rows {
         for (label, action) in [
             ("◂ back", Action::PreviousChapter),
@@ -116,6 +124,22 @@ fn spawn_chapter_buttons(mut commands: Commands, rows: Query<Entity, With<Chapte
             ("leave", Action::Learn),
         ] {
             spawn_button(&mut commands, row, label, PanelButton::Send(action));
+        }
+        for (label, by) in [("n −", -1), ("n +", 1)] {
+            let button = spawn_button(
+                &mut commands,
+                row,
+                label,
+                PanelButton::Send(Action::PointMasses(by)),
+            );
+            commands.entity(button).insert(PointMassButton);
+        }
+    }
+    for row in &answers {
+        for choice in 0..CHOICES {
+            let does = PanelButton::Send(Action::Predict(choice));
+            let button = spawn_button(&mut commands, row, "", does);
+            commands.entity(button).insert(ChoiceButton(choice));
         }
     }
 }
@@ -248,6 +272,7 @@ struct Shown<'w> {
     dock_hidden: Res<'w, DockHidden>,
     mode: Res<'w, State<Mode>>,
     clocks: Clocks<'w>,
+    learning: Res<'w, Learning>,
 }
 
 /// Shows what the resources say: the panel open or folded, which buttons are lit, the values.
@@ -265,6 +290,7 @@ fn show_state(
         dock_hidden,
         mode,
         clocks,
+        learning,
     } = shown;
     let paused = clocks.paused();
     for (button, mut background, children) in &mut buttons {
@@ -283,6 +309,9 @@ fn show_state(
             PanelButton::Send(Action::ToggleTrail) => (overlays.trail, None),
             PanelButton::Send(Action::ToggleDock) => (!dock_hidden.0, None),
             PanelButton::Send(Action::Learn) => (*mode.get() == Mode::Learn, None),
+            PanelButton::Send(Action::Predict(choice)) => {
+                (learning.predicted() == Some(choice), None)
+            }
             PanelButton::Send(_) => (false, None),
         };
         background.set_if_neq(BackgroundColor(if lit { LIT } else { BUTTON }));
