@@ -418,3 +418,55 @@ fn link_sizes() {
         assert!(fits[1].is_some_and(|s| s >= 15.0), "{name}: {fits:?}");
     }
 }
+
+/// A scene opened by a link as the game starts plays its scripted pull to the recorded bits: the
+/// fixed clock is at the scene's rate before the first frame (it once built the scene's steps
+/// on Bevy's default 64 Hz, and the replay ended after 192 steps, its states differing).
+#[test]
+fn a_scene_opened_by_a_link_at_start_plays_to_its_recorded_bits() {
+    for link in ["?v=1&scene=tutorial", "?v=1&learn=3"] {
+        let mut game = opened(link);
+        game.update(400);
+        let said = status(&mut game);
+        assert!(
+            said.contains("replay over: 300 steps, the recorded states to the bit"),
+            "{link}: {said}"
+        );
+    }
+}
+
+/// A teacher's link opens learn mode at its chapter, and C there writes that link back; a
+/// chapter past the last is named, and settings keys beside a chapter are left and named.
+#[test]
+fn a_link_opens_a_chapter_and_the_share_control_writes_the_chapters_link() {
+    use rubber_band_box::game::input::controls::Action;
+    use rubber_band_box::game::learn::chapter_shown;
+    let mut game = opened("?v=1&learn=4");
+    game.update(2);
+    assert_eq!(chapter_shown(game.world()), Some(3));
+    game.world().write_message(Action::ShareLink);
+    game.update(1);
+    assert!(
+        status(&mut game).ends_with("?v=1&learn=4"),
+        "{}",
+        status(&mut game)
+    );
+    let mut game = opened("?v=1&learn=9");
+    game.update(2);
+    assert_eq!(chapter_shown(game.world()), None);
+    assert!(
+        status(&mut game).contains("no chapter 9 (there are 7)"),
+        "{}",
+        status(&mut game)
+    );
+    let mut game = opened("?v=1&k=1e5&learn=2");
+    game.update(2);
+    assert_eq!(chapter_shown(game.world()), Some(1));
+    let said = status(&mut game);
+    assert!(
+        said.contains("k: left: the link's chapter sets the scene and its settings"),
+        "{said}"
+    );
+    let (_, problems) = Link::parse("?learn=0");
+    assert_eq!(problems.len(), 1);
+}

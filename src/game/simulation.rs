@@ -37,7 +37,9 @@ impl Plugin for SimulationPlugin {
             .init_resource::<ResetAt>()
             .init_resource::<StepCount>()
             .init_resource::<EnergyBooks>()
-            .add_systems(Startup, spawn_box)
+            // The clock at the scene's rate before the first frame: a link or a replay opened
+            // then builds its steps on it.
+            .add_systems(Startup, (spawn_box, apply_step_rate))
             .add_observer(reset_bodies_and_books)
             // The step rate can change during play (a control): applied before the loop.
             .add_systems(

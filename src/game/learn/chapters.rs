@@ -25,7 +25,7 @@ pub enum Equation {
     PointVelocity,
     /// The centre twin: the box's band force at its centre, r = 0, so it never turns.
     CentrePull,
-    /// I = Σ mᵢ |rᵢ|² over n × n point masses, against the box's closed form.
+    /// I = Σ mₖ |rₖ|² over n × n point masses, against the box's closed form.
     PointMasses,
     /// I = m (w² + h²) / 12.
     Inertia,
@@ -196,8 +196,8 @@ pub const CHAPTERS: [Chapter; 7] = [
         scene: "undamped",
         integrator: None,
         text: "The moment of inertia is to turning what mass is to moving. Cut the box into \
-               n\u{a0}×\u{a0}n small masses mᵢ at arms rᵢ: its kinetic energy of turning is \
-               ½\u{a0}Σ\u{a0}mᵢ\u{a0}|ω\u{a0}rᵢ|²\u{a0}=\u{a0}½\u{a0}I\u{a0}ω², so I\u{a0}=\u{a0}Σ\u{a0}mᵢ\u{a0}|rᵢ|², which tends to \
+               n\u{a0}×\u{a0}n small masses mₖ at arms rₖ: its kinetic energy of turning is \
+               ½\u{a0}Σ\u{a0}mₖ\u{a0}|ω\u{a0}rₖ|²\u{a0}=\u{a0}½\u{a0}I\u{a0}ω², so I\u{a0}=\u{a0}Σ\u{a0}mₖ\u{a0}|rₖ|², which tends to \
                the box's m\u{a0}(w²\u{a0}+\u{a0}h²)\u{a0}/\u{a0}12 as n grows (the dots; n\u{a0}−, n\u{a0}+). The \
                angular momentum L\u{a0}=\u{a0}I\u{a0}ω changes at the rate of the torque, \
                τ\u{a0}=\u{a0}dL/dt, so α\u{a0}=\u{a0}Στ\u{a0}/\u{a0}I. This scene has no damping and its band \
@@ -210,7 +210,7 @@ pub const CHAPTERS: [Chapter; 7] = [
             Equation::AngularAcceleration,
             Equation::BandShareOfAlpha,
         ],
-        frame: [-70.0, -100.0, 270.0, 190.0],
+        frame: [-70.0, -100.0, 450.0, 310.0],
         centre_twin: false,
         ghosts: false,
         task: Task::DoubleTheInertia,

@@ -40,7 +40,7 @@ pub struct Quantities {
     pub integrator: Integrator,
     /// The state after the next step, with the game's integrator, and Στ there.
     pub next: Option<(BodyState, f64)>,
-    /// The point masses across the box, n (I = Σ mᵢ |rᵢ|² over n × n of them).
+    /// The point masses across the box, n (I = Σ mₖ |rₖ|² over n × n of them).
     pub point_masses: u32,
     /// The seed's and explicit Euler's ghosts, stepped from the same start.
     pub update_order: Option<[GhostBooks; 2]>,
@@ -150,7 +150,7 @@ impl Quantities {
         }
     }
 
-    /// Returns Σ mᵢ |rᵢ|² over n × n equal masses at the centres of the box's n × n cells.
+    /// Returns Σ mₖ |rₖ|² over n × n equal masses at the centres of the box's n × n cells.
     pub fn point_mass_inertia(&self) -> f64 {
         let n = self.point_masses.max(1);
         let share = self.mass / f64::from(n * n);
@@ -326,7 +326,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
             let count = q.point_masses.max(1);
             let sum = q.point_mass_inertia();
             vec![format!(
-                "I ≈ Σ mᵢ |rᵢ|² over {count} × {count} masses of m / {} = {} ({}% of the box's)",
+                "I ≈ Σ mₖ |rₖ|² over {count} × {count} masses of m / {} = {} ({}% of the box's)",
                 count * count,
                 n(sum),
                 n(100.0 * sum / q.inertia)

@@ -528,7 +528,7 @@ fn chapter_texts(
     }
     let prediction = &chapter.prediction;
     let done = if learning.done[index] {
-        "✓ done. "
+        "● done. "
     } else {
         ""
     };
@@ -567,12 +567,12 @@ fn chapter_texts(
                     colour::DIM,
                 ),
                 (Some(_), Some(_)) if verdict.right() => (
-                    format!("✓ Right: {}. {}", said(verdict.outcome), verdict.why),
+                    format!("● Right: {}. {}", said(verdict.outcome), verdict.why),
                     colour::VELOCITY,
                 ),
                 (answer, outcome) => (
                     format!(
-                        "✗ You said {}; it was {}: {}. Choose again and try once more.",
+                        "✕ You said {}; it was {}: {}. Choose again and try once more.",
                         said(answer),
                         said(outcome),
                         verdict.why

@@ -294,7 +294,7 @@ fn axes_marker(gizmos: &mut Gizmos, origin: Vec2) {
     }
 }
 
-/// Draws the n × n point masses whose Σ mᵢ |rᵢ|² the moment of inertia's chapter sums.
+/// Draws the n × n point masses whose Σ mₖ |rₖ|² the moment of inertia's chapter sums.
 fn point_masses(gizmos: &mut Gizmos, state: &BodyState, size: DVec2, n: u32) {
     let n = n.max(1);
     let cell = size / f64::from(n);
