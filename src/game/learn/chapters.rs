@@ -167,7 +167,9 @@ pub const CHAPTERS: [Chapter; 7] = [
                is τ\u{a0}=\u{a0}r\u{a0}×\u{a0}F\u{a0}=\u{a0}r_x\u{a0}F_y\u{a0}−\u{a0}r_y\u{a0}F_x (the tutorial's \
                'perpendicular dot product'): zero when the force's line of action passes \
                through the centre, positive when it turns the box counter-clockwise. A point of \
-               the box moves at v\u{a0}+\u{a0}ω\u{a0}r⊥, with r⊥\u{a0}=\u{a0}(−r_y,\u{a0}r_x) (§4.3.2). The \
+               the box moves at v\u{a0}+\u{a0}ω\u{a0}r⊥, with r⊥\u{a0}=\u{a0}(−r_y,\u{a0}r_x) (§4.3.2): \
+               the green arrow at the corner, beside the grey one of its move over the last \
+               step. The \
                centre still accelerates by ΣF\u{a0}/\u{a0}m. The outline below is a twin that the \
                box's own band force pushes at its centre, with the same damping: its centre \
                moves as the box's, and with r\u{a0}=\u{a0}0 it never turns. How much a torque \
@@ -210,7 +212,7 @@ pub const CHAPTERS: [Chapter; 7] = [
             Equation::AngularAcceleration,
             Equation::BandShareOfAlpha,
         ],
-        frame: [-70.0, -100.0, 450.0, 310.0],
+        frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
         ghosts: false,
         task: Task::DoubleTheInertia,

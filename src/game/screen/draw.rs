@@ -248,6 +248,11 @@ fn draw_learning(
         if shows(Equation::PointMasses) {
             point_masses(&mut gizmos, &state, mass.size(), learning.point_masses);
         }
+        if let Some(band) = band
+            && shows(Equation::PointVelocity)
+        {
+            point_velocity(&mut gizmos, snapshots, &state, band, &fixed_time);
+        }
         if let Some(band) = band {
             let corner = band.ends.attachment(&state).as_vec2();
             if shows(Equation::Arm) || shows(Equation::Torque) {
@@ -291,6 +296,36 @@ fn axes_marker(gizmos: &mut Gizmos, origin: Vec2) {
     let ahead = Vec2::from_angle(quarter * 14.0 / 16.0 + quarter);
     for side in [-0.5f32, 0.5] {
         gizmos.line_2d(tip, tip + Vec2::from_angle(side).rotate(-ahead) * 5.0, dim);
+    }
+}
+
+/// Draws the band's corner's velocity v + ω r⊥ (green) beside its latest step's move / dt (grey).
+///
+/// The two agree as the step is small.
+fn point_velocity(
+    gizmos: &mut Gizmos,
+    snapshots: &RenderSnapshots,
+    state: &BodyState,
+    band: &Band,
+    fixed_time: &Time<Fixed>,
+) {
+    let corner = band.ends.attachment(state);
+    let arm = corner - state.linear.position;
+    let omega = state.angular.angular_velocity;
+    let velocity = state.linear.velocity + omega * DVec2::new(-arm.y, arm.x);
+    let seconds = f64::from(VELOCITY_ARROW_SECONDS);
+    let from = corner.as_vec2();
+    gizmos.arrow_2d(
+        from,
+        (corner + velocity * seconds).as_vec2(),
+        VELOCITY_COLOUR,
+    );
+    let dt = fixed_time.timestep().as_secs_f64();
+    let moved =
+        band.ends.attachment(&snapshots.current) - band.ends.attachment(&snapshots.previous);
+    if moved != DVec2::ZERO {
+        let stepped = moved / dt * seconds;
+        gizmos.arrow_2d(from, (corner + stepped).as_vec2(), colour::DIM);
     }
 }
 
