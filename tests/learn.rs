@@ -804,32 +804,45 @@ fn claim_4_a_larger_box_grabbed_at_its_corner_gets_more_torque() {
     );
 }
 
-/// Chapter 5: "The band is a spring of zero rest length between the pointer and the corner
-/// nearest it when pressed: its force is k times the stretch, toward the pointer."
+/// Chapter 5: "a spring of zero rest length from the pointer q to a corner p: its force is
+/// F = −k (p − q) ... The corner is the one nearest the pointer when pressed". A press by each
+/// of the four corners takes that corner, each a different one.
 #[test]
 fn claim_5_the_band_takes_the_nearest_corner_and_pulls_k_times_the_stretch_toward_the_pointer() {
-    let mut game = Game::stepping();
-    chapter(&mut game, 4);
-    let k = game.world().resource::<SceneParams>().stiffness;
-    let pointer = DVec2::new(-150.0, 80.0);
-    game.press_at(pointer);
-    game.update(1);
-    let (state, mass, band) = the_box(&mut game);
-    let band = band.expect("the press holds a band");
-    let corner = band.attachment(&state);
-    for other in mass.corners() {
-        assert!(
-            corner.distance(band.anchor)
-                <= state.local_to_world(other).distance(band.anchor) + 1e-9
-        );
+    let mut corners_taken = Vec::new();
+    // A press by each of the four corners, each a fresh chapter.
+    for pointer in [
+        DVec2::new(-150.0, 80.0),
+        DVec2::new(150.0, 80.0),
+        DVec2::new(150.0, -80.0),
+        DVec2::new(-150.0, -80.0),
+    ] {
+        let mut game = Game::stepping();
+        chapter(&mut game, 4);
+        let k = game.world().resource::<SceneParams>().stiffness;
+        game.press_at(pointer);
+        game.update(1);
+        let (state, mass, band) = the_box(&mut game);
+        let band = band.expect("the press holds a band");
+        let corner = band.attachment(&state);
+        for other in mass.corners() {
+            assert!(
+                corner.distance(band.anchor)
+                    <= state.local_to_world(other).distance(band.anchor) + 1e-9,
+                "pressed at {pointer}: {corner} is not the nearest corner"
+            );
+        }
+        corners_taken.push(band.local_point);
+        let force = band.wrench(&state, k).force;
+        let stretch = band.anchor - corner;
+        assert!((force - k * stretch).length() < 1e-9 * force.length());
+        // Zero rest length: no stretch, no force.
+        let mut slack = band;
+        slack.anchor = corner;
+        assert_eq!(slack.wrench(&state, k).force, DVec2::ZERO);
     }
-    let force = band.wrench(&state, k).force;
-    let stretch = band.anchor - corner;
-    assert!((force - k * stretch).length() < 1e-9 * force.length());
-    // Zero rest length: no stretch, no force.
-    let mut slack = band;
-    slack.anchor = corner;
-    assert_eq!(slack.wrench(&state, k).force, DVec2::ZERO);
+    corners_taken.dedup();
+    assert_eq!(corners_taken.len(), 4, "{corners_taken:?}");
 }
 
 /// Chapter 6: "With b > 0, c > 0 and no band the box comes to rest; with c = 0 a spin never

@@ -189,7 +189,7 @@ pub const CHAPTERS: [Chapter; 7] = [
         prediction: Prediction {
             question: "which way will your pull turn the box?",
             choices: &["counter-clockwise (τ > 0)", "clockwise (τ < 0)"],
-            then: "then press and pull until ω passes ±1 rad/s",
+            then: "then press and pull until ω has changed by 1 rad/s",
         },
     },
     Chapter {
