@@ -112,7 +112,7 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
         n(torques)
     );
     let perp_dot = format!(
-        "τ = r × F = r_x F_y − r_y F_x = {} × {} − {} × {} = {}",
+        "τ = r × F = r_x·F_y − r_y·F_x = {}·{} − {}·{} = {}",
         n(arm.x),
         f(force.y),
         f(arm.y),
@@ -394,6 +394,38 @@ fn each_chapters_prediction_passes_when_right_and_fails_when_wrong() {
         }
         let (done, _) = task_done(index, None, true);
         assert!(!done, "chapter {}: done with no answer chosen", index + 1);
+    }
+}
+
+/// Chapter 6 with either rate at 0: the box released with a spin (c = 0) or a drift (b = 0)
+/// keeps moving, however small the motion has become when its energy is a hundredth of its
+/// peak; "it keeps moving" is right, "it comes to rest" wrong, and the verdict names the rate.
+#[test]
+fn damping_with_a_rate_at_zero_keeps_the_box_moving_and_says_which() {
+    use rubber_band_box::game::input::controls::Action;
+    let index = 5;
+    for (parameter, named) in [
+        (Parameter::AngularDamping, "with c = 0"),
+        (Parameter::LinearDamping, "with b = 0"),
+    ] {
+        for (answer, right) in [(1, true), (0, false)] {
+            let mut game = Game::stepping();
+            game.update(2);
+            chapter(&mut game, index);
+            game.update(250);
+            game.world().write_message(Action::Set(parameter, 0.0));
+            game.world().trigger(Learn::Predict(answer));
+            game.update(1);
+            game.press_at(DVec2::new(200.0, 120.0));
+            game.update(50);
+            game.mouse(ButtonState::Released);
+            game.update(600);
+            let learning = game.world().resource::<Learning>();
+            let verdict = learning.verdict().expect("a verdict");
+            assert_eq!(verdict.outcome, Some(1), "{named}: {verdict:?}");
+            assert!(verdict.why.contains(named), "{verdict:?}");
+            assert_eq!(learning.done[index], right, "{named}, answer {answer}");
+        }
     }
 }
 

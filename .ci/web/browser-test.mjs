@@ -467,7 +467,7 @@ const boxAlwaysInView = async (p, snap, samples = 12, least = 0.6) => {
 // reached by its "next ▸", shows its title ("3 of 7 ...") and an equation of its own with
 // numbers in it, with every corner of the box in the viewport; "leave" ends the mode. An
 // equation of each chapter, as the card writes it (a line a text):
-const FIRST_EQUATIONS = ["ΣF = F_band + F_damp = (", "θ = ", "τ = r × F = r_x F_y − r_y F_x = ", "I = m (w² + h²) / 12 = ", "τ = r × F = r_x F_y − r_y F_x = ", "F_damp = −b v = −", "1  ω ← e^(−c dt) ω = "];
+const FIRST_EQUATIONS = ["ΣF = F_band + F_damp = (", "θ = ", "τ = r × F = r_x·F_y − r_y·F_x = ", "I = m (w² + h²) / 12 = ", "τ = r × F = r_x·F_y − r_y·F_x = ", "F_damp = −b v = −", "1  ω ← e^(−c dt) ω = "];
 const walkChapters = async (p, where, pointer, snap) => {
   const entered = await openCard(p, "Controls", pointer) && await pressButton(p, "learn", pointer);
   const missing = [];
@@ -893,11 +893,11 @@ try {
     (label) => learner.screenshot({ path: path.join(screens, `desktop-${label}.png`) }));
   await learner.close();
   // A teacher's link to a chapter (docs/learn.md): `?learn=4` opens learn mode at chapter 4.
-  const sent = await openLink(`${url}?v=1&learn=4`);
-  const opened = await until(sent, () => (window.rubberBandBox?.texts ?? []).some((t) => t.text.startsWith("4 of 7")), null, 120000);
-  const fourth = await api(sent);
-  await sent.screenshot({ path: path.join(screens, "link-to-chapter-4.png") });
-  await sent.close();
+  const taughtPage = await openLink(`${url}?v=1&learn=4`);
+  const opened = await until(taughtPage, () => (window.rubberBandBox?.texts ?? []).some((t) => t.text.startsWith("4 of 7")), null, 120000);
+  const fourth = await api(taughtPage);
+  await taughtPage.screenshot({ path: path.join(screens, "link-to-chapter-4.png") });
+  await taughtPage.close();
   check(opened && (fourth.texts ?? []).some((t) => t.text.includes("I = m (w² + h²) / 12 = ")),
     `a chapter's link (?learn=4) opens learn mode at chapter 4, its equations shown (${opened ? "opened" : "not opened"})`);
 

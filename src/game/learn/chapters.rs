@@ -117,13 +117,13 @@ pub const CHAPTERS: [Chapter; 7] = [
         scene: "diagonal",
         integrator: None,
         text: "Axes: x to the right, y up (the tutorial's screen counts y down); the centre's \
-               position is x (the tutorial's s). Every force moves the centre as if all the \
-               mass sat there, wherever it acts: ΣF\u{a0}=\u{a0}m\u{a0}a (§4.2). A force whose line \
-               of action passes through the centre has no torque besides, so it leaves ω as it \
-               is: this box starts with ω\u{a0}=\u{a0}0, and the band along its diagonal does not \
-               turn it. Time is in seconds: the tutorial's k\u{a0}=\u{a0}0.002 and b\u{a0}=\u{a0}0.05 a \
-               frame are k\u{a0}=\u{a0}0.002\u{a0}×\u{a0}100²\u{a0}=\u{a0}20 and b\u{a0}=\u{a0}0.05\u{a0}×\u{a0}100\u{a0}=\u{a0}5 \
-               at its 100 frames a second.",
+               position is x (the tutorial's s). Every force moves the centre as if all the mass sat \
+               there, wherever it acts: ΣF\u{a0}=\u{a0}m\u{a0}a (§4.2), where ΣF is the band's pull \
+               F_band plus the damping F_damp\u{a0}=\u{a0}−b\u{a0}v (chapter 6). Does a force whose \
+               line of action passes through the centre also turn the box? Predict below. Time is in \
+               seconds: the tutorial's k\u{a0}=\u{a0}0.002\u{a0}/frame² and \
+               b\u{a0}=\u{a0}0.05\u{a0}/frame are k\u{a0}=\u{a0}0.002\u{a0}×\u{a0}100²\u{a0}=\u{a0}20 \
+               and b\u{a0}=\u{a0}0.05\u{a0}×\u{a0}100\u{a0}=\u{a0}5 at its 100 frames a second.",
         equations: &[Equation::ForceSum, Equation::Acceleration, Equation::Motion],
         frame: [-70.0, -70.0, 230.0, 230.0],
         centre_twin: false,
@@ -140,12 +140,13 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§3.3",
         scene: "spin",
         integrator: None,
-        text: "A rigid body also has an orientation θ (the tutorial's Ω): one number, because \
-               a plane has one way to turn (§3.3.1). Its angular velocity is ω\u{a0}=\u{a0}dθ/dt. \
-               θ, ω and torques count counter-clockwise as positive, as the arc between the axes in the scene's corner \
-               shows (on the tutorial's y-down screen its positive angle looks clockwise). \
-               Nothing pulls this box: it spins, and angular damping takes ω down at the rate \
-               c, dω/dt\u{a0}=\u{a0}−c\u{a0}ω: the tutorial's ω\u{a0}×\u{a0}0.98 a frame is \
+        text: "A rigid body also has an orientation θ (the tutorial's Ω): one number, because a plane \
+               has one way to turn (§3.3.1). Its angular velocity is ω\u{a0}=\u{a0}dθ/dt, its angular \
+               acceleration α\u{a0}=\u{a0}dω/dt. θ, ω and torques count counter-clockwise as \
+               positive, as the arc between the axes in the scene's corner shows (on the tutorial's \
+               y-down screen its positive angle looks clockwise). No band pulls this box until you \
+               press: it spins, and angular damping takes ω down at the rate c, \
+               dω/dt\u{a0}=\u{a0}−c\u{a0}ω; the tutorial's ω\u{a0}×\u{a0}0.98 a frame is \
                c\u{a0}=\u{a0}−ln\u{a0}0.98\u{a0}×\u{a0}100\u{a0}=\u{a0}2.02\u{a0}/s.",
         equations: &[Equation::Orientation, Equation::AngularDecay],
         frame: [-130.0, -100.0, 130.0, 100.0],
@@ -155,7 +156,7 @@ pub const CHAPTERS: [Chapter; 7] = [
         prediction: Prediction {
             question: "with the angular damping c at 0, what will ω do?",
             choices: &["fall to 0", "stay as it is", "grow"],
-            then: "then set angular damping to 0 (Controls card) and watch ω for half a second",
+            then: "then pause (Space), set angular damping to 0 (Controls card), resume and watch ω for half a second",
         },
     },
     Chapter {
@@ -163,17 +164,17 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§4.2, §4.3.1-4.3.3",
         scene: "tutorial",
         integrator: None,
-        text: "The arm r runs from the centre to the point p where the force acts. The torque \
-               is τ\u{a0}=\u{a0}r\u{a0}×\u{a0}F\u{a0}=\u{a0}r_x\u{a0}F_y\u{a0}−\u{a0}r_y\u{a0}F_x (the tutorial's \
-               'perpendicular dot product'): zero when the force's line of action passes \
-               through the centre, positive when it turns the box counter-clockwise. A point of \
-               the box moves at v\u{a0}+\u{a0}ω\u{a0}r⊥, with r⊥\u{a0}=\u{a0}(−r_y,\u{a0}r_x) (§4.3.2): \
-               the green arrow at the corner, beside the grey one of its move over the last \
-               step. The \
-               centre still accelerates by ΣF\u{a0}/\u{a0}m. The outline below is a twin that the \
-               box's own band force pushes at its centre, with the same damping: its centre \
-               moves as the box's, and with r\u{a0}=\u{a0}0 it never turns. How much a torque \
-               changes ω takes the moment of inertia: chapter 4.",
+        text: "The arm r runs from the centre to the point p where the force acts. The torque is \
+               τ\u{a0}=\u{a0}r\u{a0}×\u{a0}F\u{a0}=\u{a0}r_x·F_y\u{a0}−\u{a0}r_y·F_x (the tutorial's \
+               eq.\u{a0}12; its perp dot product r⊥\u{a0}·\u{a0}F is the same number): zero when the \
+               force's line of action passes through the centre, positive when it turns the box \
+               counter-clockwise. A point of the box moves at v\u{a0}+\u{a0}ω\u{a0}r⊥, with \
+               r⊥\u{a0}=\u{a0}(−r_y,\u{a0}r_x) (§4.3.2): the green arrow at the corner, beside the \
+               grey one of its move over the last step. The centre still accelerates by \
+               ΣF\u{a0}/\u{a0}m. The outline below is a twin that the box's own band force pushes at \
+               its centre, with the same damping: its centre moves as the box's, and with \
+               r\u{a0}=\u{a0}0 it never turns. How much a torque changes ω takes the moment of \
+               inertia: chapter 4.",
         equations: &[
             Equation::Arm,
             Equation::Torque,
@@ -189,7 +190,7 @@ pub const CHAPTERS: [Chapter; 7] = [
         prediction: Prediction {
             question: "which way will your pull turn the box?",
             choices: &["counter-clockwise (τ > 0)", "clockwise (τ < 0)"],
-            then: "then press and pull until ω has changed by 1 rad/s",
+            then: "then press and pull until the band has changed ω by 1 rad/s",
         },
     },
     Chapter {
@@ -199,12 +200,16 @@ pub const CHAPTERS: [Chapter; 7] = [
         integrator: None,
         text: "The moment of inertia is to turning what mass is to moving. Cut the box into \
                n\u{a0}×\u{a0}n small masses mₖ at arms rₖ: its kinetic energy of turning is \
-               ½\u{a0}Σ\u{a0}mₖ\u{a0}|ω\u{a0}rₖ|²\u{a0}=\u{a0}½\u{a0}I\u{a0}ω², so I\u{a0}=\u{a0}Σ\u{a0}mₖ\u{a0}|rₖ|², which tends to \
-               the box's m\u{a0}(w²\u{a0}+\u{a0}h²)\u{a0}/\u{a0}12 as n grows (the dots; n\u{a0}−, n\u{a0}+). The \
-               angular momentum L\u{a0}=\u{a0}I\u{a0}ω changes at the rate of the torque, \
-               τ\u{a0}=\u{a0}dL/dt, so α\u{a0}=\u{a0}Στ\u{a0}/\u{a0}I. This scene has no damping and its band \
-               stays, so your hand is free for the sliders: the band holds the same point of \
-               the box when the mass or the size changes.",
+               ½\u{a0}Σ\u{a0}mₖ\u{a0}|ω\u{a0}rₖ|²\u{a0}=\u{a0}½\u{a0}I\u{a0}ω², so \
+               I\u{a0}=\u{a0}Σ\u{a0}mₖ\u{a0}|rₖ|², which tends to the box's \
+               m\u{a0}(w²\u{a0}+\u{a0}h²)\u{a0}/\u{a0}12 as n grows (the dots; n\u{a0}−, n\u{a0}+). \
+               While I stays, the angular momentum L\u{a0}=\u{a0}I\u{a0}ω changes at the rate of the \
+               torque, τ\u{a0}=\u{a0}dL/dt, so α\u{a0}=\u{a0}Στ\u{a0}/\u{a0}I \
+               (τ_damp\u{a0}=\u{a0}−c\u{a0}I\u{a0}ω is chapter 6's; 0 here). This scene has no \
+               damping and its band stays unless you press (◂\u{a0}back and next\u{a0}▸ bring it \
+               back), so your hand is free for the sliders: the band holds the same point in the \
+               box's own coordinates when the mass or the size changes (after a resize, no longer a \
+               corner).",
         equations: &[
             Equation::PointMasses,
             Equation::Inertia,
@@ -219,7 +224,7 @@ pub const CHAPTERS: [Chapter; 7] = [
         prediction: Prediction {
             question: "I doubled, the band where it is: what will τ_band / I do?",
             choices: &["double", "stay the same", "halve"],
-            then: "then pause (Space) and double I: mass ×2 or size ×1.41 (Controls card)",
+            then: "then pause (Space) and at least double I: mass 5 → 10, or size 60 → 89 px (Controls card)",
         },
     },
     Chapter {
@@ -227,11 +232,11 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§5.2.3",
         scene: "rest",
         integrator: None,
-        text: "The band is a spring of zero rest length from the pointer q to a corner p: its \
-               force is F\u{a0}=\u{a0}−k\u{a0}(p\u{a0}−\u{a0}q), k times the stretch, toward the pointer \
-               (the tutorial's x is the stretch p\u{a0}−\u{a0}q; its p is the momentum). The \
-               corner is the one nearest the pointer when pressed, and it stays that corner \
-               while the band is held, wherever the pointer goes.",
+        text: "The band is a spring of zero rest length from the pointer q to a corner p of the box: \
+               its force is F\u{a0}=\u{a0}−k\u{a0}(p\u{a0}−\u{a0}q), k times the stretch, toward the \
+               pointer (the tutorial's x is the stretch p\u{a0}−\u{a0}q; its p is the momentum). The \
+               corner is the one nearest the pointer at the press. Does the band keep that corner \
+               when another comes nearer? Predict below.",
         equations: &[Equation::NearestCorner, Equation::Spring, Equation::Torque],
         frame: [-130.0, -100.0, 130.0, 100.0],
         centre_twin: false,
@@ -248,14 +253,15 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§5.2.4",
         scene: "tutorial",
         integrator: None,
-        text: "Damping opposes the motion: −b\u{a0}v on the centre and −c\u{a0}I\u{a0}ω on the turn. It \
-               turns kinetic energy into heat at the rate b\u{a0}|v|²\u{a0}+\u{a0}c\u{a0}I\u{a0}ω². The hand \
-               puts energy into the band as it moves the pointer, and at release the band's \
-               ½\u{a0}k\u{a0}|p\u{a0}−\u{a0}q|² leaves with the hand. The books add what the hand put in to \
-               the energy at the start and take away what damping took out; E differs from \
-               them only by the integrator's error, the last line. With b\u{a0}>\u{a0}0, \
-               c\u{a0}>\u{a0}0 and no band the box comes to rest; with c\u{a0}=\u{a0}0 a spin never stops, \
-               with b\u{a0}=\u{a0}0 a drift never does.",
+        text: "Damping opposes the motion: F_damp\u{a0}=\u{a0}−b\u{a0}v on the centre and \
+               τ_damp\u{a0}=\u{a0}−c\u{a0}I\u{a0}ω on the turn. It turns kinetic energy into heat at \
+               the rate b\u{a0}|v|²\u{a0}+\u{a0}c\u{a0}I\u{a0}ω². The hand puts \
+               ½\u{a0}k\u{a0}|p\u{a0}−\u{a0}q|² into the band at the press, and more in or out as it \
+               moves the pointer; at release the band's energy leaves with the hand. A slider (k, \
+               mass, size) changes E too, and the books count it with the hand. The books: \
+               E₀\u{a0}+\u{a0}W_hand\u{a0}−\u{a0}W_damp; E differs from them by the integrator's \
+               error (its own reckoning of W_damp included), the last line. Does the box always come \
+               to rest? Set b or c to 0 if you like, and predict below.",
         equations: &[
             Equation::LinearDamping,
             Equation::AngularDamping,
@@ -277,14 +283,16 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§5.2.4; appendix §8.1: RigidBody.update, AngularDamping",
         scene: "tutorial",
         integrator: Some("seed"),
-        text: "The tutorial's own loop, run here by the seed integrator; the lines are its \
-               numbers for the next step. Angular damping first scales ω by e^(−c\u{a0}dt), 0.98 a \
-               step at 100\u{a0}Hz; the forces give a and the band's torque α; then ω and θ, then \
-               v and x, each from the one just updated, so x moves with the new v. That order \
-               (semi-implicit Euler) keeps the energy's error bounded; explicit Euler moves x \
-               with the old v and gains energy step after step. The ghosts step both from the \
-               same start, their books' errors the last lines; the other ghosts are the other \
-               integrators, and P plots their error against their cost.",
+        text: "The tutorial's own loop, run here by the seed integrator; the lines are its numbers \
+               for the next step. Angular damping first scales ω by e^(−c\u{a0}dt), 0.98 a step at \
+               100\u{a0}Hz; the forces give a, and the band's torque \
+               α_band\u{a0}=\u{a0}τ_band\u{a0}/\u{a0}I (damping acted in line 1); then ω and θ, then \
+               v and x. Which v moves x? Predict below. This order (semi-implicit Euler) keeps the \
+               energy's error bounded while the step resolves the band (2\u{a0}√(k/m)\u{a0}dt below \
+               2: at 100\u{a0}Hz, k/m under 10⁴); explicit Euler, which moves x with the old v, runs \
+               further from its books step after step. The ghosts step both from the same start, \
+               their books' errors the last lines; the other ghosts are the other integrators, and P \
+               plots each one's distance from the reference against its cost.",
         equations: &[Equation::Update, Equation::UpdateOrder],
         frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,

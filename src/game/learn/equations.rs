@@ -267,7 +267,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
             n(omega)
         )],
         Equation::AngularDecay => vec![format!(
-            "dω/dt = −c ω = −{} × {} = {} rad/s²",
+            "damping's part of dω/dt = −c ω = −{} × {} = {} rad/s²",
             n(q.angular_damping),
             f_(omega),
             n(-q.angular_damping * omega)
@@ -284,7 +284,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
         Equation::Torque => {
             let (r, f) = (q.arm(), q.band_force());
             vec![format!(
-                "τ = r × F = r_x F_y − r_y F_x = {} × {} − {} × {} = {}",
+                "τ = r × F = r_x·F_y − r_y·F_x = {}·{} − {}·{} = {}",
                 n(r.x),
                 f_(f.y),
                 f_(r.y),
@@ -390,7 +390,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
         },
         Equation::NearestCorner => match q.band {
             Some((corner, anchor)) => vec![format!(
-                "p = the corner nearest q when pressed, held since = {}; q = {}, {} away",
+                "p = the corner nearest q at the press, held since: p = {}; q = {}; |p − q| = {} px",
                 v(corner),
                 v(anchor),
                 n(corner.distance(anchor))
@@ -456,7 +456,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
                     v(s.acceleration)
                 ),
                 format!(
-                    "3  α = τ_band / I = {} / {} = {}",
+                    "3  α_band = τ_band / I = {} / {} = {}   (damping acted in line 1)",
                     f_(s.torque),
                     n(q.inertia),
                     n(s.angular_acceleration)

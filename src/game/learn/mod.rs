@@ -366,6 +366,8 @@ fn check_task(
         player_band: any_band.filter(|_| grip.0.is_some()),
         any_band,
         clock: fixed.elapsed_secs_f64(),
+        stepped_seconds: stepped as f64 * fixed.timestep().as_secs_f64(),
+        paused: time.is_paused(),
         single_step,
     };
     let found = experiments::observe(CHAPTERS[index].task, progress, &look);
