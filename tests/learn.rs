@@ -836,6 +836,47 @@ fn claim_4_a_larger_box_grabbed_at_its_corner_gets_more_torque() {
     );
 }
 
+/// Chapter 4: "While I stays, the angular momentum L = I ω changes at the rate of the torque,
+/// τ = dL/dt". On the undamped scene's held pull, stepped by `auto` at the chapter's 100 Hz:
+/// over each step of the first 3 s, ΔL / dt equals the mean of Στ at the step's two ends to
+/// within 1e-3 of the torque's scale (the trapezoid's error over a step), and the card's line
+/// shows both.
+#[test]
+fn claim_4_the_torque_is_the_rate_of_change_of_the_angular_momentum() {
+    use rubber_band_box::physics::{Run, Scene};
+    let scene = Scene::named(CHAPTERS[3].scene).unwrap();
+    let dt = scene.params.dt();
+    let mut run = Run::of(&scene, Integrator::Auto, dt).unwrap();
+    let inertia = run.stepper.mass.inertia();
+    let torque = |run: &Run| {
+        run.stepper
+            .model()
+            .forces(&run.stepper.state)
+            .total()
+            .torque
+    };
+    let mut scale = 0.0f64;
+    let mut worst = 0.0f64;
+    for _ in 0..(3.0 / dt) as usize {
+        let (before, omega) = (torque(&run), run.stepper.state.angular.angular_velocity);
+        run.advance().unwrap();
+        let after = torque(&run);
+        let rate = inertia * (run.stepper.state.angular.angular_velocity - omega) / dt;
+        scale = scale.max(before.abs());
+        worst = worst.max((rate - 0.5 * (before + after)).abs());
+    }
+    assert!(scale > 1e4, "the pull's torque {scale}");
+    assert!(
+        worst < 1e-3 * scale,
+        "ΔL / dt off the mean Στ by {worst} of {scale}"
+    );
+    let mut game = Game::stepping();
+    chapter(&mut game, 3);
+    game.update(20);
+    let shown = equations(&mut game);
+    assert!(shown.contains("over the next step ΔL / dt = "), "{shown}");
+}
+
 /// Chapter 5: "a spring of zero rest length from the pointer q to a corner p: its force is
 /// F = −k (p − q) ... The corner is the one nearest the pointer when pressed". A press by each
 /// of the four corners takes that corner, each a different one.
