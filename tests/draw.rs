@@ -217,7 +217,7 @@ fn the_ghosts_are_outlined_in_their_colours_but_the_live_integrators() {
 /// browser, where rk4's name vanished under implicit's on the stiff scene).
 #[test]
 fn the_ghosts_names_stand_in_one_column_a_line_apart() {
-    use rubber_band_box::game::screen::draw::GhostLabel;
+    use rubber_band_box::game::ghosts::draw::GhostLabel;
     let mut game = screen_game();
     game.update(1);
     game.tap_key(KeyCode::Digit3);

@@ -98,6 +98,8 @@ impl Plugin for GameScreenPlugin {
     fn build(&self, app: &mut App) {
         app.add_plugins((
             screen::ScreenPlugin,
+            ghosts::draw::GhostsDrawPlugin,
+            learn::draw::LearnDrawPlugin,
             energy::EnergyGraphPlugin,
             plot::WorkPrecisionPlotPlugin,
         ));

@@ -9,6 +9,7 @@
 //! names no font gets it.
 
 use bevy::asset::AssetId;
+use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy::text::FontSource;
 
@@ -103,6 +104,21 @@ pub mod colour {
 /// Returns an integrator's colour, from the core's one table ([`Integrator::colour`]).
 ///
 /// It is the same in the game and the report's figures.
+/// The velocity arrow shows where the centre will be in this many seconds.
+pub const VELOCITY_ARROW_SECONDS: f32 = 0.25;
+
+/// Returns the force arrow's length, which grows with the logarithm of the force.
+///
+/// That way k = 20 and k = 1e9 both fit.
+fn force_arrow_length(force: f64) -> f64 {
+    (30.0 * (1.0 + force / 10.0).log10()).min(300.0)
+}
+
+/// Returns the arrow drawn for `force`: along it, [`force_arrow_length`] long.
+pub fn force_arrow(force: DVec2) -> DVec2 {
+    force.normalize_or_zero() * force_arrow_length(force.length())
+}
+
 pub(crate) fn method_colour(integrator: Integrator) -> Color {
     let [r, g, b] = integrator.colour();
     Color::srgb_u8(r, g, b)

@@ -2,6 +2,7 @@
 //! live box under the live band ([`steppers`]), and the dock's card that tabulates them
 //! ([`table`]). Drawn by the screen (their outlines) and plotted by the lab's plot.
 
+pub mod draw;
 pub mod steppers;
 pub mod table;
 

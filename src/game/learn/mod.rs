@@ -6,6 +6,7 @@
 //! overlays, the clock and the box.
 
 pub mod chapters;
+pub mod draw;
 pub mod equations;
 mod experiments;
 
