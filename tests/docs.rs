@@ -248,3 +248,45 @@ fn the_docs_frame_names_every_set_in_the_schedules_order() {
         }
     }
 }
+
+/// The `auto` defaults the pages quote are the code's own (`AutoSettings::default()`): the
+/// command line's page, and the integrators' page in its table and its paragraph of defaults.
+/// (Its order, 20 then 28, once stood in three versions across the pages while every test
+/// passed.)
+#[test]
+fn the_pages_quote_autos_defaults_as_the_code_has_them() {
+    use rubber_band_box::physics::AutoSettings;
+    let auto = AutoSettings::default();
+    let (tolerance, order, budget) = (
+        format!("{:e}", auto.tolerance),
+        auto.order,
+        auto.max_substeps,
+    );
+    let read = |page: &str| fs::read_to_string(root().join(page)).expect(page);
+    let simulate = read("docs/simulate.md");
+    let integrators = read("docs/integrators.md");
+    for (page, text, quoted) in [
+        (
+            "docs/simulate.md",
+            &simulate,
+            format!("(defaults {tolerance}, {order} and {budget})"),
+        ),
+        (
+            "docs/integrators.md",
+            &integrators,
+            format!("order {order}, tolerance {tolerance} px per step, budget {budget} steps."),
+        ),
+        (
+            "docs/integrators.md",
+            &integrators,
+            format!("Taylor-series steps of order up to {order},"),
+        ),
+        (
+            "docs/integrators.md",
+            &integrators,
+            format!("| {order} in its step (fewer"),
+        ),
+    ] {
+        assert!(text.contains(&quoted), "{page} does not say \"{quoted}\"");
+    }
+}
