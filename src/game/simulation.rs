@@ -469,8 +469,9 @@ fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRec
         stats.fell_back |= info.fell_back;
         stats.fallbacks += u64::from(info.fell_back);
         // A divergent explicit method (a stiff band) must not put NaN, infinity or an absurd
-        // value into a component: refuse the step, keep the last sane state, and say so.
-        if state.is_sane() {
+        // value into a component, nor fling the box past where it can be drawn: refuse the
+        // step, keep the last playable state, and say so.
+        if state.is_playable() {
             records.books.ledger.dissipated += info.dissipated;
             body.set_state(state);
         } else {

@@ -83,6 +83,13 @@ impl BodyState {
             .all(|v| v.is_finite() && v.abs() <= STATE_LIMIT)
     }
 
+    /// Tells whether the game plays this state: sane, and its centre within [`PLAYABLE_LIMIT`].
+    ///
+    /// The game refuses a step past it, and a replay's run refuses it alike.
+    pub fn is_playable(&self) -> bool {
+        self.is_sane() && self.linear.position.abs().max_element() <= PLAYABLE_LIMIT
+    }
+
     /// Measures how far this pose is from `other`, in px.
     ///
     /// The measure is the largest distance between corresponding corners of the box `mass`
@@ -105,6 +112,12 @@ impl BodyState {
 /// It is a billion times the scene, far beyond any hard case (the far anchor is 1e6 away; a
 /// band of k = 1e9 moves the box at about 6e6 px/s), and still inside f32's range for drawing.
 pub const STATE_LIMIT: f64 = 1e12;
+
+/// The farthest from the centre the game plays the box (px).
+///
+/// The screen draws in f32, whose steps are a pixel at 1.6e7: past it a box would be drawn as a
+/// point. The far anchor's pull (1e6 away) stays well inside; a box flung there has diverged.
+pub const PLAYABLE_LIMIT: f64 = 1e7;
 
 /// Rotates `v` counter-clockwise by `angle` radians.
 ///

@@ -1,6 +1,7 @@
 //! A replay stepped again with the core, exactly as the game stepped it: the same band at
 //! each step, the settings and resets where the controls made them, a step that would leave
-//! the state not sane refused (the state kept, the replay going on), and the energy books kept
+//! the state unplayable (not sane, or the box past the drawable world) refused (the state
+//! kept, the replay going on), and the energy books kept
 //! as the game keeps them. With the recorded integrator it gives the game's states to the bit.
 
 use crate::physics::{
@@ -168,7 +169,7 @@ impl<'a> ReplayRun<'a> {
         self.fallbacks += u64::from(info.fell_back);
         self.step += 1;
         self.time += self.dt;
-        if self.stepper.state.is_sane() {
+        if self.stepper.state.is_playable() {
             self.ledger.dissipated += info.dissipated;
         } else {
             self.stepper.state = before;
