@@ -130,7 +130,11 @@ fn the_panel_reaches_every_control() {
             PanelButton::Fold(_) => None,
         })
         .collect();
-    for control in CONTROLS {
+    // Focus's keys (Tab, Esc) send no action: Bevy's tab navigation answers them.
+    for control in CONTROLS
+        .iter()
+        .filter(|control| !control.actions.is_empty())
+    {
         assert_eq!(
             control.keys.len(),
             control.actions.len(),

@@ -74,7 +74,7 @@ impl Plugin for GameLogicPlugin {
             learn::LearnPlugin,
             ghosts::GhostsPlugin,
             stability::StabilityPlugin,
-            input::panel::PanelPlugin,
+            (input::panel::PanelPlugin, input::focus::FocusPlugin),
             (readouts::plugin, energy::EnergyPlugin, hud::HudPlugin),
         ));
     }

@@ -66,6 +66,8 @@ pub mod space {
 
 /// The palette.
 pub mod colour {
+    /// The ring around the control that has keyboard focus.
+    pub const FOCUS: Color = Color::srgb(1.0, 0.85, 0.2);
     use bevy::prelude::Color;
 
     /// The scene's background (the clear colour) and the page around the dock.

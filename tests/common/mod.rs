@@ -534,10 +534,15 @@ pub fn add_the_layout(app: &mut App) {
         bevy::picking::input::PointerInputPlugin,
         bevy::picking::PickingPlugin,
         bevy::picking::InteractionPlugin,
-        bevy::input_focus::InputFocusPlugin,
-        bevy::input_focus::InputDispatchPlugin,
         bevy::ui::UiPlugin,
     ));
+    // The game's focus plugin adds these when it comes first.
+    if !app.is_plugin_added::<bevy::input_focus::InputFocusPlugin>() {
+        app.add_plugins((
+            bevy::input_focus::InputFocusPlugin,
+            bevy::input_focus::InputDispatchPlugin,
+        ));
+    }
 }
 
 /// A path in this test binary's own scratch folder (under the system's temporary folder, named

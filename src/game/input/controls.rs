@@ -10,7 +10,11 @@ use bevy::input::ButtonState;
 use bevy::input::keyboard::KeyboardInput;
 use bevy::prelude::*;
 
+use bevy::input_focus::InputFocus;
+use bevy::window::PrimaryWindow;
+
 use crate::game::camera::HomeView;
+use crate::game::input::focus::widget_keys;
 use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
 use crate::game::replays::scenes::LoadScene;
@@ -210,7 +214,7 @@ pub struct Control {
 }
 
 /// Every key the game reads, in the order the help line lists them.
-pub const CONTROLS: [Control; 19] = [
+pub const CONTROLS: [Control; 20] = [
     Control {
         keys: &[PAUSE],
         actions: &[Action::TogglePause],
@@ -338,6 +342,14 @@ pub const CONTROLS: [Control; 19] = [
         effect: "the same with the game so far in it: whoever opens it sees your pull replayed to the bit",
     },
     Control {
+        // Bevy's tab navigation and the focused controls answer these (`input::focus`).
+        keys: &[KeyCode::Tab, KeyCode::Escape],
+        actions: &[],
+        label: "Tab Esc",
+        name: "focus",
+        effect: "keyboard focus: Tab moves it through the dock's buttons and sliders in reading order (Shift+Tab back), a ring shows it; a focused button takes Space and Enter, a focused slider ← → Home End, and the game's key of that name does not fire; Esc gives focus back to the scene (docs/controls.md)",
+    },
+    Control {
         keys: &[LEARN],
         actions: &[Action::Learn],
         label: "L",
@@ -369,11 +381,21 @@ pub fn key_hint() -> String {
 /// It reads the keyboard's messages rather than "just pressed": two presses of one key between
 /// two frames (a slow frame, a fast typist) are two actions. A key held down and repeating
 /// sends one.
-fn keys_to_actions(mut keys: MessageReader<KeyboardInput>, mut actions: MessageWriter<Action>) {
-    for press in keys
-        .read()
-        .filter(|key| key.state == ButtonState::Pressed && !key.repeat)
-    {
+///
+/// A key a focused control takes for itself (Space on a button, an arrow on a slider) is the
+/// control's, not the game's.
+fn keys_to_actions(
+    mut keys: MessageReader<KeyboardInput>,
+    mut actions: MessageWriter<Action>,
+    focus: Res<InputFocus>,
+    window: Query<Entity, With<PrimaryWindow>>,
+) {
+    let window = window.single().ok();
+    for press in keys.read().filter(|key| {
+        key.state == ButtonState::Pressed
+            && !key.repeat
+            && !widget_keys(&focus, window, key.key_code)
+    }) {
         for control in &CONTROLS {
             for (key, action) in control.keys.iter().zip(control.actions) {
                 if *key == press.key_code {

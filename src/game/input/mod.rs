@@ -3,4 +3,5 @@
 //! the replays record it, and the controls open replays.
 
 pub mod controls;
+pub mod focus;
 pub mod panel;

@@ -1,0 +1,154 @@
+//! Keyboard focus (docs/controls.md): Tab and Shift+Tab move it through every button and slider
+//! shown (the status line's, the cards' titles, the panel's, learn mode's), in reading order,
+//! with Bevy's own tab navigation (`bevy_input_focus`); a ring shows the focused control when
+//! focus came by keyboard; Escape gives focus back to the scene. A focused control takes its
+//! own keys (a button Space and Enter, a slider the arrows, Home and End), and the game's
+//! global keys do not fire for them ([`widget_keys`]). A click keeps no keyboard focus.
+
+use bevy::input::ButtonState;
+use bevy::input::keyboard::KeyboardInput;
+use bevy::input_focus::tab_navigation::{TabGroup, TabIndex, TabNavigationPlugin};
+use bevy::input_focus::{InputDispatchPlugin, InputFocus, InputFocusPlugin, InputFocusVisible};
+use bevy::prelude::*;
+use bevy::ui_widgets::{Button, Slider};
+use bevy::window::PrimaryWindow;
+
+use crate::game::schedule::{GameSystems, ScreenSystems};
+use crate::game::theme::colour;
+
+pub struct FocusPlugin;
+
+impl Plugin for FocusPlugin {
+    fn build(&self, app: &mut App) {
+        // `DefaultPlugins` bring the first two; the headless game adds them.
+        if !app.is_plugin_added::<InputFocusPlugin>() {
+            app.add_plugins(InputFocusPlugin);
+        }
+        if !app.is_plugin_added::<InputDispatchPlugin>() {
+            app.add_plugins(InputDispatchPlugin);
+        }
+        app.add_plugins(TabNavigationPlugin)
+            .add_systems(Startup, group_the_ui_roots)
+            .add_systems(
+                RunFixedMainLoop,
+                return_focus_to_the_scene.in_set(GameSystems::Input),
+            )
+            .add_systems(
+                Update,
+                (offer_what_is_shown, ring_the_focused)
+                    .chain()
+                    .in_set(ScreenSystems::Panel),
+            );
+    }
+}
+
+/// The keys a focused control takes for itself.
+const WIDGET_KEYS: [KeyCode; 11] = [
+    KeyCode::Space,
+    KeyCode::Enter,
+    KeyCode::NumpadEnter,
+    KeyCode::ArrowLeft,
+    KeyCode::ArrowRight,
+    KeyCode::ArrowUp,
+    KeyCode::ArrowDown,
+    KeyCode::Home,
+    KeyCode::End,
+    KeyCode::Tab,
+    KeyCode::Escape,
+];
+
+/// Tells whether `key` goes to a focused control rather than the game.
+///
+/// It does when a control has the focus and takes that key.
+pub fn widget_keys(focus: &InputFocus, window: Option<Entity>, key: KeyCode) -> bool {
+    let on_a_control = focus.get().is_some_and(|entity| Some(entity) != window);
+    on_a_control && WIDGET_KEYS.contains(&key)
+}
+
+/// Makes every UI root a tab group: the status line's, the dock's.
+fn group_the_ui_roots(
+    mut commands: Commands,
+    roots: Query<Entity, (With<Node>, Without<ChildOf>)>,
+) {
+    for root in &roots {
+        commands.entity(root).insert(TabGroup::new(0));
+    }
+}
+
+/// The controls focus may land on: Bevy's buttons and sliders.
+type Controls = Or<(With<Button>, With<Slider>)>;
+
+/// Offers focus to each button and slider shown, and to none hidden.
+///
+/// A folded card's controls and an unused answer's button are hidden.
+fn offer_what_is_shown(
+    mut commands: Commands,
+    controls: Query<(Entity, Option<&TabIndex>), Controls>,
+    nodes: Query<&Node>,
+    parents: Query<&ChildOf>,
+) {
+    for (entity, index) in &controls {
+        let shown = std::iter::once(entity)
+            .chain(parents.iter_ancestors(entity))
+            .all(|node| {
+                nodes
+                    .get(node)
+                    .is_ok_and(|node| node.display != Display::None)
+            });
+        let wanted = TabIndex(if shown { 0 } else { -1 });
+        if index != Some(&wanted) {
+            commands.entity(entity).insert(wanted);
+        }
+    }
+}
+
+/// Marks the node the ring is drawn on.
+#[derive(Component, Debug)]
+struct Ringed;
+
+/// Draws a ring around the focused control while focus came by keyboard.
+fn ring_the_focused(
+    mut commands: Commands,
+    focus: Res<InputFocus>,
+    visible: Res<InputFocusVisible>,
+    nodes: Query<(), With<Node>>,
+    ringed: Query<Entity, With<Ringed>>,
+) {
+    let wanted = focus
+        .get()
+        .filter(|&entity| visible.0 && nodes.contains(entity));
+    for entity in &ringed {
+        if Some(entity) != wanted {
+            commands.entity(entity).remove::<(Outline, Ringed)>();
+        }
+    }
+    if let Some(entity) = wanted
+        && !ringed.contains(entity)
+    {
+        commands
+            .entity(entity)
+            .insert((Outline::new(px(2), px(1), colour::FOCUS), Ringed));
+    }
+}
+
+/// Gives focus back to the scene on Escape, and after a click on a control.
+///
+/// A control clicked or tapped takes focus (Bevy's picking does it) but shows no ring; the keys
+/// then stay the game's, as before focus existed: Space after a click on `rk4` pauses.
+fn return_focus_to_the_scene(
+    mut keys: MessageReader<KeyboardInput>,
+    mut focus: ResMut<InputFocus>,
+    mut visible: ResMut<InputFocusVisible>,
+    window: Query<Entity, With<PrimaryWindow>>,
+) {
+    let escaped = keys
+        .read()
+        .any(|key| key.key_code == KeyCode::Escape && key.state == ButtonState::Pressed);
+    let on_a_control = focus
+        .get()
+        .is_some_and(|entity| Some(entity) != window.single().ok());
+    if on_a_control && (escaped || !visible.0) {
+        focus.clear();
+        visible.0 = false;
+    }
+}
