@@ -116,7 +116,7 @@ fn force_arrow_length(force: f64) -> f64 {
     (30.0 * (1.0 + force / 10.0).log10()).min(300.0)
 }
 
-/// Returns the arrow drawn for `force`: along it, [`force_arrow_length`] long.
+/// Returns the arrow drawn for `force`: along it, as long as its logarithm says.
 pub fn force_arrow(force: DVec2) -> DVec2 {
     force.normalize_or_zero() * force_arrow_length(force.length())
 }
