@@ -61,8 +61,12 @@ const WIDGET_KEYS: [KeyCode; 11] = [
 ///
 /// It does when a control has the focus and takes that key.
 pub fn widget_keys(focus: &InputFocus, window: Option<Entity>, key: KeyCode) -> bool {
-    let on_a_control = focus.get().is_some_and(|entity| Some(entity) != window);
-    on_a_control && WIDGET_KEYS.contains(&key)
+    on_a_control(focus, window) && WIDGET_KEYS.contains(&key)
+}
+
+/// Tells whether a control has the focus (not the window, the scene's).
+fn on_a_control(focus: &InputFocus, window: Option<Entity>) -> bool {
+    focus.get().is_some_and(|entity| Some(entity) != window)
 }
 
 /// Makes every UI root a tab group: the status line's, the dock's.
@@ -144,10 +148,7 @@ fn return_focus_to_the_scene(
     let escaped = keys
         .read()
         .any(|key| key.key_code == KeyCode::Escape && key.state == ButtonState::Pressed);
-    let on_a_control = focus
-        .get()
-        .is_some_and(|entity| Some(entity) != window.single().ok());
-    if on_a_control && (escaped || !visible.0) {
+    if on_a_control(&focus, window.single().ok()) && (escaped || !visible.0) {
         focus.clear();
         visible.0 = false;
     }

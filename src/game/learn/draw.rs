@@ -8,6 +8,7 @@ use bevy::prelude::*;
 
 use super::Learning;
 use super::chapters::{CHAPTERS, Equation};
+use super::equations::point_mass_arms;
 use super::twin::CentreTwin;
 use crate::game::camera::{SceneView, viewport_rect};
 use crate::game::schedule::ScreenSystems;
@@ -162,18 +163,11 @@ fn point_velocity(
 
 /// Draws the n × n point masses whose Σ mₖ |rₖ|² the moment of inertia's chapter sums.
 fn point_masses(gizmos: &mut Gizmos, state: &BodyState, size: DVec2, n: u32) {
-    let n = n.max(1);
-    let cell = size / f64::from(n);
+    let cell = size / f64::from(n.max(1));
     let radius = (0.25 * cell.min_element()).clamp(0.6, 3.0) as f32;
-    for i in 0..n {
-        for j in 0..n {
-            let local = DVec2::new(
-                (f64::from(i) + 0.5) * cell.x - 0.5 * size.x,
-                (f64::from(j) + 0.5) * cell.y - 0.5 * size.y,
-            );
-            let at = state.local_to_world(local).as_vec2();
-            gizmos.circle_2d(at, radius, colour::TEXT);
-        }
+    for arm in point_mass_arms(size, n) {
+        let at = state.local_to_world(arm).as_vec2();
+        gizmos.circle_2d(at, radius, colour::TEXT);
     }
 }
 

@@ -154,18 +154,9 @@ impl Quantities {
     pub fn point_mass_inertia(&self) -> f64 {
         let n = self.point_masses.max(1);
         let share = self.mass / f64::from(n * n);
-        let cell = self.size / f64::from(n);
-        let mut sum = 0.0;
-        for i in 0..n {
-            for j in 0..n {
-                let r = DVec2::new(
-                    (f64::from(i) + 0.5) * cell.x - 0.5 * self.size.x,
-                    (f64::from(j) + 0.5) * cell.y - 0.5 * self.size.y,
-                );
-                sum += share * r.length_squared();
-            }
-        }
-        sum
+        point_mass_arms(self.size, n)
+            .map(|r| share * r.length_squared())
+            .sum()
     }
 
     /// Returns the arm r from the centre to the band's corner (zero without a band).
@@ -183,7 +174,7 @@ impl Quantities {
     }
 
     /// Returns the band's torque τ = r × F.
-    pub fn band_torque(&self) -> f64 {
+    fn band_torque(&self) -> f64 {
         self.arm().perp_dot(self.band_force())
     }
 
@@ -218,6 +209,22 @@ impl Quantities {
             0.5 * self.stiffness * stretch,
         )
     }
+}
+
+/// Returns the arms rₖ of n × n equal masses at the centres of a box's n × n cells.
+///
+/// The moment of inertia's chapter sums over them and draws them.
+pub fn point_mass_arms(size: DVec2, n: u32) -> impl Iterator<Item = DVec2> {
+    let n = n.max(1);
+    let cell = size / f64::from(n);
+    (0..n).flat_map(move |i| {
+        (0..n).map(move |j| {
+            DVec2::new(
+                (f64::from(i) + 0.5) * cell.x - 0.5 * size.x,
+                (f64::from(j) + 0.5) * cell.y - 0.5 * size.y,
+            )
+        })
+    })
 }
 
 /// Formats a number as the HUD writes it.

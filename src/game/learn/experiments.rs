@@ -5,9 +5,8 @@
 use bevy::math::DVec2;
 
 use super::chapters::Task;
-use super::equations::Quantities;
 use crate::game::shared::readable;
-use crate::physics::{BandEnds, BodyState, EnergyLedger, kinetic_energy};
+use crate::physics::{BandEnds, BodyState, kinetic_energy};
 use crate::physics::{MassProperties, SceneParams};
 
 /// How far the box may turn over a 40 px pull and count as not turning (rad).
@@ -110,15 +109,9 @@ fn v(value: DVec2) -> String {
     format!("({}, {})", n(value.x), n(value.y))
 }
 
-/// Returns the band's numbers at this state, as the card writes them.
-fn quantities(look: &Look, band: BandEnds) -> Quantities {
-    Quantities::of(
-        look.state,
-        look.mass,
-        look.params,
-        Some(band),
-        EnergyLedger::default(),
-    )
+/// Returns the band's torque now (the core's own wrench).
+fn band_torque(look: &Look, band: BandEnds) -> f64 {
+    band.wrench(&look.state, look.params.stiffness).torque
 }
 
 /// Returns how far the band's line of action passes from the centre: |r × F| / |F|.
@@ -249,9 +242,9 @@ fn sign_of_torque(progress: &mut Progress, look: &Look) -> Found {
         progress.band_turn = 0.0;
         return None;
     };
-    let q = quantities(look, band);
+    let torque = band_torque(look, band);
     // The band's own part of ω's change: ∫ τ_band dt / I over the pull, not damping's.
-    progress.band_turn += q.band_torque() / q.inertia * look.stepped_seconds;
+    progress.band_turn += torque / look.mass.inertia() * look.stepped_seconds;
     let turn = progress.band_turn;
     if progress.judged || turn.abs() < TURN {
         return None;
@@ -264,7 +257,7 @@ fn sign_of_torque(progress: &mut Progress, look: &Look) -> Found {
             "the band's torque alone changed ω by {} rad/s (∫ τ_band dt / I), {sense}: the sign \
              of τ = r × F ({} now) is the sense",
             n(turn),
-            n(q.band_torque())
+            n(torque)
         ),
     ))
 }
@@ -274,8 +267,7 @@ fn double_the_inertia(progress: &mut Progress, look: &Look) -> Found {
         progress.before = None;
         return None;
     };
-    let q = quantities(look, band);
-    let (torque, inertia) = (q.band_torque(), q.inertia);
+    let (torque, inertia) = (band_torque(look, band), look.mass.inertia());
     let share = torque / inertia;
     match progress.before {
         // I doubled since: judge the answer held before the change.
@@ -386,7 +378,7 @@ fn come_to_rest(progress: &mut Progress, look: &Look) -> Found {
     }
     let p = look.params;
     let inertia = look.mass.inertia();
-    let (v, omega) = (state.linear.velocity, state.angular.angular_velocity);
+    let (velocity, omega) = (state.linear.velocity, state.angular.angular_velocity);
     if most < 1e-6 {
         return Some((
             None,
@@ -407,18 +399,18 @@ fn come_to_rest(progress: &mut Progress, look: &Look) -> Found {
             ),
         ));
     }
-    if watched && p.linear_damping == 0.0 && v != DVec2::ZERO {
+    if watched && p.linear_damping == 0.0 && velocity != DVec2::ZERO {
         return Some((
             Some(1),
             format!(
                 "it still drifts at v = {}: with b = 0 nothing takes ½ m v² = {} out",
-                self::v(v),
+                v(velocity),
                 n(energy - spin)
             ),
         ));
     }
-    let damped =
-        (p.angular_damping > 0.0 || omega == 0.0) && (p.linear_damping > 0.0 || v == DVec2::ZERO);
+    let damped = (p.angular_damping > 0.0 || omega == 0.0)
+        && (p.linear_damping > 0.0 || velocity == DVec2::ZERO);
     if energy < 0.01 * most && damped {
         return Some((
             Some(0),
