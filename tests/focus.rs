@@ -180,3 +180,76 @@ fn a_click_keeps_no_focus_and_space_still_pauses() {
     game.update(2);
     assert!(paused(&mut game), "Space after a click pauses");
 }
+
+fn slider(game: &mut Game, parameter: Parameter) -> Entity {
+    let world = game.world();
+    let mut sliders = world.query::<(Entity, &PanelSlider)>();
+    sliders
+        .iter(world)
+        .find(|(_, s)| s.0 == parameter)
+        .map(|(e, _)| e)
+        .expect("the slider")
+}
+
+fn position(game: &mut Game, slider: Entity) -> f32 {
+    game.world()
+        .get::<bevy::ui_widgets::SliderValue>(slider)
+        .expect("a slider's value")
+        .0
+}
+
+/// Each key a focused slider takes moves it as on the web: ← → ↑ ↓ a step, Shift a tenth of
+/// one, PageUp and PageDown ten, Home and End to its ends; the Page keys no longer change the
+/// step rate, and the slider's accessible value is the value with its unit.
+#[test]
+fn a_focused_slider_moves_by_every_key_and_the_game_keeps_its_own() {
+    let mut game = Game::stepping();
+    game.update(3);
+    let size = slider(&mut game, Parameter::Size);
+    focus_on(&mut game, size);
+    let rate = game.world().resource::<SceneParams>().step_rate_hz;
+    // The size's slider: log10 of the side, a step 0.05 of a decade. The value in force is
+    // rounded to three figures, so a position lies within 0.003 of a decade of the exact one.
+    let step = 0.05;
+    let press = |game: &mut Game, keys: &[KeyCode]| {
+        for key in keys {
+            game.key(*key, ButtonState::Pressed);
+        }
+        game.update(1);
+        for key in keys.iter().rev() {
+            game.key(*key, ButtonState::Released);
+        }
+        game.update(2);
+    };
+    for (keys, moved) in [
+        (&[KeyCode::ArrowRight][..], step),
+        (&[KeyCode::ArrowLeft], -step),
+        (&[KeyCode::ArrowUp], step),
+        (&[KeyCode::ArrowDown], -step),
+        (&[KeyCode::ShiftLeft, KeyCode::ArrowRight], step / 10.0),
+        (&[KeyCode::ShiftLeft, KeyCode::ArrowDown], -step / 10.0),
+        (&[KeyCode::PageUp], step * 10.0),
+        (&[KeyCode::PageDown], -step * 10.0),
+    ] {
+        let before = position(&mut game, size);
+        press(&mut game, keys);
+        let after = position(&mut game, size);
+        assert!(
+            ((after - before) - moved).abs() < 0.003,
+            "{keys:?}: {before} -> {after}, not by {moved}"
+        );
+    }
+    press(&mut game, &[KeyCode::End]);
+    let params = *game.world().resource::<SceneParams>();
+    assert_eq!(params.size.x, rubber_band_box::physics::SIZE_RANGE.high);
+    let said = game
+        .world()
+        .get::<bevy::a11y::AccessibilityNode>(size)
+        .and_then(|node| node.value().map(str::to_owned));
+    assert_eq!(said.as_deref(), Some("640 px"));
+    press(&mut game, &[KeyCode::Home]);
+    let params = *game.world().resource::<SceneParams>();
+    assert_eq!(params.size.x, rubber_band_box::physics::SIZE_RANGE.low);
+    assert_eq!(params.step_rate_hz, rate, "the Page keys were the slider's");
+    assert!(!paused(&mut game));
+}

@@ -373,17 +373,20 @@ impl Monkey {
         if viewport.width() < 1.0 || viewport.height() < 1.0 {
             return;
         }
-        let corners: Vec<Vec2> = self
-            .game
-            .drawn_corners()
-            .into_iter()
-            .map(|corner| self.game.on_window(corner))
+        let in_world = self.game.drawn_corners();
+        let corners: Vec<Vec2> = in_world
+            .iter()
+            .map(|&corner| self.game.on_window(corner))
             .collect();
         let inside = corners
             .iter()
             .all(|at| at.is_finite() && viewport.inflate(0.5).contains(*at));
         let side = corners[0].distance(corners[1]);
-        if inside && side >= 4.0 {
+        // Readable: 4 px across, or as large as the home view draws a box set smaller (the size
+        // slider goes down to 1 px, which the home frame draws under 4 px on a small window).
+        let home = (viewport.size() / rubber_band_box::physics::SCENE_SIZE.as_vec2()).min_element();
+        let readable = (in_world[0].distance(in_world[1]) * home * 0.9).min(4.0);
+        if inside && side >= readable {
             self.out_of_view = 0;
         } else {
             self.out_of_view += 1;

@@ -200,15 +200,16 @@ fn sliders_set_parameters_through_validation() {
         1e12,
         "clamped to the range"
     );
-    // Two significant digits, as a person reads them: 10^2.5 is 316.2..., set as 320.
+    // Three significant figures, as a person reads them and enough for a fine step (a
+    // hundredth of a decade) to move: 10^2.5 is 316.2..., set as 316.
     move_slider_to(&mut game, k, 2.5);
-    assert_eq!(game.world().resource::<SceneParams>().stiffness, 320.0);
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 316.0);
     // A key moves the slider too: ten times stiffer, a decade along.
     game.tap_key(KeyCode::BracketRight);
     game.update(2);
-    assert_eq!(game.world().resource::<SceneParams>().stiffness, 3200.0);
+    assert_eq!(game.world().resource::<SceneParams>().stiffness, 3160.0);
     let shown = game.world().get::<SliderValue>(k).unwrap().0;
-    assert!((shown - 3200f32.log10()).abs() < 1e-4, "{shown}");
+    assert!((shown - 3160f32.log10()).abs() < 1e-4, "{shown}");
 
     // The mass slider itself moved: `SetSliderValue` ends in the same `ValueChange` from the
     // slider that a drag sends, which `move_slider` turns into `Action::Set`. A good value

@@ -24,10 +24,12 @@
 //! - [`hud`]: the status line over the scene, the hint under it, and the window title;
 //! - [`energy`]: the Energy card: the energies, the ledger, and their graph;
 //! - [`mod@plot`]: the Speed against error card: each ghost a point on the report's axes;
+//! - [`access`]: what a screen reader hears: names, roles, labels, the scene in words;
 //! - [`screen`]: the cameras, interpolation, drawing and the dock's charts (need a window);
 //! - `web`, in the browser only: the page's side (downloads, files opened, what the page
 //!   reads back).
 
+pub mod access;
 pub mod budget;
 pub mod camera;
 pub mod energy;
@@ -75,7 +77,12 @@ impl Plugin for GameLogicPlugin {
             ghosts::GhostsPlugin,
             stability::StabilityPlugin,
             (input::panel::PanelPlugin, input::focus::FocusPlugin),
-            (readouts::plugin, energy::EnergyPlugin, hud::HudPlugin),
+            (
+                readouts::plugin,
+                energy::EnergyPlugin,
+                hud::HudPlugin,
+                access::AccessPlugin,
+            ),
         ));
     }
 }

@@ -1,11 +1,12 @@
-//! The pointer plugin: the left mouse button, or one finger, holds the band.
+//! The pointer plugin: the left mouse button, one finger, or the keyboard holds the band.
 //!
-//! Two systems run before the fixed loop each frame, in [`GameSystems::Input`], so that a
+//! Three systems run before the fixed loop each frame, in [`GameSystems::Input`], so that a
 //! press is felt by the very next fixed step: `read_pointer` turns mouse, touch and focus
 //! input into [`PointerAction`]s in world coordinates (through the camera's frame,
-//! [`CameraFrame::anchor_at`]), and `drive_band` spawns, moves and despawns the band entity
-//! from them. Tests can drive either end. The plugin owns the grip (which device holds the
-//! band) and lets go on a reset.
+//! [`CameraFrame::anchor_at`]), `read_keyboard` does the same for the keyboard's cursor
+//! ([`KeyCursor`]: the arrows move it, [`BAND_KEY`] grabs and lets go), and `drive_band`
+//! spawns, moves and despawns the band entity from them. Tests can drive either end. The
+//! plugin owns the grip (which device holds the band) and lets go on a reset.
 //!
 //! What happens at the edges:
 //! - press and release within one frame (a quick click or tap): the band acts for exactly one
@@ -18,16 +19,23 @@
 //! - the window loses focus: the band is released (the button's release may never arrive);
 //! - a second press while a band exists (a missed release, or the mouse taking over from a
 //!   finger): the old band goes and a new one attaches at the corner nearest the new press;
-//!   a second finger while the first holds the band is ignored. There is never more than one band.
+//!   a second finger while the first holds the band is ignored. There is never more than one band;
+//! - the keyboard's cursor stays on the scene's viewport, and its anchor keeps the camera's reach
+//!   as the mouse's does; a focused slider takes the arrows for itself, so they move the cursor
+//!   only while the scene (or a button) has the focus.
 //!
 //! [`CameraFrame::anchor_at`]: crate::game::camera::CameraFrame::anchor_at
 
+use bevy::ecs::system::SystemParam;
+use bevy::input::ButtonState;
+use bevy::input::keyboard::KeyboardInput;
 use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy::window::WindowFocused;
 
-use crate::game::camera::{SceneView, viewport_rect};
+use crate::game::camera::{CameraFrame, SceneView, viewport_rect, world_per_pixel};
 use crate::game::schedule::{GameSystems, PhysicsSystems};
+use crate::game::shared::FocusedKeys;
 use crate::game::simulation::{Band, Bodies, ResetScene, Tap};
 use crate::physics::BandEnds;
 
@@ -36,12 +44,15 @@ pub struct PointerPlugin;
 impl Plugin for PointerPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Grip>()
+            .init_resource::<KeyCursor>()
             .add_message::<PointerAction>()
             .add_observer(let_go_on_reset)
             .add_systems(
                 RunFixedMainLoop,
                 (
-                    read_pointer.in_set(GameSystems::ReadPointer),
+                    (read_pointer, read_keyboard)
+                        .chain()
+                        .in_set(GameSystems::ReadPointer),
                     drive_band.in_set(GameSystems::Input),
                 ),
             )
@@ -77,6 +88,39 @@ pub struct Grip(pub Option<PointerSource>);
 pub enum PointerSource {
     Mouse,
     Touch(u64),
+    /// The keyboard's cursor ([`KeyCursor`]).
+    Keyboard,
+}
+
+/// The key that grabs the corner nearest the keyboard's cursor, and lets go.
+pub const BAND_KEY: KeyCode = KeyCode::KeyB;
+
+/// The keys that move the keyboard's cursor, and the way each moves it (y up).
+const CURSOR_KEYS: [(KeyCode, Vec2); 4] = [
+    (KeyCode::ArrowLeft, Vec2::NEG_X),
+    (KeyCode::ArrowRight, Vec2::X),
+    (KeyCode::ArrowUp, Vec2::Y),
+    (KeyCode::ArrowDown, Vec2::NEG_Y),
+];
+
+/// How fast an arrow moves the keyboard's cursor, in logical pixels a second of real time.
+const CURSOR_SPEED: f32 = 240.0;
+
+/// The part of that speed with Shift held: a fine pull.
+const CURSOR_SLOW: f32 = 0.2;
+
+/// The keyboard's cursor on the scene: where the band key grabs and what the arrows move.
+///
+/// It lives in the window's logical pixels, as the mouse's cursor does, so that the anchor it
+/// gives goes through the same frame, clamps and reach ([`CameraFrame::anchor_at`]).
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
+pub struct KeyCursor {
+    /// On the window; none until an arrow or the band key is first pressed.
+    pub screen: Option<Vec2>,
+    /// Where that lies in the world this frame, and how many world units a pixel spans there.
+    pub world: Option<(DVec2, f32)>,
+    /// Drawn: since the keyboard last moved it, until the mouse or a finger holds the band.
+    pub shown: bool,
 }
 
 /// Reads mouse, touch and focus input into [`PointerAction`]s.
@@ -97,19 +141,11 @@ fn read_pointer(
         viewport,
         frame,
     } = view;
-    // The box's diagonal: how far past its corner a box held still may lie.
-    let span = boxes
-        .iter()
-        .map(|body| body.mass.size().length() as f32)
-        .fold(0.0, f32::max);
+    let span = span(&boxes);
     let area = window
         .as_deref()
         .map(|window| viewport_rect(&viewport, window));
-    let to_world = |screen: Vec2| -> Option<DVec2> {
-        let area = area.filter(|area| area.size().min_element() > 0.0)?;
-        let world = frame.anchor_at(area, span, screen);
-        world.is_finite().then_some(world)
-    };
+    let to_world = |screen: Vec2| anchor_at(&frame, area, span, screen);
     // Before any layout (and in the headless game) the scene has the whole window.
     let on_scene = |screen: Vec2| viewport.0.is_none_or(|viewport| viewport.contains(screen));
     if focus.read().any(|event| !event.focused) && grip.0.is_some() {
@@ -172,6 +208,105 @@ fn read_pointer(
         .chain(touches.iter_just_canceled())
     {
         release(&mut grip, &mut actions, PointerSource::Touch(touch.id()));
+    }
+}
+
+/// Returns the box's diagonal: how far past its corner a box held still may lie.
+fn span(boxes: &Bodies) -> f32 {
+    boxes
+        .iter()
+        .map(|body| body.mass.size().length() as f32)
+        .fold(0.0, f32::max)
+}
+
+/// Returns the anchor a point of the window gives: on the scene's viewport, in the camera's reach.
+fn anchor_at(frame: &CameraFrame, area: Option<Rect>, span: f32, screen: Vec2) -> Option<DVec2> {
+    let area = area.filter(|area| area.size().min_element() > 0.0)?;
+    let world = frame.anchor_at(area, span, screen);
+    world.is_finite().then_some(world)
+}
+
+/// The arrows held for the keyboard's cursor, and the frame's time they move it for.
+#[derive(SystemParam)]
+struct Arrows<'w, 's> {
+    held: Res<'w, ButtonInput<KeyCode>>,
+    time: Res<'w, Time<Real>>,
+    focused: FocusedKeys<'w, 's>,
+}
+
+impl Arrows<'_, '_> {
+    /// Returns the way the arrows point (y up) and the move they make on the window this frame.
+    ///
+    /// An arrow a focused slider takes moves the slider, not the cursor.
+    fn step(&self) -> (Vec2, Vec2) {
+        let direction: Vec2 = CURSOR_KEYS
+            .iter()
+            .filter(|(key, _)| self.held.pressed(*key) && !self.focused.takes(*key))
+            .map(|(_, way)| *way)
+            .sum();
+        let slow = self
+            .held
+            .any_pressed([KeyCode::ShiftLeft, KeyCode::ShiftRight]);
+        let speed = CURSOR_SPEED * if slow { CURSOR_SLOW } else { 1.0 };
+        // Window pixels run down the screen; the arrows say up.
+        let step = direction * Vec2::new(1.0, -1.0) * speed * self.time.delta_secs();
+        (direction, step)
+    }
+}
+
+/// Reads the keyboard's band: the arrows move [`KeyCursor`], [`BAND_KEY`] grabs and lets go.
+///
+/// The cursor moves first, then each press of the band key acts where it has got to; a held
+/// band follows the cursor every frame, as the mouse's follows the mouse. The band key takes
+/// over a band the mouse or a finger holds.
+fn read_keyboard(
+    mut keys: MessageReader<KeyboardInput>,
+    arrows: Arrows,
+    view: SceneView,
+    boxes: Bodies,
+    mut cursor: ResMut<KeyCursor>,
+    mut grip: ResMut<Grip>,
+    mut actions: MessageWriter<PointerAction>,
+) {
+    let Some(window) = view.window.as_deref() else {
+        return;
+    };
+    let area = viewport_rect(&view.viewport, window);
+    let presses = keys
+        .read()
+        .filter(|key| key.state == ButtonState::Pressed && !key.repeat)
+        .filter(|key| key.key_code == BAND_KEY)
+        .count();
+    // The mouse or a finger took the band: the cursor is put away until the keys move it.
+    if grip
+        .0
+        .is_some_and(|source| source != PointerSource::Keyboard)
+    {
+        cursor.shown = false;
+    }
+    let (direction, step) = arrows.step();
+    if direction == Vec2::ZERO && presses == 0 && cursor.screen.is_none() {
+        return;
+    }
+    let screen = (cursor.screen.unwrap_or(area.center()) + step).clamp(area.min, area.max);
+    cursor.screen = Some(screen);
+    cursor.shown |= direction != Vec2::ZERO || presses > 0;
+    let at = anchor_at(&view.frame, Some(area), span(&boxes), screen);
+    cursor.world = at.map(|at| (at, world_per_pixel(&view.frame)));
+    let Some(at) = at else {
+        return;
+    };
+    for _ in 0..presses {
+        if grip.0 == Some(PointerSource::Keyboard) {
+            grip.0 = None;
+            actions.write(PointerAction::Release);
+        } else {
+            grip.0 = Some(PointerSource::Keyboard);
+            actions.write(PointerAction::Press(at));
+        }
+    }
+    if grip.0 == Some(PointerSource::Keyboard) && presses == 0 {
+        actions.write(PointerAction::Move(at));
     }
 }
 

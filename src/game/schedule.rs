@@ -100,6 +100,8 @@ pub enum ScreenSystems {
     Draw,
     /// The ghosts' speed against error, in its card.
     Plot,
+    /// What a screen reader hears: the names, the labels, the scene described (`access`).
+    Access,
 }
 
 /// Work that waits for Bevy's own systems.
@@ -171,6 +173,7 @@ pub fn order_the_frame(app: &mut App) {
             ScreenSystems::Panel,
             ScreenSystems::Draw,
             ScreenSystems::Plot,
+            ScreenSystems::Access,
         )
             .chain(),
     )

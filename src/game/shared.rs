@@ -1,10 +1,14 @@
 //! The resources several plugins of the game read, each initialised once, here
 //! ([`SharedPlugin`], added first by the game): the scene's name, the status line, what
-//! shows and the game's [`Mode`]. A leaf: it imports no plugin, so none of its readers
+//! shows, the game's [`Mode`], and which keys a focused control takes ([`FocusedKeys`]). A leaf: it imports no plugin, so none of its readers
 //! imports another for them.
 
+use bevy::ecs::system::SystemParam;
+use bevy::input_focus::InputFocus;
 use bevy::prelude::*;
 use bevy::state::app::StatesPlugin;
+use bevy::ui_widgets::Slider;
+use bevy::window::PrimaryWindow;
 
 /// Initialises the shared resources and the game's mode.
 ///
@@ -131,4 +135,49 @@ pub fn hertz(rate: f64) -> String {
 /// Writes the time scale as every readout shows it: `×1`, `×0.25`.
 pub fn times(scale: f64) -> String {
     format!("×{}", readable(scale))
+}
+
+/// The keys every focused control takes: they move the focus.
+const FOCUS_KEYS: [KeyCode; 2] = [KeyCode::Tab, KeyCode::Escape];
+
+/// The keys a focused button takes for itself: it is pressed.
+const BUTTON_KEYS: [KeyCode; 3] = [KeyCode::Space, KeyCode::Enter, KeyCode::NumpadEnter];
+
+/// The keys a focused slider takes for itself: they move it (`input::panel::slider`).
+pub const SLIDER_KEYS: [KeyCode; 8] = [
+    KeyCode::ArrowLeft,
+    KeyCode::ArrowRight,
+    KeyCode::ArrowUp,
+    KeyCode::ArrowDown,
+    KeyCode::Home,
+    KeyCode::End,
+    KeyCode::PageUp,
+    KeyCode::PageDown,
+];
+
+/// Which keys the focused control takes for itself, rather than the game.
+#[derive(SystemParam)]
+pub struct FocusedKeys<'w, 's> {
+    focus: Res<'w, InputFocus>,
+    window: Query<'w, 's, Entity, With<PrimaryWindow>>,
+    sliders: Query<'w, 's, (), With<Slider>>,
+}
+
+impl FocusedKeys<'_, '_> {
+    /// Tells whether `key` goes to the focused control rather than the game.
+    ///
+    /// A button takes Space and Enter, a slider the arrows, Home, End and the Page keys; with
+    /// the scene focused every key is the game's.
+    pub fn takes(&self, key: KeyCode) -> bool {
+        let window = self.window.single().ok();
+        let Some(control) = self.focus.get().filter(|&entity| Some(entity) != window) else {
+            return false;
+        };
+        let own: &[KeyCode] = if self.sliders.contains(control) {
+            &SLIDER_KEYS
+        } else {
+            &BUTTON_KEYS
+        };
+        FOCUS_KEYS.contains(&key) || own.contains(&key)
+    }
 }

@@ -1,7 +1,7 @@
 //! The page around the web build: the few things only JavaScript can do (download a file, ask for
 //! one, receive a dropped one) and what the page can read back (a replay's hash, how a playback
 //! ended, where the panel's buttons, the viewport, the texts and the box are). A leaf: no Bevy, no
-//! game state; the recorder, the playback and the panel call it.
+//! game state; the recorder, the playback, the panel, the access module and others call it.
 
 use wasm_bindgen::prelude::*;
 
@@ -96,6 +96,32 @@ export function share_link(query) {
 export function publish_box(json) {
   api().box = JSON.parse(json);
 }
+
+// What a screen reader reads of the page: the scene described and the last action's result
+// in a live region, the controls named in a list (index.html holds both elements).
+export function announce(text) {
+  const region = document.getElementById("said");
+  if (region && region.textContent !== text) region.textContent = text;
+  api().said = text;
+}
+
+export function publish_controls(json) {
+  const controls = JSON.parse(json);
+  api().controls = controls;
+  const list = document.getElementById("controls");
+  if (!list) return;
+  list.replaceChildren(...controls.map(({ name, value }) => {
+    const item = document.createElement("li");
+    item.textContent = value ? `${name}: ${value}` : name;
+    return item;
+  }));
+}
+
+// The keyboard's focus in the game: its control's name, and whether it is the first or the
+// last Tab reaches (index.html lets Tab leave the canvas from there).
+export function publish_focus(json) {
+  api().focus = JSON.parse(json);
+}
 "#)]
 extern "C" {
     /// Offers `text` as a download and returns the file's name.
@@ -157,4 +183,19 @@ extern "C" {
     ///
     /// They are `[[x, y], ...]`, in CSS pixels.
     pub fn publish_box(json: &str);
+
+    /// Puts `text` in the page's live region (`#said`), which a screen reader reads out.
+    ///
+    /// Also `window.rubberBandBox.said`.
+    pub fn announce(text: &str);
+
+    /// Publishes `window.rubberBandBox.controls` and lists them in the page (`#controls`).
+    ///
+    /// Each is `{ name, value }`: every control the dock shows, named as a screen reader names it.
+    pub fn publish_controls(json: &str);
+
+    /// Publishes `window.rubberBandBox.focus`: `{ name, first, last }` of the focused control.
+    ///
+    /// It is `null` when the scene has the focus.
+    pub fn publish_focus(json: &str);
 }

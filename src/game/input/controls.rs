@@ -10,15 +10,13 @@ use bevy::input::ButtonState;
 use bevy::input::keyboard::KeyboardInput;
 use bevy::prelude::*;
 
-use bevy::input_focus::InputFocus;
-use bevy::window::PrimaryWindow;
-
 use crate::game::camera::HomeView;
-use crate::game::input::focus::widget_keys;
+use crate::game::pointer::BAND_KEY;
 use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
 use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
+use crate::game::shared::FocusedKeys;
 use crate::game::shared::Learn;
 use crate::game::shared::{DockHidden, Overlays, StatusMessage, readable};
 use crate::game::simulation::ResetScene;
@@ -159,6 +157,17 @@ impl Parameter {
         }
     }
 
+    /// Returns its name in full, as a screen reader says it.
+    pub fn spoken(self) -> &'static str {
+        match self {
+            Self::Stiffness => "band stiffness k",
+            Self::Mass => "box mass",
+            Self::Size => "box size",
+            Self::LinearDamping => "linear damping b",
+            Self::AngularDamping => "angular damping c",
+        }
+    }
+
     pub fn get(self, params: &SceneParams) -> f64 {
         match self {
             Self::Stiffness => params.stiffness,
@@ -214,7 +223,7 @@ pub struct Control {
 }
 
 /// Every key the game reads, in the order the help line lists them.
-pub const CONTROLS: [Control; 20] = [
+pub const CONTROLS: [Control; 21] = [
     Control {
         keys: &[PAUSE],
         actions: &[Action::TogglePause],
@@ -347,7 +356,21 @@ pub const CONTROLS: [Control; 20] = [
         actions: &[],
         label: "Tab Esc",
         name: "focus",
-        effect: "keyboard focus: Tab moves it through the dock's buttons and sliders in reading order (Shift+Tab back), a ring shows it; a focused button takes Space and Enter, a focused slider ← → Home End, and the game's key of that name does not fire; Esc gives focus back to the scene (docs/controls.md)",
+        effect: "keyboard focus: Tab moves it through the dock's buttons and sliders in reading order (Shift+Tab back), a ring shows it; a focused button takes Space and Enter, a focused slider ← → ↑ ↓ one step (with Shift a tenth), PgUp PgDn ten steps, Home End its ends, and the game's key of that name does not fire; Esc gives focus back to the scene (docs/controls.md)",
+    },
+    Control {
+        // The pointer plugin reads these itself: they drive the band as the mouse does.
+        keys: &[
+            BAND_KEY,
+            KeyCode::ArrowLeft,
+            KeyCode::ArrowRight,
+            KeyCode::ArrowUp,
+            KeyCode::ArrowDown,
+        ],
+        actions: &[],
+        label: "B ←→↑↓",
+        name: "band",
+        effect: "the band by keyboard: the arrows move a cursor on the scene (with Shift slowly), B grabs the corner nearest it and the arrows then pull; B again lets go. The same band as the mouse's, recorded and replayed the same way",
     },
     Control {
         keys: &[LEARN],
@@ -387,14 +410,10 @@ pub fn key_hint() -> String {
 fn keys_to_actions(
     mut keys: MessageReader<KeyboardInput>,
     mut actions: MessageWriter<Action>,
-    focus: Res<InputFocus>,
-    window: Query<Entity, With<PrimaryWindow>>,
+    focused: FocusedKeys,
 ) {
-    let window = window.single().ok();
     for press in keys.read().filter(|key| {
-        key.state == ButtonState::Pressed
-            && !key.repeat
-            && !widget_keys(&focus, window, key.key_code)
+        key.state == ButtonState::Pressed && !key.repeat && !focused.takes(key.key_code)
     }) {
         for control in &CONTROLS {
             for (key, action) in control.keys.iter().zip(control.actions) {

@@ -2,8 +2,9 @@
 //! shown (the status line's, the cards' titles, the panel's, learn mode's), in reading order,
 //! with Bevy's own tab navigation (`bevy_input_focus`); a ring shows the focused control when
 //! focus came by keyboard; Escape gives focus back to the scene. A focused control takes its
-//! own keys (a button Space and Enter, a slider the arrows, Home and End), and the game's
-//! global keys do not fire for them ([`widget_keys`]). A click keeps no keyboard focus.
+//! own keys (a button Space and Enter, a slider the arrows, Home, End and the Page keys), and
+//! the game's global keys do not fire for them ([`FocusedKeys`](crate::game::shared::FocusedKeys)). A click keeps no keyboard
+//! focus.
 
 use bevy::input::ButtonState;
 use bevy::input::keyboard::KeyboardInput;
@@ -40,28 +41,6 @@ impl Plugin for FocusPlugin {
                     .in_set(ScreenSystems::Panel),
             );
     }
-}
-
-/// The keys a focused control takes for itself.
-const WIDGET_KEYS: [KeyCode; 11] = [
-    KeyCode::Space,
-    KeyCode::Enter,
-    KeyCode::NumpadEnter,
-    KeyCode::ArrowLeft,
-    KeyCode::ArrowRight,
-    KeyCode::ArrowUp,
-    KeyCode::ArrowDown,
-    KeyCode::Home,
-    KeyCode::End,
-    KeyCode::Tab,
-    KeyCode::Escape,
-];
-
-/// Tells whether `key` goes to a focused control rather than the game.
-///
-/// It does when a control has the focus and takes that key.
-pub fn widget_keys(focus: &InputFocus, window: Option<Entity>, key: KeyCode) -> bool {
-    on_a_control(focus, window) && WIDGET_KEYS.contains(&key)
 }
 
 /// Tells whether a control has the focus (not the window, the scene's).

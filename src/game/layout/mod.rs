@@ -19,6 +19,7 @@ pub mod scroll;
 pub mod shape;
 pub mod visible;
 
+use bevy::a11y::AccessibilityNode;
 use bevy::ecs::system::SystemParam;
 use bevy::picking::Pickable;
 use bevy::prelude::*;
@@ -179,6 +180,23 @@ fn title_button(card: Card, title: &'static str) -> impl Bundle {
     )
 }
 
+/// Returns the scene's node as a screen reader finds it: a canvas named for what it shows.
+///
+/// Its description (the scene in words, `access`) is a polite live region.
+fn scene_node() -> AccessibilityNode {
+    let mut node = accesskit::Node::new(accesskit::Role::Canvas);
+    node.set_label("The scene: a box pulled by a rubber band");
+    node.set_live(accesskit::Live::Polite);
+    AccessibilityNode(node)
+}
+
+/// Returns a card as a screen reader finds it: a group named by its title.
+fn card_node(title: &str) -> AccessibilityNode {
+    let mut node = accesskit::Node::new(accesskit::Role::Group);
+    node.set_label(title);
+    AccessibilityNode(node)
+}
+
 fn spawn_regions(mut commands: Commands, registry: Res<CardRegistry>) {
     let root = commands
         .spawn((
@@ -251,6 +269,7 @@ fn spawn_regions(mut commands: Commands, registry: Res<CardRegistry>) {
     commands.spawn((
         Name::new("Scene viewport"),
         ViewportNode,
+        scene_node(),
         Pickable::IGNORE,
         Node {
             flex_grow: 1.0,
@@ -340,6 +359,7 @@ fn spawn_regions(mut commands: Commands, registry: Res<CardRegistry>) {
             .spawn((
                 Name::new(format!("Card {title}")),
                 CardFrame(card),
+                card_node(title),
                 Node {
                     flex_direction: FlexDirection::Column,
                     flex_shrink: 0.0,

@@ -10,6 +10,7 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 use bevy_prototype_lyon::prelude::*;
 
+use crate::game::pointer::KeyCursor;
 use crate::game::schedule::ScreenSystems;
 use crate::game::shared::Overlays;
 use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox, interpolated_state};
@@ -42,6 +43,7 @@ impl Plugin for DrawPlugin {
                     draw_bands,
                     draw_vectors.run_if(|overlays: Res<Overlays>| overlays.vectors),
                     (record_trail, draw_trail).chain(),
+                    draw_key_cursor,
                 )
                     .in_set(ScreenSystems::Draw),
             );
@@ -225,4 +227,29 @@ fn draw_trail(mut gizmos: Gizmos, trail: Res<Trail>) {
             .enumerate()
             .map(|(i, &p)| (p, PIN_FILL.with_alpha(i as f32 / n))),
     );
+}
+
+/// The keyboard's cursor's radius, in logical pixels.
+const KEY_CURSOR_PIXELS: f32 = 9.0;
+
+/// Draws the keyboard's cursor, a ringed cross, while the keyboard uses it.
+fn draw_key_cursor(cursor: Res<KeyCursor>, mut gizmos: Gizmos) {
+    let (true, Some((at, world_per_pixel))) = (cursor.shown, cursor.world) else {
+        return;
+    };
+    let at = at.as_vec2();
+    let radius = KEY_CURSOR_PIXELS * world_per_pixel;
+    gizmos.circle_2d(at, radius, colour::FOCUS);
+    for way in [Vec2::X, Vec2::Y] {
+        gizmos.line_2d(
+            at - way * radius * 1.6,
+            at - way * radius * 0.5,
+            colour::FOCUS,
+        );
+        gizmos.line_2d(
+            at + way * radius * 0.5,
+            at + way * radius * 1.6,
+            colour::FOCUS,
+        );
+    }
 }

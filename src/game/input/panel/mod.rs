@@ -33,7 +33,9 @@ pub use buttons::PanelButton;
 use buttons::publish_buttons;
 use buttons::{BUTTON, LIT, coloured_text, press_button, spawn_button, tap_buttons, text};
 pub use slider::{PanelSlider, SliderEnd};
-use slider::{move_slider, place_thumbs, show_values, spawn_slider};
+use slider::{
+    fine_steps_with_shift, more_slider_keys, move_slider, place_thumbs, show_values, spawn_slider,
+};
 
 pub struct PanelPlugin;
 
@@ -54,6 +56,13 @@ impl Plugin for PanelPlugin {
         app.register_card(CardSpec::always(Card::CONTROLS, "Controls", 20))
             .add_observer(press_button)
             .add_observer(move_slider)
+            .add_observer(more_slider_keys)
+            .add_systems(
+                PreUpdate,
+                fine_steps_with_shift
+                    .after(bevy::input::InputSystems)
+                    .before(bevy::input_focus::InputFocusSystems::Dispatch),
+            )
             .add_systems(Startup, spawn_panel)
             .add_systems(PostStartup, spawn_chapter_buttons)
             .add_systems(RunFixedMainLoop, tap_buttons.in_set(GameSystems::Input))

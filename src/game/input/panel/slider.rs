@@ -1,10 +1,20 @@
 //! The panel's sliders: one a scene parameter, on a logarithmic scale where the parameter
 //! spans decades, its ends' values written under its track as the readout writes them, its
 //! value sent as an [`Action::Set`] and moved back to the value in force.
+//!
+//! By keys, as on the web and in PhET's sims: Bevy's slider takes ← →, Home and End while
+//! focused; this module adds ↑ ↓ (one step), PageUp and PageDown (ten steps), and Shift with any
+//! of them for a tenth of a step. Its accessible value is the value as the readout writes it,
+//! with its unit; its name is the parameter's.
 
+use bevy::a11y::AccessibilityNode;
+use bevy::input::ButtonState;
+use bevy::input::keyboard::KeyboardInput;
+use bevy::input_focus::FocusedInput;
 use bevy::prelude::*;
 use bevy::ui_widgets::{
-    Slider, SliderRange, SliderStep, SliderThumb, SliderValue, TrackClick, ValueChange,
+    SetSliderValue, Slider, SliderRange, SliderStep, SliderThumb, SliderValue, SliderValueChange,
+    TrackClick, ValueChange,
 };
 
 use crate::game::input::controls::{Action, Parameter};
@@ -25,6 +35,12 @@ pub struct SliderEnd(pub Parameter);
 const SLIDER_WIDTH: f32 = 150.0;
 
 const THUMB_SIZE: f32 = 18.0;
+
+/// The steps PageUp and PageDown move a slider by.
+const COARSE_STEPS: f32 = 10.0;
+
+/// The part of a step Shift moves a slider by.
+const FINE_STEP: f32 = 0.1;
 
 impl Parameter {
     /// Returns the slider's range and step.
@@ -65,9 +81,10 @@ impl Parameter {
     fn value_at(self, position: f32) -> f64 {
         let position = f64::from(position);
         if self.logarithmic() {
-            // The slider's steps are tenths of a decade: 1e5, not 99999.99.
+            // The slider's steps are tenths of a decade, a fine step a hundredth: 1e5, not
+            // 99999.99, and three figures keep every fine step apart.
             let value = 10f64.powf(position);
-            let digits = 10f64.powf(value.log10().floor() - 1.0);
+            let digits = 10f64.powf(value.log10().floor() - 2.0);
             (value / digits).round() * digits
         } else {
             position
@@ -91,6 +108,7 @@ pub(super) fn spawn_slider(commands: &mut Commands, row: Entity, parameter: Para
         .id();
     commands.spawn((
         Name::new(format!("Slider {}", parameter.name())),
+        AccessibleLabel::new(parameter.spoken()),
         Slider {
             track_click: TrackClick::Snap,
             ..default()
@@ -169,15 +187,62 @@ pub(super) fn place_thumbs(
 pub(super) fn show_values(
     mut commands: Commands,
     params: Res<SceneParams>,
-    sliders: Query<(Entity, &PanelSlider, &SliderValue)>,
+    mut sliders: Query<(Entity, &PanelSlider, &SliderValue, &mut AccessibilityNode)>,
 ) {
-    for (entity, PanelSlider(parameter), value) in &sliders {
+    for (entity, PanelSlider(parameter), value, mut node) in &mut sliders {
+        // A screen reader says the value as the readout writes it, with its unit.
+        let said = parameter.written(parameter.get(&params), Some(params.mass));
+        if node.value() != Some(said.as_str()) {
+            node.set_value(said);
+        }
         let (start, end, _) = parameter.slider();
         let wanted = parameter
             .slider_position(parameter.get(&params))
             .clamp(start, end);
         if (value.0 - wanted).abs() > 1e-4 {
             commands.entity(entity).insert(SliderValue(wanted));
+        }
+    }
+}
+
+/// Moves a focused slider by the keys Bevy's slider leaves: ↑ ↓, PageUp and PageDown.
+pub(super) fn more_slider_keys(
+    mut input: On<FocusedInput<KeyboardInput>>,
+    sliders: Query<(), With<PanelSlider>>,
+    mut commands: Commands,
+) {
+    let key = &input.input;
+    if key.state != ButtonState::Pressed || !sliders.contains(input.focused_entity) {
+        return;
+    }
+    let steps = match key.key_code {
+        KeyCode::ArrowUp => 1.0,
+        KeyCode::ArrowDown => -1.0,
+        KeyCode::PageUp => COARSE_STEPS,
+        KeyCode::PageDown => -COARSE_STEPS,
+        _ => return,
+    };
+    input.propagate(false);
+    commands.trigger(SetSliderValue {
+        entity: input.focused_entity,
+        change: SliderValueChange::RelativeStep(steps),
+    });
+}
+
+/// Gives every slider its fine step while Shift is held, so that each key moves it a tenth.
+///
+/// It runs before Bevy hands the frame's keys to the focused control.
+pub(super) fn fine_steps_with_shift(
+    keys: Res<ButtonInput<KeyCode>>,
+    mut commands: Commands,
+    sliders: Query<(Entity, &PanelSlider, &SliderStep)>,
+) {
+    let fine = keys.any_pressed([KeyCode::ShiftLeft, KeyCode::ShiftRight]);
+    for (entity, PanelSlider(parameter), step) in &sliders {
+        let (_, _, whole) = parameter.slider();
+        let wanted = if fine { whole * FINE_STEP } else { whole };
+        if step.0 != wanted {
+            commands.entity(entity).insert(SliderStep(wanted));
         }
     }
 }

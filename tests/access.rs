@@ -1,0 +1,256 @@
+//! What a screen reader finds (docs/accessibility.md), read from the AccessKit nodes the game
+//! hands Bevy: every control Tab reaches has a name and a role, every slider its value and
+//! range, every text is a label, the scene is described when it changes and only then, and
+//! the screen reader's requests act as the keys do.
+
+mod common;
+
+use accesskit::{Action, Role};
+use bevy::a11y::{AccessibilityNode, ActionRequest};
+use bevy::input_focus::InputFocus;
+use bevy::prelude::*;
+use bevy::ui_widgets::Slider;
+
+use common::Game;
+use rubber_band_box::game::access::SceneDescription;
+use rubber_band_box::game::input::controls::Action as GameAction;
+use rubber_band_box::game::input::controls::Parameter;
+use rubber_band_box::game::input::panel::{PanelButton, PanelSlider};
+use rubber_band_box::physics::{Integrator, SceneParams};
+
+fn node(game: &mut Game, entity: Entity) -> accesskit::Node {
+    game.world()
+        .get::<AccessibilityNode>(entity)
+        .expect("an AccessKit node")
+        .0
+        .clone()
+}
+
+/// What Tab visits, in order, from the first control round to it again.
+fn tab_round(game: &mut Game) -> Vec<Entity> {
+    let mut visited: Vec<Entity> = Vec::new();
+    loop {
+        game.tap_key(KeyCode::Tab);
+        game.update(1);
+        let at = game.world().resource::<InputFocus>().get().expect("focus");
+        if visited.first() == Some(&at) {
+            return visited;
+        }
+        visited.push(at);
+        assert!(visited.len() < 200, "Tab never came round");
+    }
+}
+
+#[test]
+fn every_control_tab_reaches_has_a_name_and_a_role_in_the_documented_order() {
+    let mut game = Game::stepping();
+    game.update(3);
+    let visited = tab_round(&mut game);
+    let mut said = Vec::new();
+    for &entity in &visited {
+        let node = node(&mut game, entity);
+        let name = node.label().unwrap_or_default().to_owned();
+        assert!(!name.is_empty(), "{entity} has no name: {node:?}");
+        assert!(!node.is_hidden(), "{name}: hidden but reached");
+        match node.role() {
+            Role::Button => assert!(node.supports_action(Action::Click), "{name}"),
+            Role::Slider => {
+                assert!(node.numeric_value().is_some() && node.max_numeric_value().is_some());
+                assert!(node.value().is_some_and(|v| !v.is_empty()), "{name}");
+                assert!(node.supports_action(Action::Increment), "{name}");
+            }
+            role => panic!("{name}: role {role:?}"),
+        }
+        said.push(name);
+    }
+    println!("{said:#?}");
+    // docs/accessibility.md's order: the status line's button, then each card's title.
+    let documented = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/docs/accessibility.md"
+    ))
+    .expect("docs/accessibility.md");
+    let order: Vec<&str> = documented
+        .lines()
+        .skip_while(|line| !line.starts_with("Tab order"))
+        .skip(1)
+        .skip_while(|line| line.trim().is_empty())
+        .take_while(|line| line.starts_with(char::is_numeric))
+        .map(|line| line.split_once(". ").map_or(line, |(_, name)| name))
+        .collect();
+    assert!(!order.is_empty(), "the page lists the Tab order");
+    assert_eq!(said, order, "Tab's order is the page's");
+}
+
+#[test]
+fn every_text_shown_is_a_label_with_its_words_and_cards_and_the_scene_are_named() {
+    let mut game = Game::stepping();
+    game.update(3);
+    let world = game.world();
+    let mut texts =
+        world.query_filtered::<(&Text, &AccessibilityNode), With<bevy::ui::widget::Label>>();
+    let labels: Vec<(String, accesskit::Node)> = texts
+        .iter(world)
+        .map(|(text, node)| (text.0.clone(), node.0.clone()))
+        .collect();
+    assert!(labels.len() > 10, "{} labels", labels.len());
+    for (text, node) in &labels {
+        assert_eq!(node.role(), Role::Label);
+        assert!(
+            node.value().unwrap_or_default().starts_with(text.as_str()),
+            "{text}"
+        );
+    }
+    let mut groups = world.query::<&AccessibilityNode>();
+    let names: Vec<String> = groups
+        .iter(world)
+        .filter(|node| node.role() == Role::Group)
+        .filter_map(|node| node.label().map(str::to_owned))
+        .collect();
+    assert!(names.iter().any(|name| name == "Controls"), "{names:?}");
+}
+
+#[test]
+fn the_description_changes_when_the_box_moves_and_is_quiet_when_it_does_not() {
+    let mut game = Game::stepping();
+    game.update(5);
+    let first = game.world().resource::<SceneDescription>().clone();
+    assert!(first.said.contains("at the centre"), "{}", first.said);
+    // At rest for three seconds: nothing new to say.
+    game.update(300);
+    assert_eq!(*game.world().resource::<SceneDescription>(), first);
+    // A pull far to the right: it is said, and at most twice a second.
+    game.press_at(bevy::math::DVec2::new(300.0, 0.0));
+    game.update(1);
+    let mut changes = Vec::new();
+    for _ in 0..200 {
+        game.update(1);
+        let now = game.world().resource::<SceneDescription>().clone();
+        if changes
+            .last()
+            .is_none_or(|(said, _): &(String, f64)| *said != now.said)
+        {
+            changes.push((now.said.clone(), now.at));
+        }
+    }
+    assert!(
+        changes
+            .iter()
+            .any(|(said, _)| said.contains("A band pulls a corner to the right")),
+        "{changes:#?}"
+    );
+    assert!(
+        changes
+            .iter()
+            .any(|(said, _)| said.contains("moving to the right")),
+        "{changes:#?}"
+    );
+    for pair in changes.windows(2) {
+        assert!(pair[1].1 - pair[0].1 >= 0.5 - 1e-9, "{pair:?}");
+    }
+    assert!(changes.len() <= 5, "{changes:#?}");
+}
+
+fn request(game: &mut Game, entity: Entity, action: Action) {
+    game.world()
+        .write_message(ActionRequest(accesskit::ActionRequest {
+            action,
+            target_tree: accesskit::TreeId::ROOT,
+            target_node: accesskit::NodeId(entity.to_bits()),
+            data: None,
+        }));
+    game.update(2);
+}
+
+#[test]
+fn the_screen_readers_requests_press_step_and_focus() {
+    let mut game = Game::stepping();
+    game.update(3);
+    let world = game.world();
+    let rk4 = world
+        .query::<(Entity, &PanelButton)>()
+        .iter(world)
+        .find(|(_, b)| **b == PanelButton::Send(GameAction::Integrator(Integrator::Rk4)))
+        .map(|(e, _)| e)
+        .unwrap();
+    let mass = world
+        .query_filtered::<(Entity, &PanelSlider), With<Slider>>()
+        .iter(world)
+        .find(|(_, s)| s.0 == Parameter::Mass)
+        .map(|(e, _)| e)
+        .unwrap();
+    request(&mut game, rk4, Action::Click);
+    assert_eq!(*game.world().resource::<Integrator>(), Integrator::Rk4);
+    let before = game.world().resource::<SceneParams>().mass;
+    request(&mut game, mass, Action::Increment);
+    let after = game.world().resource::<SceneParams>().mass;
+    assert!(after > before, "{before} -> {after}");
+    request(&mut game, mass, Action::Decrement);
+    request(&mut game, mass, Action::Decrement);
+    assert!(game.world().resource::<SceneParams>().mass < before);
+    request(&mut game, mass, Action::Focus);
+    assert_eq!(game.world().resource::<InputFocus>().get(), Some(mass));
+}
+
+/// What the browser's page is told (docs/accessibility.md): the live region says the scene
+/// and then the last action's result, the list names every control shown with a slider's
+/// value, and the focus says when Tab is at the first or last control, where it leaves.
+#[test]
+fn the_page_is_told_the_scene_the_last_result_the_controls_and_the_focus() {
+    use rubber_band_box::game::access::Page;
+    let mut game = Game::stepping();
+    game.update(3);
+    let page = game.world().resource::<Page>().clone();
+    assert!(page.said.starts_with("The box is"), "{}", page.said);
+    assert!(page.focus.is_none(), "the scene has the focus");
+    let names: Vec<&str> = page
+        .controls
+        .iter()
+        .map(|(name, _)| name.as_str())
+        .collect();
+    assert_eq!(
+        names,
+        ["instruments", "Controls", "Readouts", "Energy", "Stability"]
+    );
+    game.tap_key(KeyCode::KeyO);
+    game.update(2);
+    assert_eq!(
+        game.world().resource::<Page>().said,
+        "drop a replay file on the window to play it"
+    );
+    // Tab to the first control, then round to the last (Shift+Tab).
+    game.tap_key(KeyCode::Tab);
+    game.update(2);
+    let focus = game.world().resource::<Page>().focus.clone();
+    assert_eq!(focus, Some(("instruments".to_owned(), true, false)));
+    // Enter on Controls' title opens it: its sliders are listed with their values.
+    game.tap_key(KeyCode::Tab);
+    game.update(1);
+    game.tap_key(KeyCode::Enter);
+    game.update(3);
+    let page = game.world().resource::<Page>().clone();
+    let k = page
+        .controls
+        .iter()
+        .find(|(name, _)| name == "band stiffness k")
+        .expect("k's slider listed");
+    assert_eq!(k.1, "20", "the tutorial's k, as the readout writes it");
+    game.key(KeyCode::ShiftLeft, bevy::input::ButtonState::Pressed);
+    game.update(1);
+    game.tap_key(KeyCode::Tab);
+    game.update(1);
+    game.tap_key(KeyCode::Tab);
+    game.update(1);
+    game.key(KeyCode::ShiftLeft, bevy::input::ButtonState::Released);
+    game.update(2);
+    let focus = game
+        .world()
+        .resource::<Page>()
+        .focus
+        .clone()
+        .expect("a focus");
+    assert!(
+        focus.2 && !focus.1,
+        "Shift+Tab from the first goes to the last: {focus:?}"
+    );
+}
