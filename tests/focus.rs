@@ -239,6 +239,16 @@ fn a_focused_slider_moves_by_every_key_and_the_game_keeps_its_own() {
             "{keys:?}: {before} -> {after}, not by {moved}"
         );
     }
+    // Two presses in one frame are two steps.
+    let before = position(&mut game, size);
+    game.tap_key(KeyCode::ArrowRight);
+    game.tap_key(KeyCode::ArrowRight);
+    game.update(3);
+    let after = position(&mut game, size);
+    assert!(
+        ((after - before) - 2.0 * step).abs() < 0.003,
+        "two presses in a frame: {before} -> {after}"
+    );
     press(&mut game, &[KeyCode::End]);
     let params = *game.world().resource::<SceneParams>();
     assert_eq!(params.size.x, rubber_band_box::physics::SIZE_RANGE.high);

@@ -468,6 +468,95 @@ const boxAlwaysInView = async (p, snap, samples = 12, least = 0.6) => {
 // numbers in it, with every corner of the box in the viewport; "leave" ends the mode. An
 // equation of each chapter, as the card writes it (a line a text):
 const FIRST_EQUATIONS = ["ΣF = F_band + F_damp = (", "θ = ", "τ = r × F = r_x·F_y − r_y·F_x = ", "I = m (w² + h²) / 12 = ", "τ = r × F = r_x·F_y − r_y·F_x = ", "F_damp = −b v = −", "1  ω ← e^(−c dt) ω = "];
+// The page's focused control (`rubberBandBox.focus`), and its controls' names and values.
+const focusOf = (p) => p.evaluate(() => window.rubberBandBox?.focus ?? null);
+const controlValue = (p, name) => p.evaluate((name) =>
+  (window.rubberBandBox?.controls ?? []).find((c) => c.name === name)?.value ?? null, name);
+const listed = (p, name) => p.evaluate((name) => (window.rubberBandBox?.controls ?? []).some((c) => c.name === name), name);
+// Tab (or Shift+Tab) until the control named `name` has the focus; false after 60 presses.
+const tabTo = async (p, name, back = false) => {
+  for (let presses = 0; presses < 60; presses++) {
+    const now = await focusOf(p);
+    if (now?.name === name) return true;
+    await p.keyboard.press(back ? "Shift+Tab" : "Tab");
+    await until(p, (before) => JSON.stringify(window.rubberBandBox?.focus ?? null) !== before, JSON.stringify(now), 5000);
+  }
+  return false;
+};
+const liveRegion = (p) => p.evaluate(() => document.getElementById("said")?.textContent ?? "");
+const keyboardAlone = async (p) => {
+  const where = "keyboard alone";
+  await p.focus("canvas");
+  // A card opened by Enter on its title.
+  let opened = await tabTo(p, "Controls");
+  if (opened) {
+    await p.keyboard.press("Enter");
+    opened = await until(p, () => (window.rubberBandBox?.controls ?? []).some((c) => c.name === "band stiffness k"), null, 10000);
+  }
+  check(opened, `${where}: Tab to the Controls card's title, Enter: the card opens, its sliders listed in the page (focus ${JSON.stringify(await focusOf(p))})`);
+  // k by its slider's keys.
+  const k = await controlValue(p, "band stiffness k");
+  const onK = opened && await tabTo(p, "band stiffness k");
+  if (onK) for (const key of ["ArrowRight", "ArrowRight"]) await p.keyboard.press(key);
+  const kMoved = onK && await until(p, (k) => (window.rubberBandBox?.controls ?? [])
+    .find((c) => c.name === "band stiffness k")?.value !== k, k, 10000);
+  check(kMoved, `${where}: Tab to k's slider, → twice: k ${k} -> ${await controlValue(p, "band stiffness k")}`);
+  // Pause and resume (a slider leaves Space to the game), said in the live region.
+  await p.keyboard.press("Space");
+  const paused = await until(p, () => (document.getElementById("said")?.textContent ?? "").startsWith("Paused."), null, 10000);
+  const saidPaused = await liveRegion(p);
+  await p.keyboard.press("Space");
+  const resumed = await until(p, () => /^The box is/.test(document.getElementById("said")?.textContent ?? ""), null, 10000);
+  check(paused && resumed, `${where}: Space pauses and resumes, the live region says so ("${saidPaused}", then "${await liveRegion(p)}")`);
+  // The keyboard's band: Esc gives the scene the focus, B grabs, → pulls, B lets go.
+  await p.keyboard.press("Escape");
+  await until(p, () => window.rubberBandBox?.focus === null, null, 5000);
+  const start = boxCentre(await api(p));
+  await p.keyboard.press("b");
+  await p.keyboard.down("ArrowRight");
+  const pulling = await until(p, () => (document.getElementById("said")?.textContent ?? "").includes("A band pulls a corner"), null, 15000);
+  await p.keyboard.up("ArrowRight");
+  const moved = await until(p, (x) => {
+    const box = window.rubberBandBox?.box ?? [];
+    return box.length > 0 && box.reduce((sum, c) => sum + c[0], 0) / box.length > x + 20;
+  }, start?.[0] ?? 0, 15000);
+  await p.screenshot({ path: path.join(screens, "keyboard-band.png") });
+  await p.keyboard.press("b");
+  const letGo = await until(p, () => (document.getElementById("said")?.textContent ?? "").includes("No band."), null, 15000);
+  check(start && pulling && moved && letGo, `${where}: B and → pull the box to the right and B lets go (said: band ${pulling}, no band ${letGo}; the box's centre from ${fmt(start)} to ${fmt(boxCentre(await api(p)))})`);
+  // The card closed by Enter on its title.
+  let closed = await tabTo(p, "Controls");
+  if (closed) {
+    await p.keyboard.press("Enter");
+    closed = await until(p, () => !(window.rubberBandBox?.controls ?? []).some((c) => c.name === "band stiffness k"), null, 10000);
+  }
+  check(closed, `${where}: Enter on the Controls title again closes the card (its sliders gone from the list)`);
+  // Learn mode by L, its chapters by Tab to "next" and Enter.
+  await p.keyboard.press("Escape");
+  await p.keyboard.press("l");
+  const chapters = FIRST_EQUATIONS.length;
+  let walked = (await until(p, () => (window.rubberBandBox?.texts ?? []).some((t) => t.text.startsWith("1 of ")), null, 20000)) ? 1 : 0;
+  for (let chapter = 2; walked === chapter - 1 && chapter <= chapters; chapter++) {
+    if (!(await tabTo(p, "next"))) break;
+    await p.keyboard.press("Enter");
+    const title = `${chapter} of ${chapters}`;
+    if (await until(p, (title) => (window.rubberBandBox?.texts ?? []).some((t) => t.text.startsWith(title)), title, 20000)) walked = chapter;
+  }
+  check(walked === chapters, `${where}: L, then Tab to "next" and Enter walks learn mode's ${chapters} chapters (reached ${walked})`);
+  await p.keyboard.press("Escape");
+  await p.keyboard.press("l");
+  // Tab leaves the game: Shift+Tab from its first control goes to the page, not round.
+  const first = await tabTo(p, "instruments");
+  const firstFocus = await focusOf(p);
+  if (first) await p.keyboard.press("Shift+Tab");
+  await frames(p, 3);
+  const left = await p.evaluate(() => document.activeElement?.id !== "bevy");
+  check(first && firstFocus?.first === true && left, `${where}: Shift+Tab from the first control (${JSON.stringify(firstFocus)}) leaves the canvas (focus left: ${left})`);
+  const listedNames = await p.evaluate(() => [...document.querySelectorAll("#controls li")].map((li) => li.textContent));
+  check(listedNames.includes("instruments") && listedNames.includes("Controls"), `${where}: the page lists the controls for a screen reader (${listedNames.join("; ")})`);
+  await p.close();
+};
+
 const walkChapters = async (p, where, pointer, snap) => {
   const entered = await openCard(p, "Controls", pointer) && await pressButton(p, "learn", pointer);
   const missing = [];
@@ -900,6 +989,12 @@ try {
   await taughtPage.close();
   check(opened && (fourth.texts ?? []).some((t) => t.text.includes("I = m (w² + h²) / 12 = ")),
     `a chapter's link (?learn=4) opens learn mode at chapter 4, its equations shown (${opened ? "opened" : "not opened"})`);
+
+  // The keyboard alone, not one pointer event (docs/accessibility.md): Tab to a card's title
+  // and open it, Tab to k's slider and move it, pause and resume, pull the box with the
+  // keyboard's band, close the card, walk learn mode's chapters, and Tab out of the game; what
+  // a screen reader hears is read from the page's live region and its list of controls.
+  await keyboardAlone(await openLink(url));
 
   // Phones, held upright and turned (CSS pixels, touch): the box is in view and uncovered; a
   // finger drags it; a tap on the Controls card's title (a tab on a tall window) opens it,

@@ -158,13 +158,22 @@ pub(super) fn spawn_slider(commands: &mut Commands, row: Entity, parameter: Para
 /// Sends the new value of a moved slider's parameter.
 ///
 /// The slider shows the value in force after the controls have applied (or refused) it.
+///
+/// The slider takes the new position at once, so that a second key pressed in the same frame
+/// steps on from it rather than from where the slider stood (two presses, two steps).
 pub(super) fn move_slider(
     change: On<ValueChange<f32>>,
     sliders: Query<&PanelSlider>,
     mut actions: MessageWriter<Action>,
+    mut commands: Commands,
 ) {
     if let Ok(PanelSlider(parameter)) = sliders.get(change.source) {
         actions.write(Action::Set(*parameter, parameter.value_at(change.value)));
+        if change.value.is_finite() {
+            commands
+                .entity(change.source)
+                .insert(SliderValue(change.value));
+        }
     }
 }
 
@@ -199,7 +208,8 @@ pub(super) fn show_values(
         let wanted = parameter
             .slider_position(parameter.get(&params))
             .clamp(start, end);
-        if (value.0 - wanted).abs() > 1e-4 {
+        // A NaN position is put back too.
+        if value.0.is_nan() || (value.0 - wanted).abs() > 1e-4 {
             commands.entity(entity).insert(SliderValue(wanted));
         }
     }
