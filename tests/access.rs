@@ -80,6 +80,41 @@ fn every_control_tab_reaches_has_a_name_and_a_role_in_the_documented_order() {
         .collect();
     assert!(!order.is_empty(), "the page lists the Tab order");
     assert_eq!(said, order, "Tab's order is the page's");
+    // Every card open: every control Tab reaches then has a name and a role too.
+    for title in &visited[1..] {
+        game.world()
+            .resource_mut::<InputFocus>()
+            .set(*title, bevy::input_focus::FocusCause::Navigated);
+        game.tap_key(KeyCode::Enter);
+        game.update(2);
+    }
+    game.world().resource_mut::<InputFocus>().clear();
+    game.update(1);
+    let all = tab_round(&mut game);
+    assert!(
+        all.len() > 40,
+        "{} controls with every card open",
+        all.len()
+    );
+    let mut sliders = 0;
+    let mut names = std::collections::BTreeSet::new();
+    for entity in all {
+        let node = node(&mut game, entity);
+        let name = node.label().unwrap_or_default().to_owned();
+        assert!(!name.is_empty() && !node.is_hidden(), "{entity}: {node:?}");
+        // Each says which it is: the rate's "÷2" is not the time's.
+        assert!(names.insert(name.clone()), "two controls named {name}");
+        match node.role() {
+            Role::Button => {}
+            Role::Slider => {
+                sliders += 1;
+                assert!(node.value().is_some_and(|v| !v.is_empty()), "{name}");
+                assert!(node.supports_action(Action::Increment), "{name}");
+            }
+            role => panic!("{name}: role {role:?}"),
+        }
+    }
+    assert_eq!(sliders, 5, "k, mass, size and the two dampings");
 }
 
 #[test]

@@ -419,3 +419,31 @@ fn learn_mode_frames_each_chapter_close_and_keeps_the_box_and_its_twin_in_view()
         assert_home(&mut game, &format!("{size}, left learn mode"));
     }
 }
+
+/// The wheel's zoom for the keyboard: Z zooms in about the viewport's centre (the world there
+/// stays there, the box drawn larger), X zooms out, F goes home.
+#[test]
+fn the_zoom_keys_zoom_about_the_centre_and_f_goes_home() {
+    let mut game = game_at(DESKTOP);
+    let frame = |game: &mut Game| *game.world().resource::<CameraFrame>();
+    let side = |game: &mut Game| {
+        let corners = game.drawn_corners();
+        let (a, b) = (game.on_window(corners[0]), game.on_window(corners[1]));
+        a.distance(b)
+    };
+    let before = side(&mut game);
+    game.tap_key(rubber_band_box::game::camera::ZOOM_IN);
+    game.update(30);
+    let zoomed = frame(&mut game);
+    assert!(zoomed.zoom < 1.0, "{zoomed:?}");
+    let larger = side(&mut game);
+    assert!(larger > before * 1.2, "{before} -> {larger} px");
+    game.tap_key(rubber_band_box::game::camera::ZOOM_OUT);
+    game.tap_key(rubber_band_box::game::camera::ZOOM_OUT);
+    game.update(30);
+    assert!(frame(&mut game).zoom > 1.0);
+    game.tap_key(KeyCode::KeyF);
+    game.update(30);
+    assert_eq!(frame(&mut game).zoom, 1.0);
+    assert_eq!(frame(&mut game).pan, Vec2::ZERO);
+}

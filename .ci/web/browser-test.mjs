@@ -524,6 +524,20 @@ const keyboardAlone = async (p) => {
   await p.keyboard.press("b");
   const letGo = await until(p, () => (document.getElementById("said")?.textContent ?? "").includes("No band."), null, 15000);
   check(start && pulling && moved && letGo, `${where}: B and → pull the box to the right and B lets go (said: band ${pulling}, no band ${letGo}; the box's centre from ${fmt(start)} to ${fmt(boxCentre(await api(p)))})`);
+  // The keyboard's pull, saved by S, steps natively to the page's bits: the same rows as a mouse's.
+  const [download] = await Promise.all([p.waitForEvent("download", { timeout: 10000 }), p.keyboard.press("s")]);
+  const saved = path.join(screens, "keyboard-recorded.jsonl");
+  await download.saveAs(saved);
+  const pageHash = recordedHash(fs.readFileSync(saved, "utf8"));
+  let stepped = "no NATIVE_BINARY";
+  if (process.env.NATIVE_BINARY) {
+    try {
+      stepped = execFileSync(process.env.NATIVE_BINARY, ["simulate", "--replay", saved, "--hash"], { encoding: "utf8" }).trim();
+    } catch (error) {
+      stepped = `exit ${error.status}: ${String(error.stderr).trim()}`;
+    }
+  }
+  check(stepped === pageHash, `${where}: the keyboard's pull saved by S steps natively to the page's bits (page ${pageHash}, native ${stepped})`);
   // The card closed by Enter on its title.
   let closed = await tabTo(p, "Controls");
   if (closed) {

@@ -22,6 +22,8 @@
 //! entity from the frame.
 
 use bevy::ecs::system::SystemParam;
+use bevy::input::ButtonState;
+use bevy::input::keyboard::KeyboardInput;
 use bevy::input::mouse::{MouseScrollUnit, MouseWheel};
 use bevy::math::DVec2;
 use bevy::prelude::*;
@@ -277,10 +279,20 @@ pub struct SceneView<'w, 's> {
     pub frame: Res<'w, CameraFrame>,
 }
 
-/// What moves the view by hand: the wheel, the mouse's buttons and the fingers on the screen.
+/// Zooms the view in, about the viewport's centre: the wheel's zoom for the keyboard.
+pub const ZOOM_IN: KeyCode = KeyCode::KeyZ;
+
+/// Zooms the view out, about the viewport's centre.
+pub const ZOOM_OUT: KeyCode = KeyCode::KeyX;
+
+/// What one press of a zoom key zooms by (held, the key repeats).
+const KEY_ZOOM: f32 = 1.25;
+
+/// What moves the view by hand: the wheel, the buttons, the fingers and the zoom keys.
 #[derive(SystemParam)]
 struct ViewControls<'w, 's> {
     wheel: MessageReader<'w, 's, MouseWheel>,
+    keys: MessageReader<'w, 's, KeyboardInput>,
     buttons: Res<'w, ButtonInput<MouseButton>>,
     touches: Res<'w, Touches>,
 }
@@ -322,9 +334,9 @@ fn go_home_on_reset(_reset: On<ResetScene>, mut frame: ResMut<CameraFrame>) {
     };
 }
 
-/// Zooms and pans the view with the wheel, the right button and two fingers.
+/// Zooms and pans the view with the wheel, the right button, two fingers and the zoom keys.
 ///
-/// The wheel zooms about the pointer, the right button drags the view, two fingers pinch and
+/// The zoom keys zoom about the viewport's centre, the wheel about the pointer, the right button drags the view, two fingers pinch and
 /// pan: all on the scene's viewport only (the wheel over the dock scrolls it). While a band is
 /// held two fingers do not pinch: a second finger beside the one that holds does nothing.
 fn zoom_and_pan(
@@ -338,16 +350,19 @@ fn zoom_and_pan(
 ) {
     let ViewControls {
         mut wheel,
+        mut keys,
         buttons,
         touches,
     } = controls;
     let Some(window) = window else {
         wheel.clear();
+        keys.clear();
         return;
     };
     let area = viewport_rect(&viewport, &window);
     let Some(shown) = frame.shown else {
         wheel.clear();
+        keys.clear();
         return;
     };
     let home = frame.home(area.size());
@@ -361,6 +376,14 @@ fn zoom_and_pan(
         frame.pan += world_at + (centre - world_at) * applied - centre;
         frame.zoom = zoom;
     };
+    for key in keys.read().filter(|key| key.state == ButtonState::Pressed) {
+        match key.key_code {
+            // The zoom scales the world a pixel spans: less is closer.
+            ZOOM_IN => zoom_about(&mut frame, 1.0 / KEY_ZOOM, area.center()),
+            ZOOM_OUT => zoom_about(&mut frame, KEY_ZOOM, area.center()),
+            _ => {}
+        }
+    }
     for event in wheel.read() {
         let Some(at) = cursor.filter(|at| area.contains(*at)) else {
             continue;

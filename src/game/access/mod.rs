@@ -36,6 +36,7 @@ impl Plugin for AccessPlugin {
                 (
                     answer_requests,
                     describe_the_scene,
+                    contain_the_tree,
                     name_the_controls,
                     label_the_texts,
                     tell_the_page,
@@ -132,6 +133,26 @@ impl UiTree<'_, '_> {
         found.join(" ")
     }
 
+    /// Returns a button's name: its text, with its row's title before a text of no word.
+    ///
+    /// The rate's "÷2" is said "rate ÷2", not as the time's is.
+    fn button_name(&self, button: Entity) -> String {
+        let own = spoken(&self.text_under(button));
+        if own.chars().any(char::is_alphabetic) {
+            return own;
+        }
+        let title = self
+            .parents
+            .get(button)
+            .ok()
+            .and_then(|row| self.children.get(row.parent()).ok())
+            .and_then(|siblings| siblings.iter().find_map(|s| self.texts.get(s).ok()));
+        match title {
+            Some(title) => format!("{} {own}", spoken(&title.0)),
+            None => own,
+        }
+    }
+
     /// Tells whether a node and every node above it are displayed.
     fn shown(&self, entity: Entity) -> bool {
         std::iter::once(entity)
@@ -164,13 +185,28 @@ fn set_if_changed(node: &mut Mut<AccessibilityNode>, wanted: &AccessNode) {
     }
 }
 
-/// Names every button by its text, and hides every control not shown.
+/// The UI nodes holding others that have no node of the tree yet.
+type Unnamed = (With<Node>, With<Children>, Without<AccessibilityNode>);
+
+/// Gives every UI node that holds others a node of the tree, a container of no role.
+///
+/// Bevy hangs a node under its parent's node only if the parent has one, else under the
+/// window: without these, a card's controls would be the window's, not the card's.
+fn contain_the_tree(mut commands: Commands, containers: Query<Entity, Unnamed>) {
+    for entity in &containers {
+        commands
+            .entity(entity)
+            .insert(AccessibilityNode(AccessNode::new(Role::GenericContainer)));
+    }
+}
+
+/// Names every button by its text, and hides every control and card not shown.
 ///
 /// A card's title says whether the card is open; each control offers the screen reader's
 /// actions it answers. A button given a name of its own (`AccessibleLabel`, a slider's) keeps it.
 fn name_the_controls(
     mut buttons: Query<(Entity, &mut AccessibilityNode, Option<&CardButton>), With<Button>>,
-    mut sliders: Query<(Entity, &mut AccessibilityNode), SlidersOnly>,
+    mut others: Query<(Entity, &mut AccessibilityNode, Has<Slider>), Without<Button>>,
     labels: Query<(), With<AccessibleLabel>>,
     cards: Res<Cards>,
     tree: UiTree,
@@ -179,7 +215,7 @@ fn name_the_controls(
         let mut wanted = node.as_ref().0.clone();
         wanted.set_role(Role::Button);
         if !labels.contains(entity) {
-            wanted.set_label(spoken(&tree.text_under(entity)));
+            wanted.set_label(tree.button_name(entity));
         }
         if let Some(CardButton(card)) = card {
             wanted.set_expanded(cards.is_open(*card));
@@ -189,12 +225,23 @@ fn name_the_controls(
         wanted.add_action(Action::Focus);
         set_if_changed(&mut node, &wanted);
     }
-    for (entity, mut node) in &mut sliders {
+    // The sliders, and the regions: a card the dock does not offer is hidden.
+    for (entity, mut node, slider) in &mut others {
         let mut wanted = node.as_ref().0.clone();
-        hide_unless(&mut wanted, tree.shown(entity));
-        for action in [Action::Increment, Action::Decrement, Action::Focus] {
-            wanted.add_action(action);
+        // A slider's own name (`AccessibleLabel`) brings a node of no role with it.
+        if slider {
+            wanted.set_role(Role::Slider);
         }
+        match wanted.role() {
+            Role::Slider => {
+                for action in [Action::Increment, Action::Decrement, Action::Focus] {
+                    wanted.add_action(action);
+                }
+            }
+            Role::Group | Role::Canvas => {}
+            _ => continue,
+        }
+        hide_unless(&mut wanted, tree.shown(entity));
         set_if_changed(&mut node, &wanted);
     }
 }
@@ -206,9 +253,6 @@ fn hide_unless(node: &mut AccessNode, shown: bool) {
         node.set_hidden();
     }
 }
-
-/// The sliders (a slider is never a button).
-type SlidersOnly = (With<Slider>, Without<Button>);
 
 /// The UI's texts.
 type UiTexts = (With<Text>, With<Node>);

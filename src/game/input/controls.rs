@@ -10,7 +10,7 @@ use bevy::input::ButtonState;
 use bevy::input::keyboard::KeyboardInput;
 use bevy::prelude::*;
 
-use crate::game::camera::HomeView;
+use crate::game::camera::{HomeView, ZOOM_IN, ZOOM_OUT};
 use crate::game::pointer::BAND_KEY;
 use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
@@ -223,7 +223,7 @@ pub struct Control {
 }
 
 /// Every key the game reads, in the order the help line lists them.
-pub const CONTROLS: [Control; 21] = [
+pub const CONTROLS: [Control; 22] = [
     Control {
         keys: &[PAUSE],
         actions: &[Action::TogglePause],
@@ -321,6 +321,14 @@ pub const CONTROLS: [Control; 21] = [
         label: "F",
         name: "frame",
         effect: "the camera back to the tutorial's 640 x 480 frame (the wheel or a pinch zooms, the right button or two fingers pan; the camera follows a box pulled out of view)",
+    },
+    Control {
+        // The camera reads these itself, as it reads the wheel.
+        keys: &[ZOOM_IN, ZOOM_OUT],
+        actions: &[],
+        label: "Z X",
+        name: "zoom",
+        effect: "zoom in / out about the scene's centre, as the wheel does about the pointer (F goes back to the frame)",
     },
     Control {
         keys: &[SAVE],

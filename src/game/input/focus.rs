@@ -116,6 +116,8 @@ fn ring_the_focused(
 
 /// Gives focus back to the scene on Escape, and after a click on a control.
 ///
+/// The scene's focus is no entity, not the window, so that Bevy hands AccessKit its tree.
+///
 /// A control clicked or tapped takes focus (Bevy's picking does it) but shows no ring; the keys
 /// then stay the game's, as before focus existed: Space after a click on `rk4` pauses.
 fn return_focus_to_the_scene(
@@ -124,10 +126,16 @@ fn return_focus_to_the_scene(
     mut visible: ResMut<InputFocusVisible>,
     window: Query<Entity, With<PrimaryWindow>>,
 ) {
+    let window = window.single().ok();
+    // The scene's focus is none: Bevy puts it on the window at start, and while it rests on an
+    // entity with no accessibility node Bevy hands AccessKit no tree at all.
+    if window.is_some() && focus.get() == window {
+        focus.clear();
+    }
     let escaped = keys
         .read()
         .any(|key| key.key_code == KeyCode::Escape && key.state == ButtonState::Pressed);
-    if on_a_control(&focus, window.single().ok()) && (escaped || !visible.0) {
+    if on_a_control(&focus, window) && (escaped || !visible.0) {
         focus.clear();
         visible.0 = false;
     }
