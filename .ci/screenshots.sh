@@ -67,3 +67,6 @@ for chapter in 1 2 3 4 5 6 7; do
     convert "site/screens/desktop-learn-$chapter.png" -colors 128 "PNG8:assets/learn/chapter-$chapter.png"
 done
 echo "assets/learn/chapter-1.png ... chapter-7.png"
+# The band by keyboard alone (docs/accessibility.md): the browser test's keyboard pull.
+convert site/screens/keyboard-band.png -colors 128 PNG8:assets/keyboard-band.png
+echo "assets/keyboard-band.png"
