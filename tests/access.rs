@@ -289,3 +289,40 @@ fn the_page_is_told_the_scene_the_last_result_the_controls_and_the_focus() {
         "Shift+Tab from the first goes to the last: {focus:?}"
     );
 }
+
+/// A lit button says so: a switch (ghosts, the dock) on or off, a choice (an integrator, a
+/// scene) selected or not, as the panel lights it.
+#[test]
+fn a_screen_reader_hears_which_switches_are_on_and_which_choice_is_made() {
+    let mut game = Game::stepping();
+    game.update(3);
+    let find = |game: &mut Game, does: GameAction| {
+        let world = game.world();
+        world
+            .query::<(Entity, &PanelButton)>()
+            .iter(world)
+            .find(|(_, b)| **b == PanelButton::Send(does))
+            .map(|(e, _)| e)
+            .expect("the button")
+    };
+    let ghosts = find(&mut game, GameAction::ToggleGhosts);
+    let rk4 = find(&mut game, GameAction::Integrator(Integrator::Rk4));
+    let auto = find(&mut game, GameAction::Integrator(Integrator::Auto));
+    assert_eq!(
+        node(&mut game, ghosts).toggled(),
+        Some(accesskit::Toggled::False)
+    );
+    assert_eq!(node(&mut game, auto).is_selected(), Some(true));
+    assert_eq!(node(&mut game, rk4).is_selected(), Some(false));
+    game.tap_key(KeyCode::KeyG);
+    game.tap_key(KeyCode::KeyI);
+    game.update(3);
+    assert_eq!(
+        node(&mut game, ghosts).toggled(),
+        Some(accesskit::Toggled::True)
+    );
+    let next = game.world().resource::<Integrator>().to_owned();
+    let chosen = find(&mut game, GameAction::Integrator(next));
+    assert_eq!(node(&mut game, chosen).is_selected(), Some(true));
+    assert_eq!(node(&mut game, auto).is_selected(), Some(false));
+}

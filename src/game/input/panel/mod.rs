@@ -12,6 +12,7 @@
 pub mod buttons;
 pub mod slider;
 
+use bevy::a11y::AccessibilityNode;
 use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 use bevy::ui_widgets::{ButtonPlugin, SliderPlugin};
@@ -284,10 +285,41 @@ struct Shown<'w> {
     learning: Res<'w, Learning>,
 }
 
+/// What a lit button says: a switch is on, or a choice is the one chosen.
+enum Lit {
+    Switch,
+    Choice,
+}
+
+impl PanelButton {
+    /// Returns what this button's light means, if it has one.
+    fn lit_is(&self) -> Option<Lit> {
+        match self {
+            Self::Send(
+                Action::ToggleGhosts
+                | Action::TogglePlot
+                | Action::ToggleVectors
+                | Action::ToggleTrail
+                | Action::ToggleDock
+                | Action::Learn,
+            ) => Some(Lit::Switch),
+            Self::Send(Action::Integrator(_) | Action::Scene(_) | Action::Predict(_)) => {
+                Some(Lit::Choice)
+            }
+            _ => None,
+        }
+    }
+}
+
 /// Shows what the resources say: the panel open or folded, which buttons are lit, the values.
 fn show_state(
     shown: Shown,
-    mut buttons: Query<(&PanelButton, &mut BackgroundColor, &Children)>,
+    mut buttons: Query<(
+        &PanelButton,
+        &mut BackgroundColor,
+        &Children,
+        &mut AccessibilityNode,
+    )>,
     mut texts: Query<&mut Text>,
     mut readouts: Query<(&ValueText, Entity)>,
 ) {
@@ -302,7 +334,7 @@ fn show_state(
         learning,
     } = shown;
     let paused = clocks.paused();
-    for (button, mut background, children) in &mut buttons {
+    for (button, mut background, children, mut node) in &mut buttons {
         let (lit, label) = match *button {
             PanelButton::Fold(_) => (false, None),
             PanelButton::Send(Action::TogglePause) => {
@@ -324,6 +356,14 @@ fn show_state(
             PanelButton::Send(_) => (false, None),
         };
         background.set_if_neq(BackgroundColor(if lit { LIT } else { BUTTON }));
+        // A screen reader hears the lit state: a switch on or off, a choice selected or not.
+        match button.lit_is() {
+            Some(Lit::Switch) if node.toggled() != Some(lit.into()) => {
+                node.set_toggled(lit.into());
+            }
+            Some(Lit::Choice) if node.is_selected() != Some(lit) => node.set_selected(lit),
+            _ => {}
+        }
         if let Some(label) = label
             && let Some(&child) = children.first()
             && let Ok(mut text) = texts.get_mut(child)
