@@ -9,13 +9,12 @@ use accesskit::{Action, Role};
 use bevy::a11y::{AccessibilityNode, ActionRequest};
 use bevy::input_focus::InputFocus;
 use bevy::prelude::*;
-use bevy::ui_widgets::Slider;
 
 use common::Game;
 use rubber_band_box::game::access::SceneDescription;
 use rubber_band_box::game::input::controls::Action as GameAction;
 use rubber_band_box::game::input::controls::Parameter;
-use rubber_band_box::game::input::panel::{PanelButton, PanelSlider};
+use rubber_band_box::game::input::panel::PanelButton;
 use rubber_band_box::physics::{Integrator, SceneParams};
 
 fn node(game: &mut Game, entity: Entity) -> accesskit::Node {
@@ -201,19 +200,8 @@ fn request(game: &mut Game, entity: Entity, action: Action) {
 fn the_screen_readers_requests_press_step_and_focus() {
     let mut game = Game::stepping();
     game.update(3);
-    let world = game.world();
-    let rk4 = world
-        .query::<(Entity, &PanelButton)>()
-        .iter(world)
-        .find(|(_, b)| **b == PanelButton::Send(GameAction::Integrator(Integrator::Rk4)))
-        .map(|(e, _)| e)
-        .unwrap();
-    let mass = world
-        .query_filtered::<(Entity, &PanelSlider), With<Slider>>()
-        .iter(world)
-        .find(|(_, s)| s.0 == Parameter::Mass)
-        .map(|(e, _)| e)
-        .unwrap();
+    let rk4 = game.button(PanelButton::Send(GameAction::Integrator(Integrator::Rk4)));
+    let mass = game.slider(Parameter::Mass);
     request(&mut game, rk4, Action::Click);
     assert_eq!(*game.world().resource::<Integrator>(), Integrator::Rk4);
     let before = game.world().resource::<SceneParams>().mass;
@@ -296,15 +284,7 @@ fn the_page_is_told_the_scene_the_last_result_the_controls_and_the_focus() {
 fn a_screen_reader_hears_which_switches_are_on_and_which_choice_is_made() {
     let mut game = Game::stepping();
     game.update(3);
-    let find = |game: &mut Game, does: GameAction| {
-        let world = game.world();
-        world
-            .query::<(Entity, &PanelButton)>()
-            .iter(world)
-            .find(|(_, b)| **b == PanelButton::Send(does))
-            .map(|(e, _)| e)
-            .expect("the button")
-    };
+    let find = |game: &mut Game, does: GameAction| game.button(PanelButton::Send(does));
     let ghosts = find(&mut game, GameAction::ToggleGhosts);
     let rk4 = find(&mut game, GameAction::Integrator(Integrator::Rk4));
     let auto = find(&mut game, GameAction::Integrator(Integrator::Auto));

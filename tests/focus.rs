@@ -12,7 +12,7 @@ use bevy::ui_widgets::{Button, Slider};
 
 use common::Game;
 use rubber_band_box::game::input::controls::{Action, PAUSE, Parameter};
-use rubber_band_box::game::input::panel::{PanelButton, PanelSlider};
+use rubber_band_box::game::input::panel::PanelButton;
 use rubber_band_box::physics::{Integrator, SceneParams};
 
 fn focused(game: &mut Game) -> Option<Entity> {
@@ -44,16 +44,6 @@ fn shown_controls(game: &mut Game) -> Vec<Entity> {
             true
         })
         .collect()
-}
-
-fn button(game: &mut Game, does: Action) -> Entity {
-    let world = game.world();
-    let mut buttons = world.query::<(Entity, &PanelButton)>();
-    buttons
-        .iter(world)
-        .find(|(_, b)| **b == PanelButton::Send(does))
-        .map(|(e, _)| e)
-        .expect("the button")
 }
 
 /// Gives `entity` focus as the keyboard does (its ring shown).
@@ -123,7 +113,7 @@ fn tab_visits_every_shown_control_once_in_order_and_shift_tab_goes_back() {
 fn space_presses_a_focused_button_and_does_not_pause() {
     let mut game = Game::stepping();
     game.update(3);
-    let rk4 = button(&mut game, Action::Integrator(Integrator::Rk4));
+    let rk4 = game.button(PanelButton::Send(Action::Integrator(Integrator::Rk4)));
     focus_on(&mut game, rk4);
     game.tap_key(PAUSE);
     game.update(2);
@@ -142,15 +132,7 @@ fn space_presses_a_focused_button_and_does_not_pause() {
 fn the_arrows_move_a_focused_slider_and_nothing_else() {
     let mut game = Game::stepping();
     game.update(3);
-    let slider = {
-        let world = game.world();
-        let mut sliders = world.query::<(Entity, &PanelSlider)>();
-        sliders
-            .iter(world)
-            .find(|(_, s)| s.0 == Parameter::Mass)
-            .map(|(e, _)| e)
-            .expect("the mass slider")
-    };
+    let slider = game.slider(Parameter::Mass);
     let before = *game.world().resource::<SceneParams>();
     focus_on(&mut game, slider);
     game.tap_key(KeyCode::ArrowRight);
@@ -171,7 +153,7 @@ fn the_arrows_move_a_focused_slider_and_nothing_else() {
 fn a_click_keeps_no_focus_and_space_still_pauses() {
     let mut game = Game::stepping();
     game.update(3);
-    let rk4 = button(&mut game, Action::Integrator(Integrator::Rk4));
+    let rk4 = game.button(PanelButton::Send(Action::Integrator(Integrator::Rk4)));
     common::click(&mut game, rk4, bevy::picking::pointer::PointerId::Mouse);
     game.update(2);
     assert_eq!(*game.world().resource::<Integrator>(), Integrator::Rk4);
@@ -179,16 +161,6 @@ fn a_click_keeps_no_focus_and_space_still_pauses() {
     game.tap_key(PAUSE);
     game.update(2);
     assert!(paused(&mut game), "Space after a click pauses");
-}
-
-fn slider(game: &mut Game, parameter: Parameter) -> Entity {
-    let world = game.world();
-    let mut sliders = world.query::<(Entity, &PanelSlider)>();
-    sliders
-        .iter(world)
-        .find(|(_, s)| s.0 == parameter)
-        .map(|(e, _)| e)
-        .expect("the slider")
 }
 
 fn position(game: &mut Game, slider: Entity) -> f32 {
@@ -205,7 +177,7 @@ fn position(game: &mut Game, slider: Entity) -> f32 {
 fn a_focused_slider_moves_by_every_key_and_the_game_keeps_its_own() {
     let mut game = Game::stepping();
     game.update(3);
-    let size = slider(&mut game, Parameter::Size);
+    let size = game.slider(Parameter::Size);
     focus_on(&mut game, size);
     let rate = game.world().resource::<SceneParams>().step_rate_hz;
     // The size's slider: log10 of the side, a step 0.05 of a decade. The value in force is

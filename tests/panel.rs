@@ -16,16 +16,6 @@ use rubber_band_box::game::shared::SceneName;
 use rubber_band_box::game::shared::{Overlays, StatusMessage};
 use rubber_band_box::physics::Integrator;
 
-fn button(game: &mut Game, does: PanelButton) -> Entity {
-    let world = game.world();
-    let mut buttons = world.query::<(Entity, &PanelButton)>();
-    buttons
-        .iter(world)
-        .find(|(_, b)| **b == does)
-        .map(|(entity, _)| entity)
-        .unwrap_or_else(|| panic!("no button for {does:?}"))
-}
-
 /// A card's title (the one over the card; a tall window shows the other, its tab).
 fn title(game: &mut Game, card: Card) -> Entity {
     let world = game.world();
@@ -49,12 +39,12 @@ fn a_click_or_a_tap_on_a_button_does_what_its_key_does() {
     click(&mut game, fold, PointerId::Mouse);
     assert!(open(&mut game, Card::CONTROLS));
 
-    let pause = button(&mut game, PanelButton::Send(Action::TogglePause));
+    let pause = game.button(PanelButton::Send(Action::TogglePause));
     click(&mut game, pause, PointerId::Mouse);
     game.update(1);
     assert!(game.world().resource::<Time<Virtual>>().is_paused());
     let steps = game.steps();
-    let step = button(&mut game, PanelButton::Send(Action::Step));
+    let step = game.button(PanelButton::Send(Action::Step));
     click(&mut game, step, PointerId::Touch(7));
     game.update(2);
     assert_eq!(game.steps(), steps + 1);
@@ -62,23 +52,20 @@ fn a_click_or_a_tap_on_a_button_does_what_its_key_does() {
     game.update(1);
     assert!(!game.world().resource::<Time<Virtual>>().is_paused());
 
-    let rk4 = button(
-        &mut game,
-        PanelButton::Send(Action::Integrator(Integrator::Rk4)),
-    );
+    let rk4 = game.button(PanelButton::Send(Action::Integrator(Integrator::Rk4)));
     click(&mut game, rk4, PointerId::Touch(7));
     assert_eq!(*game.world().resource::<Integrator>(), Integrator::Rk4);
 
-    let stiff = button(&mut game, PanelButton::Send(Action::Scene(2)));
+    let stiff = game.button(PanelButton::Send(Action::Scene(2)));
     click(&mut game, stiff, PointerId::Mouse);
     game.update(1);
     assert_eq!(game.world().resource::<SceneName>().0, "stiff");
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 1e5);
 
-    let ghosts = button(&mut game, PanelButton::Send(Action::ToggleGhosts));
+    let ghosts = game.button(PanelButton::Send(Action::ToggleGhosts));
     click(&mut game, ghosts, PointerId::Mouse);
     assert!(game.world().resource::<Overlays>().ghosts);
-    let faster = button(&mut game, PanelButton::Send(Action::MoreSteps));
+    let faster = game.button(PanelButton::Send(Action::MoreSteps));
     click(&mut game, faster, PointerId::Mouse);
     game.update(1);
     assert_eq!(game.world().resource::<SceneParams>().step_rate_hz, 200.0);
@@ -96,15 +83,15 @@ fn the_learn_buttons_walk_the_chapters() {
     let mut game = Game::stepping();
     let chapter = |game: &mut Game| chapter_shown(game.world());
     let mode = |game: &mut Game| *game.world().resource::<State<Mode>>().get();
-    let learn = button(&mut game, PanelButton::Send(Action::Learn));
+    let learn = game.button(PanelButton::Send(Action::Learn));
     click(&mut game, learn, PointerId::Mouse);
     assert_eq!(chapter(&mut game), Some(0));
     assert!(open(&mut game, Card::LEARN));
     assert_eq!(mode(&mut game), Mode::Learn);
-    let next = button(&mut game, PanelButton::Send(Action::NextChapter));
+    let next = game.button(PanelButton::Send(Action::NextChapter));
     for wanted in [1, 2, 2] {
         if wanted == 2 && chapter(&mut game) == Some(2) {
-            let back = button(&mut game, PanelButton::Send(Action::PreviousChapter));
+            let back = game.button(PanelButton::Send(Action::PreviousChapter));
             click(&mut game, back, PointerId::Touch(3));
             assert_eq!(chapter(&mut game), Some(1));
         }
@@ -166,16 +153,6 @@ fn the_panel_reaches_every_control() {
     assert_eq!(sliders, Parameter::ALL);
 }
 
-fn slider(game: &mut Game, parameter: Parameter) -> Entity {
-    let world = game.world();
-    let mut sliders = world.query::<(Entity, &PanelSlider)>();
-    sliders
-        .iter(world)
-        .find(|(_, s)| s.0 == parameter)
-        .map(|(entity, _)| entity)
-        .unwrap()
-}
-
 /// The slider moved to `position` along its track as a drag moves it (`SetSliderValue` ends in
 /// the slider's own `ValueChange`), and two frames for the controls to apply it.
 fn move_slider_to(game: &mut Game, slider: Entity, position: f32) {
@@ -191,7 +168,7 @@ fn move_slider_to(game: &mut Game, slider: Entity, position: f32) {
 #[test]
 fn sliders_set_parameters_through_validation() {
     let mut game = Game::stepping();
-    let k = slider(&mut game, Parameter::Stiffness);
+    let k = game.slider(Parameter::Stiffness);
     move_slider_to(&mut game, k, 5.0);
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 1e5);
     move_slider_to(&mut game, k, 40.0);
@@ -214,7 +191,7 @@ fn sliders_set_parameters_through_validation() {
     // The mass slider itself moved: `SetSliderValue` ends in the same `ValueChange` from the
     // slider that a drag sends, which `move_slider` turns into `Action::Set`. A good value
     // first (10^2), so that "the old value" differs from the scene's start (5 kg).
-    let mass_slider = slider(&mut game, Parameter::Mass);
+    let mass_slider = game.slider(Parameter::Mass);
     move_slider_to(&mut game, mass_slider, 2.0);
     assert_eq!(game.world().resource::<SceneParams>().mass, 100.0);
     // NaN is the one position the slider's clamp lets through (every other in -3..3 is a
@@ -330,7 +307,7 @@ fn rect_of(game: &mut Game, entity: Entity) -> Rect {
 
 /// Where the button that does `does` lies on the window, as laid out.
 fn laid_out(game: &mut Game, does: PanelButton) -> Rect {
-    let entity = button(game, does);
+    let entity = game.button(does);
     rect_of(game, entity)
 }
 
@@ -464,7 +441,7 @@ fn a_picking_press_while_a_finger_is_down_is_ignored() {
     let mut game = Game::stepping();
     game.touch_screen(4, TouchPhase::Started, Vec2::new(20.0, 700.0));
     game.update(1);
-    let pause = button(&mut game, PanelButton::Send(Action::TogglePause));
+    let pause = game.button(PanelButton::Send(Action::TogglePause));
     click(&mut game, pause, PointerId::Touch(4));
     game.update(1);
     assert!(!game.world().resource::<Time<Virtual>>().is_paused());
@@ -481,10 +458,10 @@ fn a_picking_press_while_a_finger_is_down_is_ignored() {
 fn each_thumb_lies_where_its_value_does() {
     use bevy::ui_widgets::SliderThumb;
     let mut game = Game::stepping();
-    let k = slider(&mut game, Parameter::Stiffness);
+    let k = game.slider(Parameter::Stiffness);
     move_slider_to(&mut game, k, 5.0);
     let thumb_left = |game: &mut Game, parameter: Parameter| -> f32 {
-        let entity = slider(game, parameter);
+        let entity = game.slider(parameter);
         let world = game.world();
         let children: Vec<Entity> = world.get::<Children>(entity).unwrap().to_vec();
         let node = children
@@ -513,7 +490,7 @@ fn each_thumb_lies_where_its_value_does() {
 #[test]
 fn a_slider_follows_its_value_set_elsewhere() {
     let mut game = Game::stepping();
-    let k = slider(&mut game, Parameter::Stiffness);
+    let k = game.slider(Parameter::Stiffness);
     move_slider_to(&mut game, k, 1.0);
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 10.0);
     game.world().resource_mut::<SceneParams>().stiffness = 0.1;

@@ -266,6 +266,33 @@ impl Game {
         });
     }
 
+    /// Returns the panel's button that does `does` (the first, where two do).
+    pub fn button(&mut self, does: rubber_band_box::game::input::panel::PanelButton) -> Entity {
+        use rubber_band_box::game::input::panel::PanelButton;
+        let world = self.world();
+        let mut buttons = world.query::<(Entity, &PanelButton)>();
+        buttons
+            .iter(world)
+            .find(|(_, button)| **button == does)
+            .map(|(entity, _)| entity)
+            .unwrap_or_else(|| panic!("no button for {does:?}"))
+    }
+
+    /// Returns the panel's slider of `parameter`.
+    pub fn slider(
+        &mut self,
+        parameter: rubber_band_box::game::input::controls::Parameter,
+    ) -> Entity {
+        use rubber_band_box::game::input::panel::PanelSlider;
+        let world = self.world();
+        let mut sliders = world.query::<(Entity, &PanelSlider)>();
+        sliders
+            .iter(world)
+            .find(|(_, slider)| slider.0 == parameter)
+            .map(|(entity, _)| entity)
+            .unwrap_or_else(|| panic!("no slider for {parameter:?}"))
+    }
+
     pub fn bands(&mut self) -> Vec<Band> {
         let mut query = self.world().query::<&Band>();
         query.iter(self.world()).copied().collect()
