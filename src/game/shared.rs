@@ -144,7 +144,7 @@ const FOCUS_KEYS: [KeyCode; 2] = [KeyCode::Tab, KeyCode::Escape];
 const BUTTON_KEYS: [KeyCode; 3] = [KeyCode::Space, KeyCode::Enter, KeyCode::NumpadEnter];
 
 /// The keys a focused slider takes for itself: they move it (`input::panel::slider`).
-pub const SLIDER_KEYS: [KeyCode; 8] = [
+const SLIDER_KEYS: [KeyCode; 8] = [
     KeyCode::ArrowLeft,
     KeyCode::ArrowRight,
     KeyCode::ArrowUp,
@@ -163,14 +163,38 @@ pub struct FocusedKeys<'w, 's> {
     sliders: Query<'w, 's, (), With<Slider>>,
 }
 
+/// Returns the control that has the keyboard's focus, if one has (the window's is the scene's).
+pub fn focused_control(focus: &InputFocus, window: Option<Entity>) -> Option<Entity> {
+    focus.get().filter(|&entity| Some(entity) != window)
+}
+
+/// Whether a UI node is displayed: it and every node above it (a folded card's are not).
+#[derive(SystemParam)]
+pub struct Displayed<'w, 's> {
+    nodes: Query<'w, 's, &'static Node>,
+    parents: Query<'w, 's, &'static ChildOf>,
+}
+
+impl Displayed<'_, '_> {
+    /// Tells whether `entity` and every node above it are displayed.
+    pub fn shown(&self, entity: Entity) -> bool {
+        std::iter::once(entity)
+            .chain(self.parents.iter_ancestors(entity))
+            .all(|node| {
+                self.nodes
+                    .get(node)
+                    .is_ok_and(|node| node.display != Display::None)
+            })
+    }
+}
+
 impl FocusedKeys<'_, '_> {
     /// Tells whether `key` goes to the focused control rather than the game.
     ///
     /// A button takes Space and Enter, a slider the arrows, Home, End and the Page keys; with
     /// the scene focused every key is the game's.
     pub fn takes(&self, key: KeyCode) -> bool {
-        let window = self.window.single().ok();
-        let Some(control) = self.focus.get().filter(|&entity| Some(entity) != window) else {
+        let Some(control) = focused_control(&self.focus, self.window.single().ok()) else {
             return false;
         };
         let own: &[KeyCode] = if self.sliders.contains(control) {

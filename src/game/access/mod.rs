@@ -20,7 +20,7 @@ use bevy::ui_widgets::{Activate, Button, SetSliderValue, Slider, SliderValueChan
 
 use crate::game::layout::{CardButton, Cards};
 use crate::game::schedule::ScreenSystems;
-use crate::game::shared::StatusMessage;
+use crate::game::shared::{Displayed, StatusMessage};
 use crate::game::simulation::{Band, Bodies};
 use describe::{Seen, describe};
 
@@ -115,8 +115,8 @@ struct UiTree<'w, 's> {
     children: Query<'w, 's, &'static Children>,
     texts: Query<'w, 's, &'static Text>,
     spans: Query<'w, 's, &'static TextSpan>,
-    nodes: Query<'w, 's, &'static Node>,
     parents: Query<'w, 's, &'static ChildOf>,
+    displayed: Displayed<'w, 's>,
 }
 
 impl UiTree<'_, '_> {
@@ -155,13 +155,7 @@ impl UiTree<'_, '_> {
 
     /// Tells whether a node and every node above it are displayed.
     fn shown(&self, entity: Entity) -> bool {
-        std::iter::once(entity)
-            .chain(self.parents.iter_ancestors(entity))
-            .all(|node| {
-                self.nodes
-                    .get(node)
-                    .is_ok_and(|node| node.display != Display::None)
-            })
+        self.displayed.shown(entity)
     }
 
     /// Tells whether any node above `entity` is one of `among`.

@@ -15,6 +15,7 @@ use bevy::ui_widgets::{Button, Slider};
 use bevy::window::PrimaryWindow;
 
 use crate::game::schedule::{GameSystems, ScreenSystems};
+use crate::game::shared::{Displayed, focused_control};
 use crate::game::theme::colour;
 
 pub struct FocusPlugin;
@@ -43,11 +44,6 @@ impl Plugin for FocusPlugin {
     }
 }
 
-/// Tells whether a control has the focus (not the window, the scene's).
-fn on_a_control(focus: &InputFocus, window: Option<Entity>) -> bool {
-    focus.get().is_some_and(|entity| Some(entity) != window)
-}
-
 /// Makes every UI root a tab group: the status line's, the dock's.
 fn group_the_ui_roots(
     mut commands: Commands,
@@ -67,18 +63,10 @@ type Controls = Or<(With<Button>, With<Slider>)>;
 fn offer_what_is_shown(
     mut commands: Commands,
     controls: Query<(Entity, Option<&TabIndex>), Controls>,
-    nodes: Query<&Node>,
-    parents: Query<&ChildOf>,
+    displayed: Displayed,
 ) {
     for (entity, index) in &controls {
-        let shown = std::iter::once(entity)
-            .chain(parents.iter_ancestors(entity))
-            .all(|node| {
-                nodes
-                    .get(node)
-                    .is_ok_and(|node| node.display != Display::None)
-            });
-        let wanted = TabIndex(if shown { 0 } else { -1 });
+        let wanted = TabIndex(if displayed.shown(entity) { 0 } else { -1 });
         if index != Some(&wanted) {
             commands.entity(entity).insert(wanted);
         }
@@ -135,7 +123,7 @@ fn return_focus_to_the_scene(
     let escaped = keys
         .read()
         .any(|key| key.key_code == KeyCode::Escape && key.state == ButtonState::Pressed);
-    if on_a_control(&focus, window) && (escaped || !visible.0) {
+    if focused_control(&focus, window).is_some() && (escaped || !visible.0) {
         focus.clear();
         visible.0 = false;
     }
