@@ -15,8 +15,8 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 
 use rubber_band_box::game::ghosts::GhostsPlugin;
 use rubber_band_box::game::schedule::PhysicsSystems;
-use rubber_band_box::game::shared::Overlays;
 use rubber_band_box::game::shared::SharedPlugin;
+use rubber_band_box::game::shared::{Overlay, Overlays};
 use rubber_band_box::game::simulation::{
     Band, RigidBox, SimulationPlugin, rigid_box, run_single_threaded,
 };
@@ -249,12 +249,11 @@ fn ghost_app(scene: &str, stiffness: Option<f64>, ghosts_on: bool) -> App {
     if let Some(k) = stiffness {
         scene.params.stiffness = k;
     }
+    let mut overlays = Overlays::default();
+    overlays.set(Overlay::Ghosts, ghosts_on);
     let mut app = bare_app();
     app.insert_resource(scene.params)
-        .insert_resource(Overlays {
-            ghosts: ghosts_on,
-            ..default()
-        })
+        .insert_resource(overlays)
         .add_plugins((SharedPlugin, SimulationPlugin, GhostsPlugin))
         .add_systems(FixedUpdate, circle_the_anchor.before(PhysicsSystems::Step));
     app.finish();

@@ -285,7 +285,10 @@ fn a_screen_reader_hears_which_switches_are_on_and_which_choice_is_made() {
     let mut game = Game::stepping();
     game.update(3);
     let find = |game: &mut Game, does: GameAction| game.button(PanelButton::Send(does));
-    let ghosts = find(&mut game, GameAction::ToggleGhosts);
+    let ghosts = find(
+        &mut game,
+        GameAction::Toggle(rubber_band_box::game::shared::Overlay::Ghosts),
+    );
     let rk4 = find(&mut game, GameAction::Integrator(Integrator::Rk4));
     let auto = find(&mut game, GameAction::Integrator(Integrator::Auto));
     assert_eq!(

@@ -7,7 +7,7 @@ use rubber_band_box::game::input::controls::{
     CONTROLS, FASTER, FEWER_STEPS, MORE_STEPS, OPEN, PAUSE, RESET, SINGLE_STEP, SLOWER, SOFTER,
     STIFFER, TRAIL, VECTORS, help_line, key_hint,
 };
-use rubber_band_box::game::shared::{Overlays, StatusMessage};
+use rubber_band_box::game::shared::{Overlay, Overlays, StatusMessage};
 
 #[test]
 fn pause_stops_the_fixed_steps_and_resume_continues() {
@@ -157,10 +157,10 @@ fn vectors_and_trail_toggle() {
     game.tap_key(TRAIL);
     game.update(1);
     let overlays = *game.world().resource::<Overlays>();
-    assert!(overlays.vectors && overlays.trail);
+    assert!(overlays.on(Overlay::Vectors) && overlays.on(Overlay::Trail));
     game.tap_key(VECTORS);
     game.update(1);
-    assert!(!game.world().resource::<Overlays>().vectors);
+    assert!(!game.world().resource::<Overlays>().on(Overlay::Vectors));
 }
 
 /// G shows and hides the ghosts, P the plot (and shows the ghosts, its points), H the HUD;
@@ -176,13 +176,9 @@ fn ghosts_plot_and_hud_toggle() {
     };
     assert_eq!(overlays(&mut game), Overlays::default());
     let shown = after(&mut game, KeyCode::KeyG);
-    assert_eq!(
-        shown,
-        Overlays {
-            ghosts: true,
-            ..default()
-        }
-    );
+    let mut ghosts = Overlays::default();
+    ghosts.set(Overlay::Ghosts, true);
+    assert_eq!(shown, ghosts);
     assert_eq!(after(&mut game, KeyCode::KeyG), Overlays::default());
     // The plot brings the ghosts; hiding it leaves them.
     let dock_hidden = |game: &mut Game| {
@@ -191,10 +187,16 @@ fn ghosts_plot_and_hud_toggle() {
             .0
     };
     let plotted = after(&mut game, KeyCode::KeyP);
-    assert!(plotted.plot && plotted.ghosts, "{plotted:?}");
+    assert!(
+        plotted.on(Overlay::Plot) && plotted.on(Overlay::Ghosts),
+        "{plotted:?}"
+    );
     assert!(!dock_hidden(&mut game));
     let unplotted = after(&mut game, KeyCode::KeyP);
-    assert!(!unplotted.plot && unplotted.ghosts, "{unplotted:?}");
+    assert!(
+        !unplotted.on(Overlay::Plot) && unplotted.on(Overlay::Ghosts),
+        "{unplotted:?}"
+    );
     // H hides the dock, which is not an overlay: the overlays stay as they were.
     let hidden = after(&mut game, KeyCode::KeyH);
     assert!(dock_hidden(&mut game));

@@ -459,12 +459,13 @@ fn fall_backs_are_counted_a_step_each() {
 #[test]
 fn the_heaviest_settings_keep_each_frame_within_its_budget() {
     use rubber_band_box::game::input::controls::{Action, Parameter};
+    use rubber_band_box::game::shared::Overlay;
     let mut game = Game::new(Duration::from_millis(250));
     game.world().insert_resource(FrameBudget::default());
     for action in [
         Action::Set(Parameter::Stiffness, 1e12),
-        Action::ToggleGhosts,
-        Action::TogglePlot,
+        Action::Toggle(Overlay::Ghosts),
+        Action::Toggle(Overlay::Plot),
     ]
     .into_iter()
     .chain([Action::MoreSteps; 6])

@@ -18,7 +18,7 @@ use rubber_band_box::game::play::{PlayOptions, prepare};
 use rubber_band_box::game::replays::links::current_link;
 use rubber_band_box::game::replays::playback::{Playback, PlaybackEnd};
 use rubber_band_box::game::replays::recording::Recorder;
-use rubber_band_box::game::shared::{Overlays, SceneName, StatusMessage};
+use rubber_band_box::game::shared::{Overlay, Overlays, SceneName, StatusMessage};
 use rubber_band_box::physics::{Integrator, SceneParams, TIME_SCALE_RANGE};
 use rubber_band_box::replay::link::{Key, Link, MAX_FRAGMENT_BYTES, decode_replay, encode_replay};
 use rubber_band_box::replay::{Record, Replay, Settings};
@@ -74,13 +74,15 @@ fn a_link_opens_what_it_names_and_the_share_control_writes_it_back() {
     assert!(world.resource::<Playback>().is_playing());
     assert_eq!(world.resource::<Time<Virtual>>().relative_speed_f64(), 0.5);
     let overlays = *world.resource::<Overlays>();
-    assert!(overlays.ghosts && overlays.vectors && overlays.trail);
+    assert!(
+        [Overlay::Ghosts, Overlay::Vectors, Overlay::Trail].map(|o| overlays.on(o)) == [true; 3]
+    );
     assert!(
         world
             .resource::<rubber_band_box::game::shared::DockHidden>()
             .0
     );
-    assert!(!overlays.plot);
+    assert!(!overlays.on(Overlay::Plot));
     // The box has the link's mass and size.
     let mass = *world
         .query::<&rubber_band_box::physics::MassProperties>()
@@ -138,7 +140,7 @@ fn a_link_is_taken_in_part_and_what_was_left_is_named() {
     assert_eq!(params.mass, 0.5);
     assert_eq!(params.stiffness, SceneParams::tutorial().stiffness);
     assert_eq!(params.step_rate_hz, 100.0);
-    assert!(game.world().resource::<Overlays>().plot);
+    assert!(game.world().resource::<Overlays>().on(Overlay::Plot));
     // Said under the scene, where a player sees it with every card folded, for a while.
     let hint = game.line("HUD Hint");
     assert!(hint.contains("frobnicate: not a key"), "{hint}");
@@ -191,7 +193,7 @@ fn a_game_in_a_link_replays_to_its_recorded_hash() {
     assert_eq!(steps, recorded.steps);
     assert_eq!(in_the_link, recorded.hash);
     assert_eq!(hash, recorded.hash, "the game stepped to other states");
-    assert!(again.world().resource::<Overlays>().ghosts);
+    assert!(again.world().resource::<Overlays>().on(Overlay::Ghosts));
     assert_eq!(*again.world().resource::<Integrator>(), Integrator::Verlet);
     // The link's settings keys are the replay's to set: named, not applied.
     let mut mixed = opened(&format!("?k=5{}", &link[link.find('#').unwrap()..]));

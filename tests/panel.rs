@@ -13,7 +13,7 @@ use rubber_band_box::game::input::controls::{Action, CONTROLS, Parameter};
 use rubber_band_box::game::input::panel::{PanelButton, PanelSlider};
 use rubber_band_box::game::layout::{Card, CardButton, Cards};
 use rubber_band_box::game::shared::SceneName;
-use rubber_band_box::game::shared::{Overlays, StatusMessage};
+use rubber_band_box::game::shared::{Overlay, Overlays, StatusMessage};
 use rubber_band_box::physics::Integrator;
 
 /// A card's title (the one over the card; a tall window shows the other, its tab).
@@ -62,9 +62,9 @@ fn a_click_or_a_tap_on_a_button_does_what_its_key_does() {
     assert_eq!(game.world().resource::<SceneName>().0, "stiff");
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 1e5);
 
-    let ghosts = game.button(PanelButton::Send(Action::ToggleGhosts));
+    let ghosts = game.button(PanelButton::Send(Action::Toggle(Overlay::Ghosts)));
     click(&mut game, ghosts, PointerId::Mouse);
-    assert!(game.world().resource::<Overlays>().ghosts);
+    assert!(game.world().resource::<Overlays>().on(Overlay::Ghosts));
     let faster = game.button(PanelButton::Send(Action::MoreSteps));
     click(&mut game, faster, PointerId::Mouse);
     game.update(1);
@@ -400,13 +400,15 @@ fn the_lit_buttons_say_what_is_on() {
     game.world()
         .resource_mut::<rubber_band_box::game::shared::DockHidden>()
         .0 = true;
-    game.world().resource_mut::<Overlays>().ghosts = true;
+    game.world()
+        .resource_mut::<Overlays>()
+        .set(Overlay::Ghosts, true);
     game.update(1);
     let on = lit(&mut game);
     for button in [
         PanelButton::Send(Action::Integrator(Integrator::Rk4)),
         PanelButton::Send(Action::Scene(2)),
-        PanelButton::Send(Action::ToggleGhosts),
+        PanelButton::Send(Action::Toggle(Overlay::Ghosts)),
     ] {
         assert!(on.contains(&button), "{button:?} lit: {on:?}");
     }

@@ -11,7 +11,7 @@ use common::*;
 use rubber_band_box::game::input::controls::{Action, Parameter};
 use rubber_band_box::game::replays::playback;
 use rubber_band_box::game::replays::recording::Recorder;
-use rubber_band_box::game::shared::StatusMessage;
+use rubber_band_box::game::shared::{Overlay, StatusMessage};
 use rubber_band_box::physics::{AutoSettings, BodyState, Scene};
 use rubber_band_box::replay::run::ReplayRun;
 use rubber_band_box::replay::{Header, Integrity, Replay, Settings};
@@ -81,10 +81,10 @@ fn actions() -> Vec<Action> {
         Action::Faster,
         Action::FewerSteps,
         Action::MoreSteps,
-        Action::ToggleVectors,
-        Action::ToggleTrail,
-        Action::ToggleGhosts,
-        Action::TogglePlot,
+        Action::Toggle(Overlay::Vectors),
+        Action::Toggle(Overlay::Trail),
+        Action::Toggle(Overlay::Ghosts),
+        Action::Toggle(Overlay::Plot),
         Action::ToggleDock,
         Action::HomeView,
         Action::Open,

@@ -25,14 +25,68 @@ impl Plugin for SharedPlugin {
             .init_resource::<StatusMessage>()
             .init_resource::<Overlays>()
             .init_resource::<DockHidden>()
-            .init_state::<Mode>();
+            .init_state::<Mode>()
+            .keep_across_learn::<SceneName>()
+            .keep_across_learn::<Overlays>()
+            .keep_across_learn::<DockHidden>();
+    }
+}
+
+/// Into learn mode: Bevy runs it after `OnExit(Mode::Play)` and before `OnEnter(Mode::Learn)`.
+///
+/// Each owner keeps its state here, before learn mode shows its chapter.
+pub const INTO_LEARN: OnTransition<Mode> = OnTransition {
+    exited: Mode::Play,
+    entered: Mode::Learn,
+};
+
+/// Out of learn mode: after `OnExit(Mode::Learn)`, where the chapter stops.
+///
+/// Each owner puts its state back here.
+pub const OUT_OF_LEARN: OnTransition<Mode> = OnTransition {
+    exited: Mode::Learn,
+    entered: Mode::Play,
+};
+
+/// Keeps a plugin's resource across learn mode, which changes it to show its chapters.
+pub trait KeepAcrossLearn {
+    /// Keeps `R` as learn mode is entered and puts it back as the mode is left.
+    ///
+    /// Kept in [`INTO_LEARN`], put back in [`OUT_OF_LEARN`].
+    fn keep_across_learn<R: Resource + Clone>(&mut self) -> &mut Self;
+}
+
+impl KeepAcrossLearn for App {
+    fn keep_across_learn<R: Resource + Clone>(&mut self) -> &mut Self {
+        self.add_systems(INTO_LEARN, keep::<R>)
+            .add_systems(OUT_OF_LEARN, put_back::<R>)
+    }
+}
+
+/// A resource as learn mode found it.
+#[derive(Resource)]
+struct KeptAcrossLearn<R>(R);
+
+/// Keeps a copy of `R`.
+fn keep<R: Resource + Clone>(mut commands: Commands, resource: Option<Res<R>>) {
+    if let Some(resource) = resource {
+        commands.insert_resource(KeptAcrossLearn(resource.clone()));
+    }
+}
+
+/// Puts the copy of `R` back.
+fn put_back<R: Resource + Clone>(mut commands: Commands, kept: Option<Res<KeptAcrossLearn<R>>>) {
+    if let Some(kept) = kept {
+        commands.insert_resource(kept.0.clone());
+        commands.remove_resource::<KeptAcrossLearn<R>>();
     }
 }
 
 /// What the game is doing: played freely, or walking the tutorial's chapters.
 ///
-/// Learn mode (`learn`) saves the game as it enters and puts it back as it leaves, on this
-/// state's `OnEnter` and `OnExit`; everything else asks `in_state(Mode::Learn)`.
+///
+/// Each plugin whose state learn mode changes keeps it across the mode ([`KeepAcrossLearn`]); a
+/// system that runs in one mode asks `in_state(Mode::Learn)`.
 #[derive(States, Debug, Default, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Mode {
     #[default]
@@ -70,17 +124,30 @@ impl Default for SceneName {
     }
 }
 
-/// Which overlays show.
+pub use crate::replay::link::Overlay;
+
+/// Which overlays show: the set of those switched on.
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
-pub struct Overlays {
-    /// Force and velocity arrows.
-    pub vectors: bool,
-    /// The pulled corner's trail.
-    pub trail: bool,
-    /// Every integrator and a reference beside the live box (`ghosts`).
-    pub ghosts: bool,
-    /// The ghosts' speed against their error, live (`game::plot`).
-    pub plot: bool,
+pub struct Overlays([bool; Overlay::ALL.len()]);
+
+impl Overlays {
+    /// Tells whether an overlay shows.
+    pub fn on(&self, overlay: Overlay) -> bool {
+        self.0[overlay.index()]
+    }
+
+    /// Switches an overlay on or off; the plot turns the ghosts on, its points being theirs.
+    pub fn set(&mut self, overlay: Overlay, on: bool) {
+        self.0[overlay.index()] = on;
+        if overlay == Overlay::Plot && on {
+            self.0[Overlay::Ghosts.index()] = true;
+        }
+    }
+
+    /// Switches an overlay the other way.
+    pub fn toggle(&mut self, overlay: Overlay) {
+        self.set(overlay, !self.on(overlay));
+    }
 }
 
 /// Whether the dock of cards is hidden (H; `dock=off` in a link): not an overlay, a region.

@@ -18,6 +18,7 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 
 use crate::game::schedule::{self, GameSystems, PhysicsSystems};
+use crate::game::shared::{INTO_LEARN, KeepAcrossLearn, OUT_OF_LEARN};
 use crate::physics::{
     AngularState, AutoSettings, BandEnds, BodyState, Energies, EnergyLedger, Forces, Integrator,
     LinearState, MassProperties, SceneParams, damping_wrench,
@@ -33,6 +34,11 @@ impl Plugin for SimulationPlugin {
         app.init_resource::<SceneParams>()
             .init_resource::<Integrator>()
             .init_resource::<AutoSettings>()
+            .keep_across_learn::<SceneParams>()
+            .keep_across_learn::<Integrator>()
+            .keep_across_learn::<AutoSettings>()
+            .add_systems(INTO_LEARN, keep_the_box)
+            .add_systems(OUT_OF_LEARN, put_the_box_back)
             .init_resource::<StepStats>()
             .init_resource::<ResetAt>()
             .init_resource::<StepCount>()
@@ -329,6 +335,47 @@ fn apply_mass(params: Res<SceneParams>, mut boxes: Query<&mut MassProperties, Wi
             mass.set_if_neq(wanted);
         }
     }
+}
+
+/// The box and the clock's pace as learn mode found them.
+#[derive(Resource, Debug, Clone, Copy)]
+struct KeptBox {
+    body: Option<(BodyState, MassProperties)>,
+    speed: f64,
+    paused: bool,
+}
+
+/// Keeps the box and the clock's pace as learn mode is entered.
+fn keep_the_box(mut commands: Commands, boxes: Bodies, time: Res<Time<Virtual>>) {
+    commands.insert_resource(KeptBox {
+        body: boxes.iter().next().map(|body| (body.state(), *body.mass)),
+        speed: time.relative_speed_f64(),
+        paused: time.is_paused(),
+    });
+}
+
+/// Puts the box and the clock's pace back as learn mode is left.
+fn put_the_box_back(
+    mut commands: Commands,
+    kept: Option<Res<KeptBox>>,
+    boxes: Query<Entity, With<RigidBox>>,
+    mut time: ResMut<Time<Virtual>>,
+) {
+    let Some(kept) = kept else {
+        return;
+    };
+    time.set_relative_speed_f64(kept.speed);
+    if kept.paused {
+        time.pause();
+    } else {
+        time.unpause();
+    }
+    if let Some((state, mass)) = kept.body {
+        for body in &boxes {
+            commands.entity(body).insert(rigid_box(mass, state));
+        }
+    }
+    commands.remove_resource::<KeptBox>();
 }
 
 /// Returns the box as components, in `state`, with nothing acting on it yet.

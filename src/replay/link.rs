@@ -37,34 +37,40 @@ pub enum Key {
     AngularDamping,
     StepRate,
     TimeScale,
-    Ghosts,
-    Plot,
-    Vectors,
-    Trail,
+    /// An overlay switched on or off: one key an overlay, named as the overlay.
+    Overlay(Overlay),
     Dock,
     Learn,
 }
 
 impl Key {
-    /// In the order a link writes them.
-    pub const ALL: [Self; 16] = [
-        Self::Version,
-        Self::Scene,
-        Self::Integrator,
-        Self::Stiffness,
-        Self::Mass,
-        Self::Size,
-        Self::LinearDamping,
-        Self::AngularDamping,
-        Self::StepRate,
-        Self::TimeScale,
-        Self::Ghosts,
-        Self::Plot,
-        Self::Vectors,
-        Self::Trail,
-        Self::Dock,
-        Self::Learn,
-    ];
+    /// In the order a link writes them: the overlays' keys are [`Overlay::ALL`]'s.
+    pub const ALL: [Self; 12 + Overlay::ALL.len()] = {
+        const SETTINGS: [Key; 10] = [
+            Key::Version,
+            Key::Scene,
+            Key::Integrator,
+            Key::Stiffness,
+            Key::Mass,
+            Key::Size,
+            Key::LinearDamping,
+            Key::AngularDamping,
+            Key::StepRate,
+            Key::TimeScale,
+        ];
+        let mut all = [Key::Learn; 12 + Overlay::ALL.len()];
+        let mut at = 0;
+        while at < SETTINGS.len() {
+            all[at] = SETTINGS[at];
+            at += 1;
+        }
+        while at < SETTINGS.len() + Overlay::ALL.len() {
+            all[at] = Key::Overlay(Overlay::ALL[at - SETTINGS.len()]);
+            at += 1;
+        }
+        all[at] = Key::Dock;
+        all
+    };
 
     pub fn name(self) -> &'static str {
         match self {
@@ -78,10 +84,7 @@ impl Key {
             Self::AngularDamping => "angular-damping",
             Self::StepRate => "rate",
             Self::TimeScale => "time",
-            Self::Ghosts => "ghosts",
-            Self::Plot => "plot",
-            Self::Vectors => "vectors",
-            Self::Trail => "trail",
+            Self::Overlay(overlay) => overlay.name(),
             Self::Dock => "dock",
             Self::Learn => "learn",
         }
@@ -100,10 +103,7 @@ impl Key {
             Self::AngularDamping => "angular damping rate c",
             Self::StepRate => "fixed steps per second",
             Self::TimeScale => "time scale (slow motion below 1)",
-            Self::Ghosts => "every integrator and a reference beside the box",
-            Self::Plot => "the plot of speed against error (turns the ghosts on)",
-            Self::Vectors => "velocity and force arrows",
-            Self::Trail => "the pulled corner's trail",
+            Self::Overlay(overlay) => overlay.meaning(),
             Self::Dock => "the dock of instruments",
             Self::Learn => "learn mode at this chapter (its scene and settings are the chapter's)",
         }
@@ -120,9 +120,7 @@ impl Key {
                 let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
                 names.join(", ")
             }
-            Self::Ghosts | Self::Plot | Self::Vectors | Self::Trail | Self::Dock => {
-                "on, off".to_owned()
-            }
+            Self::Overlay(_) | Self::Dock => "on, off".to_owned(),
             Self::Learn => "a chapter's number, 1 to the last".to_owned(),
             _ => self.range().map(|r| r.to_string()).unwrap_or_default(),
         }
@@ -144,7 +142,7 @@ impl Key {
             Self::TimeScale => "1".to_owned(),
             Self::Dock => "on".to_owned(),
             Self::Learn => "none (play)".to_owned(),
-            Self::Ghosts | Self::Plot | Self::Vectors | Self::Trail => "off".to_owned(),
+            Self::Overlay(_) => "off".to_owned(),
         }
     }
 
@@ -167,14 +165,70 @@ impl Key {
     }
 }
 
+/// A picture over the scene or beside it that the player switches on and off.
+///
+/// One list for the game's switches (`game::shared::Overlays`), their key actions, the panel's
+/// buttons and a link's keys, which are the overlays' names in this order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Overlay {
+    /// Every integrator and a reference beside the live box.
+    Ghosts,
+    /// The ghosts' speed against their error, live.
+    Plot,
+    /// Force and velocity arrows.
+    Vectors,
+    /// The pulled corner's trail.
+    Trail,
+}
+
+impl Overlay {
+    /// Every overlay, in the order the panel shows them and a link writes them.
+    pub const ALL: [Self; 4] = [Self::Ghosts, Self::Plot, Self::Vectors, Self::Trail];
+
+    /// Returns the overlay's name: its button's label and its key in a link.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Ghosts => "ghosts",
+            Self::Plot => "plot",
+            Self::Vectors => "vectors",
+            Self::Trail => "trail",
+        }
+    }
+
+    /// Returns what the overlay shows (docs/links.md's table).
+    pub fn meaning(self) -> &'static str {
+        match self {
+            Self::Ghosts => "every integrator and a reference beside the box",
+            Self::Plot => "the plot of speed against error (turns the ghosts on)",
+            Self::Vectors => "velocity and force arrows",
+            Self::Trail => "the pulled corner's trail",
+        }
+    }
+
+    /// Returns the overlay's place in [`Overlay::ALL`].
+    pub fn index(self) -> usize {
+        self as usize
+    }
+}
+
 /// The overlays a link turns on or off; `None` leaves one as the game has it.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LinkOverlays {
-    pub ghosts: Option<bool>,
-    pub plot: Option<bool>,
-    pub vectors: Option<bool>,
-    pub trail: Option<bool>,
+    /// Each overlay's switch, in [`Overlay::ALL`]'s order.
+    pub shown: [Option<bool>; Overlay::ALL.len()],
     pub dock: Option<bool>,
+}
+
+impl LinkOverlays {
+    /// Returns what the link says of an overlay.
+    pub fn get(&self, overlay: Overlay) -> Option<bool> {
+        self.shown[overlay.index()]
+    }
+
+    /// Sets what the link says of an overlay.
+    pub fn set(&mut self, overlay: Overlay, on: Option<bool>) {
+        self.shown[overlay.index()] = on;
+    }
 }
 
 /// What a link sets: each field `None` when the link leaves it as the game starts.
@@ -301,10 +355,7 @@ impl Link {
             Key::AngularDamping => self.angular_damping = Some(number()?),
             Key::StepRate => self.step_rate_hz = Some(number()?),
             Key::TimeScale => self.time_scale = Some(number()?),
-            Key::Ghosts => self.overlays.ghosts = Some(switch()?),
-            Key::Plot => self.overlays.plot = Some(switch()?),
-            Key::Vectors => self.overlays.vectors = Some(switch()?),
-            Key::Trail => self.overlays.trail = Some(switch()?),
+            Key::Overlay(overlay) => self.overlays.set(overlay, Some(switch()?)),
             Key::Dock => self.overlays.dock = Some(switch()?),
             Key::Learn => match value.trim().parse::<u32>() {
                 Ok(chapter) if chapter >= 1 => self.learn = Some(chapter),
@@ -356,10 +407,9 @@ impl Link {
         put(Key::AngularDamping, self.angular_damping.map(exact));
         put(Key::StepRate, self.step_rate_hz.map(exact));
         put(Key::TimeScale, self.time_scale.map(exact));
-        put(Key::Ghosts, switch(self.overlays.ghosts));
-        put(Key::Plot, switch(self.overlays.plot));
-        put(Key::Vectors, switch(self.overlays.vectors));
-        put(Key::Trail, switch(self.overlays.trail));
+        for overlay in Overlay::ALL {
+            put(Key::Overlay(overlay), switch(self.overlays.get(overlay)));
+        }
         put(Key::Dock, switch(self.overlays.dock));
         put(Key::Learn, self.learn.map(|chapter| chapter.to_string()));
         let mut text = format!("?{}", pairs.join("&"));

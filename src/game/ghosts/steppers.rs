@@ -14,7 +14,7 @@ use bevy::platform::time::Instant;
 use bevy::prelude::*;
 
 use crate::game::schedule::PhysicsSystems;
-use crate::game::shared::Overlays;
+use crate::game::shared::{Overlay, Overlays};
 use crate::game::simulation::{Band, Bodies, ResetScene, acting_band};
 use crate::physics::integrators::taylor::MAX_ORDER;
 use crate::physics::{
@@ -195,7 +195,7 @@ fn step_ghosts(
     boxes: Bodies,
     bands: Query<&Band>,
 ) {
-    if !overlays.ghosts {
+    if !overlays.on(Overlay::Ghosts) {
         if !ghosts.ghosts.is_empty() {
             ghosts.ghosts.clear();
         }

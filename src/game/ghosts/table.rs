@@ -8,6 +8,7 @@ use bevy::prelude::*;
 
 use super::steppers::{GhostKind, Ghosts};
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slots};
+use crate::game::shared::Overlay;
 use crate::game::stability::StabilityMargins;
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::Integrator;
@@ -24,7 +25,7 @@ pub(super) fn plugin(app: &mut App) {
         card: Card::GHOSTS,
         title: "Ghosts",
         place: 50,
-        offered: |overlays, _| overlays.ghosts,
+        offered: |overlays, _| overlays.on(Overlay::Ghosts),
     };
     // The stability card finds the margins; without it (the plugin alone, as the benchmarks
     // run it) the table shows none.

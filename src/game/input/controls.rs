@@ -18,7 +18,7 @@ use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
 use crate::game::shared::FocusedKeys;
 use crate::game::shared::Learn;
-use crate::game::shared::{DockHidden, Overlays, StatusMessage, readable};
+use crate::game::shared::{DockHidden, Overlay, Overlays, StatusMessage, readable};
 use crate::game::simulation::ResetScene;
 use crate::physics::{
     Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scene, SceneParams, TIME_SCALE_RANGE,
@@ -102,10 +102,8 @@ pub enum Action {
     MoreSteps,
     /// A parameter set to a value (the panel's sliders), refused if not valid.
     Set(Parameter, f64),
-    ToggleVectors,
-    ToggleTrail,
-    ToggleGhosts,
-    TogglePlot,
+    /// An overlay switched on or off.
+    Toggle(Overlay),
     ToggleDock,
     /// The camera back to the tutorial's 640 x 480 frame at once.
     HomeView,
@@ -275,28 +273,28 @@ pub const CONTROLS: [Control; 22] = [
     },
     Control {
         keys: &[VECTORS],
-        actions: &[Action::ToggleVectors],
+        actions: &[Action::Toggle(Overlay::Vectors)],
         label: "V",
         name: "vectors",
         effect: "vectors: velocity at the centre (green, where it will be in 0.25 s), the band's force at its corner (orange, length growing with log force)",
     },
     Control {
         keys: &[TRAIL],
-        actions: &[Action::ToggleTrail],
+        actions: &[Action::Toggle(Overlay::Trail)],
         label: "T",
         name: "trail",
         effect: "a fading trail of the pulled corner",
     },
     Control {
         keys: &[GHOSTS],
-        actions: &[Action::ToggleGhosts],
+        actions: &[Action::Toggle(Overlay::Ghosts)],
         label: "G",
         name: "ghosts",
         effect: "ghosts: every integrator and a reference (Taylor order 32 at 1e-13 px) beside the box under the same band, each outlined in its colour; their card lists their distance from the reference, energy residual and cost per step",
     },
     Control {
         keys: &[PLOT],
-        actions: &[Action::TogglePlot],
+        actions: &[Action::Toggle(Overlay::Plot)],
         label: "P",
         name: "plot",
         effect: "speed against error, live: each ghost a point, its cost per simulated second against its distance from the reference on the report's log-log axes (turns the ghosts on)",
@@ -494,14 +492,7 @@ fn apply_actions(
                 c.virtual_time
                     .set_relative_speed_f64(scaled(speed, factor, TIME_SCALE_RANGE));
             }
-            Action::ToggleVectors => c.overlays.vectors = !c.overlays.vectors,
-            Action::ToggleTrail => c.overlays.trail = !c.overlays.trail,
-            Action::ToggleGhosts => c.overlays.ghosts = !c.overlays.ghosts,
-            Action::TogglePlot => {
-                c.overlays.plot = !c.overlays.plot;
-                // Its points are the ghosts.
-                c.overlays.ghosts |= c.overlays.plot;
-            }
+            Action::Toggle(overlay) => c.overlays.toggle(overlay),
             Action::ToggleDock => c.dock_hidden.0 = !c.dock_hidden.0,
             // The view puts its camera back ([`HomeView`]).
             Action::HomeView => commands.trigger(HomeView),

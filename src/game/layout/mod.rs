@@ -32,7 +32,7 @@ use bevy::ui_widgets::{
 use bevy::window::PrimaryWindow;
 
 use crate::game::schedule::{AfterBevySystems, ScreenSystems};
-use crate::game::shared::{DockHidden, window_rect};
+use crate::game::shared::{DockHidden, KeepAcrossLearn, window_rect};
 use crate::game::theme::{self, colour, size, space};
 use cards::Offered;
 pub use cards::{Card, CardButton, CardRegistry, CardSpec, Cards, RegisterCard};
@@ -54,6 +54,7 @@ impl Plugin for LayoutPlugin {
         app.init_resource::<UiScale>()
             .init_resource::<CardRegistry>()
             .init_resource::<Cards>()
+            .keep_across_learn::<Cards>()
             .init_resource::<SceneViewport>()
             .add_systems(PreStartup, spawn_regions)
             .add_systems(

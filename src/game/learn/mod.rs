@@ -1,9 +1,9 @@
 //! Learn mode (`L`, the panel's `learn`): the tutorial's chapters ([`chapters::CHAPTERS`]),
 //! each on a scene of the core's table, its equations written with this frame's numbers
 //! ([`equations`]) in the dock's *Learn* card, and a task the game checks. The mode is the
-//! state [`Mode::Learn`]: entering saves the game (`save_the_game`, on `OnEnter`), leaving
-//! puts it back as it was (`restore_the_game`, on `OnExit`): the scene, the settings, the
-//! overlays, the clock and the box.
+//! state [`Mode::Learn`]: each plugin the chapters change keeps its own state across the mode
+//! (`shared::KeepAcrossLearn`: the scene, the settings, the overlays, the dock, the cards, the
+//! clock and the box), and learn mode shows its chapter on `OnEnter` and stops it on `OnExit`.
 
 pub mod chapters;
 pub mod draw;
@@ -30,13 +30,10 @@ use crate::game::replays::recording::say_it_goes_on;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
 pub use crate::game::shared::Learn;
-use crate::game::shared::{DockHidden, Mode, Overlays, SceneName, StatusMessage};
-use crate::game::simulation::{
-    Band, Bodies, EnergyBooks, ResetScene, RigidBodyQueryReadOnly, RigidBox, StepCount,
-    acting_band, rigid_box, set_fixed_step,
-};
+use crate::game::shared::{DockHidden, Mode, Overlay, Overlays, StatusMessage};
+use crate::game::simulation::{Band, Bodies, EnergyBooks, ResetScene, StepCount, acting_band};
 use crate::game::theme::{self, colour, size, space};
-use crate::physics::{AutoSettings, BodyState, Integrator, MassProperties, SceneParams};
+use crate::physics::{AutoSettings, Integrator, SceneParams};
 use crate::replay::link::Link;
 
 pub struct LearnPlugin;
@@ -56,8 +53,8 @@ impl Plugin for LearnPlugin {
         .add_observer(share_the_chapter)
         .add_observer(twin::restart_on_reset)
         .add_systems(Startup, spawn_card)
-        .add_systems(OnEnter(Mode::Learn), save_the_game)
-        .add_systems(OnExit(Mode::Learn), restore_the_game)
+        .add_systems(OnEnter(Mode::Learn), show_the_chapter)
+        .add_systems(OnExit(Mode::Learn), stop_the_chapter)
         .add_systems(FixedUpdate, keep_the_twin.in_set(PhysicsSystems::Observe))
         .add_systems(
             RunFixedMainLoop,
@@ -91,7 +88,6 @@ pub struct Learning {
     /// The point masses across the box (the moment of inertia's sum is over n × n).
     pub point_masses: u32,
     progress: Progress,
-    saved: Option<Box<Saved>>,
 }
 
 impl Default for Learning {
@@ -101,7 +97,6 @@ impl Default for Learning {
             done: [false; CHAPTERS.len()],
             point_masses: 4,
             progress: Progress::default(),
-            saved: None,
         }
     }
 }
@@ -119,21 +114,6 @@ impl Learning {
     pub fn verdict(&self) -> Option<&Verdict> {
         self.progress.verdict.as_ref()
     }
-}
-
-/// The game as it was when learn mode was entered.
-#[derive(Debug, Clone)]
-struct Saved {
-    params: SceneParams,
-    integrator: Integrator,
-    auto: AutoSettings,
-    scene: SceneName,
-    overlays: Overlays,
-    dock_hidden: DockHidden,
-    cards: Cards,
-    speed: f64,
-    paused: bool,
-    body: Option<(BodyState, MassProperties)>,
 }
 
 /// Places the twin while learn mode shows a chapter that has one, and drops it otherwise.
@@ -225,36 +205,18 @@ fn enter_at(world: &mut World, index: usize) {
 }
 
 /// Sets the mode and runs the state's transition now, `OnExit` and `OnEnter` included.
+///
+/// Bevy's own transition runs once a frame, before the fixed loop and so before the controls:
+/// left to it, a chapter would wait a frame, and its first steps would be the game's.
 fn switch_to(world: &mut World, mode: Mode) {
     world.resource_mut::<NextState<Mode>>().set(mode);
     world.run_schedule(StateTransition);
 }
 
-/// Returns the box's state and mass, if there is one.
-fn the_body(world: &mut World) -> Option<(BodyState, MassProperties)> {
-    let mut boxes = world.query_filtered::<RigidBodyQueryReadOnly, With<RigidBox>>();
-    boxes
-        .iter(world)
-        .next()
-        .map(|body| (body.state(), *body.mass))
-}
-
-/// Saves the game as learn mode is entered, then shows the chapter asked.
-fn save_the_game(world: &mut World) {
-    let time = world.resource::<Time<Virtual>>();
-    let saved = Saved {
-        params: *world.resource::<SceneParams>(),
-        integrator: *world.resource::<Integrator>(),
-        auto: *world.resource::<AutoSettings>(),
-        scene: world.resource::<SceneName>().clone(),
-        overlays: *world.resource::<Overlays>(),
-        dock_hidden: *world.resource::<DockHidden>(),
-        cards: world.resource::<Cards>().clone(),
-        speed: time.relative_speed_f64(),
-        paused: time.is_paused(),
-        body: the_body(world),
-    };
-    world.resource_mut::<Learning>().saved = Some(Box::new(saved));
+/// Shows the chapter asked as learn mode is entered.
+///
+/// Each plugin whose state the chapter changes has kept it already ([`INTO_LEARN`]).
+fn show_the_chapter(world: &mut World) {
     let index = world.resource::<Learning>().chapter;
     go_to(world, index);
 }
@@ -273,9 +235,11 @@ fn go_to(world: &mut World, index: usize) {
     load_scene(world, chapter.scene);
     let mut overlays = world.resource_mut::<Overlays>();
     // The arrows of force and velocity are the chapters' pictures.
-    overlays.vectors = true;
+    overlays.set(Overlay::Vectors, true);
     // The update loop's seed and explicit Euler step beside the box as ghosts.
-    overlays.ghosts |= chapter.ghosts;
+    if chapter.ghosts {
+        overlays.set(Overlay::Ghosts, true);
+    }
     // The chapter is in the dock: it shows.
     world.resource_mut::<DockHidden>().0 = false;
     world.resource_mut::<Cards>().set(Card::LEARN, true);
@@ -289,13 +253,12 @@ fn go_to(world: &mut World, index: usize) {
     learning.progress = Progress::default();
 }
 
-/// Puts the game back as learn mode was entered, as the mode is left.
-fn restore_the_game(world: &mut World) {
-    let saved = world.resource_mut::<Learning>().saved.take();
+/// Stops the chapter as learn mode is left: its script, its bands, its books and its frame.
+///
+/// Each plugin then puts back what it kept ([`OUT_OF_LEARN`]): the scene, the settings, the
+/// overlays, the dock, the clock and the box.
+fn stop_the_chapter(world: &mut World) {
     world.resource_mut::<CameraFrame>().stage = Stage::default();
-    let Some(saved) = saved else {
-        return;
-    };
     // The chapter's script stops, its bands go, the books start over (as a reset does).
     world.insert_resource(Playback::default());
     world.trigger(ResetScene);
@@ -306,30 +269,6 @@ fn restore_the_game(world: &mut World) {
         .collect();
     for band in bands {
         world.despawn(band);
-    }
-    world.insert_resource(saved.params);
-    world.insert_resource(saved.integrator);
-    world.insert_resource(saved.auto);
-    world.insert_resource(saved.scene);
-    world.insert_resource(saved.overlays);
-    world.insert_resource(saved.dock_hidden);
-    world.insert_resource(saved.cards);
-    set_fixed_step(&mut world.resource_mut::<Time<Fixed>>(), saved.params.dt());
-    let mut time = world.resource_mut::<Time<Virtual>>();
-    time.set_relative_speed_f64(saved.speed);
-    if saved.paused {
-        time.pause();
-    } else {
-        time.unpause();
-    }
-    if let Some((state, mass)) = saved.body {
-        let boxes: Vec<Entity> = world
-            .query_filtered::<Entity, With<RigidBox>>()
-            .iter(world)
-            .collect();
-        for body in boxes {
-            world.entity_mut(body).insert(rigid_box(mass, state));
-        }
     }
     // The recorder notes the box put back as it notes any other change, and goes on.
     say_it_goes_on(world);

@@ -20,7 +20,7 @@ use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slots};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::chart::{Canvas, ChartGizmos, text_box};
-use crate::game::shared::Overlays;
+use crate::game::shared::{Overlay, Overlays};
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{Integrator, SceneParams};
 use axes::{COST_DECADES, ERROR_DECADES, MARK, along, decade_label, label_every, place_labels};
@@ -39,7 +39,7 @@ impl Plugin for WorkPrecisionPlotPlugin {
             card: Card::PLOT,
             title: "Speed against error",
             place: 60,
-            offered: |overlays, _| overlays.plot,
+            offered: |overlays, _| overlays.on(Overlay::Plot),
         })
         .add_systems(Startup, spawn_canvas)
         .add_systems(Update, draw_plot.in_set(ScreenSystems::Plot));
@@ -211,7 +211,7 @@ fn draw_plot(
     let canvas = canvases
         .iter()
         .map(|(node, transform)| Canvas::of(node, transform, &ui_scale))
-        .find(|canvas| overlays.plot && !canvas.rect.is_empty());
+        .find(|canvas| overlays.on(Overlay::Plot) && !canvas.rect.is_empty());
     let capped = ghosts
         .ghosts
         .iter()

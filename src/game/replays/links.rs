@@ -11,7 +11,7 @@ use crate::game::replays::playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::GameSystems;
-use crate::game::shared::{DockHidden, Learn, Mode, Overlays, SceneName, StatusMessage};
+use crate::game::shared::{DockHidden, Learn, Mode, Overlay, Overlays, SceneName, StatusMessage};
 use crate::game::simulation::set_fixed_step;
 use crate::physics::{Integrator, Scene, SceneParams};
 use crate::replay::link::{Link, LinkOverlays};
@@ -128,13 +128,11 @@ fn open_link(world: &mut World, link: Link) -> Vec<String> {
     }
     let shown = link.overlays;
     let mut overlays = world.resource_mut::<Overlays>();
-    let set = |field: &mut bool, value: Option<bool>| *field = value.unwrap_or(*field);
-    set(&mut overlays.ghosts, shown.ghosts);
-    set(&mut overlays.plot, shown.plot);
-    set(&mut overlays.vectors, shown.vectors);
-    set(&mut overlays.trail, shown.trail);
-    // The plot's points are the ghosts.
-    overlays.ghosts |= overlays.plot;
+    for overlay in Overlay::ALL {
+        if let Some(on) = shown.get(overlay) {
+            overlays.set(overlay, on);
+        }
+    }
     if let Some(on) = shown.dock {
         world.resource_mut::<DockHidden>().0 = !on;
     }
@@ -159,10 +157,11 @@ pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
     let mut link = Link {
         time_scale: differs(speed, 1.0),
         overlays: LinkOverlays {
-            ghosts: on(overlays.ghosts && !overlays.plot),
-            plot: on(overlays.plot),
-            vectors: on(overlays.vectors),
-            trail: on(overlays.trail),
+            // The ghosts are left out where the plot turns them on.
+            shown: Overlay::ALL.map(|overlay| {
+                let implied = overlay == Overlay::Ghosts && overlays.on(Overlay::Plot);
+                on(overlays.on(overlay) && !implied)
+            }),
             dock: world.resource::<DockHidden>().0.then_some(false),
         },
         ..default()

@@ -12,7 +12,7 @@ use bevy_prototype_lyon::prelude::*;
 
 use crate::game::pointer::KeyCursor;
 use crate::game::schedule::ScreenSystems;
-use crate::game::shared::Overlays;
+use crate::game::shared::{Overlay, Overlays};
 use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox, interpolated_state};
 use crate::game::theme::{VELOCITY_ARROW_SECONDS, colour, force_arrow};
 use crate::physics::{MassProperties, SCENE_SIZE, SceneParams};
@@ -41,7 +41,7 @@ impl Plugin for DrawPlugin {
                     refill_resized_boxes,
                     draw_boxes,
                     draw_bands,
-                    draw_vectors.run_if(|overlays: Res<Overlays>| overlays.vectors),
+                    draw_vectors.run_if(|overlays: Res<Overlays>| overlays.on(Overlay::Vectors)),
                     (record_trail, draw_trail).chain(),
                     draw_key_cursor,
                 )
@@ -196,7 +196,7 @@ fn record_trail(
     bands: Query<&Band>,
     mut trail: ResMut<Trail>,
 ) {
-    if !overlays.trail {
+    if !overlays.on(Overlay::Trail) {
         trail.points.clear();
         return;
     }

@@ -25,7 +25,7 @@ use crate::game::learn::{
 #[cfg(target_arch = "wasm32")]
 use crate::game::schedule::AfterBevySystems;
 use crate::game::schedule::{GameSystems, ScreenSystems};
-use crate::game::shared::{DockHidden, Mode, Overlays, SceneName, hertz, times};
+use crate::game::shared::{DockHidden, Mode, Overlay, Overlays, SceneName, hertz, times};
 use crate::game::simulation::Clocks;
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{Integrator, Scene, SceneParams};
@@ -251,13 +251,9 @@ fn spawn_panel(mut commands: Commands, slots: Slots) {
         spawn_button(&mut commands, row, label, PanelButton::Send(action));
     }
     let row = spawn_row(&mut commands, body, "show");
-    for (label, action) in [
-        ("ghosts", Action::ToggleGhosts),
-        ("plot", Action::TogglePlot),
-        ("vectors", Action::ToggleVectors),
-        ("trail", Action::ToggleTrail),
-    ] {
-        spawn_button(&mut commands, row, label, PanelButton::Send(action));
+    for overlay in Overlay::ALL {
+        let button = PanelButton::Send(Action::Toggle(overlay));
+        spawn_button(&mut commands, row, overlay.name(), button);
     }
     // Under the buttons, every key: the card is the panel's, whole.
     commands.spawn((
@@ -295,14 +291,7 @@ impl PanelButton {
     /// Returns what this button's light means, if it has one.
     fn lit_is(&self) -> Option<Lit> {
         match self {
-            Self::Send(
-                Action::ToggleGhosts
-                | Action::TogglePlot
-                | Action::ToggleVectors
-                | Action::ToggleTrail
-                | Action::ToggleDock
-                | Action::Learn,
-            ) => Some(Lit::Switch),
+            Self::Send(Action::Toggle(_) | Action::ToggleDock | Action::Learn) => Some(Lit::Switch),
             Self::Send(Action::Integrator(_) | Action::Scene(_) | Action::Predict(_)) => {
                 Some(Lit::Choice)
             }
@@ -344,10 +333,7 @@ fn show_state(
             PanelButton::Send(Action::Scene(index)) => {
                 (Scene::NAMES.get(index) == Some(&scene.0.as_str()), None)
             }
-            PanelButton::Send(Action::ToggleGhosts) => (overlays.ghosts, None),
-            PanelButton::Send(Action::TogglePlot) => (overlays.plot, None),
-            PanelButton::Send(Action::ToggleVectors) => (overlays.vectors, None),
-            PanelButton::Send(Action::ToggleTrail) => (overlays.trail, None),
+            PanelButton::Send(Action::Toggle(overlay)) => (overlays.on(overlay), None),
             PanelButton::Send(Action::ToggleDock) => (!dock_hidden.0, None),
             PanelButton::Send(Action::Learn) => (*mode.get() == Mode::Learn, None),
             PanelButton::Send(Action::Predict(choice)) => {
