@@ -889,3 +889,276 @@ fn the_visibility_check_finds_an_item_only_a_test_names() {
         ["src/game/layout.rs: shown"]
     );
 }
+
+// ---------------------------------------------------------------------------------------------
+// docs/architecture.md read against the code: its room table, its diagram of the game's levels,
+// its table of who reads whom (generated), and what it says the core takes from Bevy.
+
+/// docs/architecture.md as it is.
+fn architecture_page() -> String {
+    fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/architecture.md"))
+        .expect("docs/architecture.md")
+}
+
+/// Returns the rooms a page's table names: each row's first cell, a path in backticks.
+fn table_rooms(page: &str, heading: &str) -> Vec<String> {
+    let section = page.split(heading).nth(1).expect("the heading");
+    let section = section.split("\n## ").next().unwrap_or(section);
+    section
+        .lines()
+        .filter(|line| line.starts_with("| `"))
+        .filter_map(|line| line.split('`').nth(1).map(str::to_owned))
+        .collect()
+}
+
+/// Returns every room of the source tree: `src/`'s files and folders, and `src/game/`'s.
+fn rooms_on_disk() -> BTreeSet<String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut rooms = BTreeSet::new();
+    for folder in ["src", "src/game"] {
+        for entry in fs::read_dir(root.join(folder)).expect("a source folder") {
+            let path = entry.expect("an entry").path();
+            let name = path.file_name().unwrap().to_string_lossy().into_owned();
+            if path.is_dir() {
+                rooms.insert(format!("{folder}/{name}/"));
+            } else if name.ends_with(".rs") && name != "mod.rs" {
+                rooms.insert(format!("{folder}/{name}"));
+            }
+        }
+    }
+    rooms
+}
+
+#[test]
+fn the_architecture_page_lists_every_room_and_only_rooms_there_are() {
+    let listed = table_rooms(&architecture_page(), "## The rooms");
+    let on_disk = rooms_on_disk();
+    assert!(on_disk.contains("src/game/ghosts/") && on_disk.contains("src/cli.rs"));
+    let missing: Vec<_> = on_disk
+        .iter()
+        .filter(|room| !listed.contains(room))
+        .collect();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let gone: Vec<_> = listed
+        .iter()
+        .filter(|room| !root.join(room).exists())
+        .collect();
+    assert!(
+        missing.is_empty() && gone.is_empty(),
+        "docs/architecture.md's room table: rooms it misses {missing:?}, rooms that are gone {gone:?}"
+    );
+}
+
+/// Returns the game's levels as the page draws them, from the bottom up: each level's rooms
+/// (`mod.rs` is the wiring, "").
+fn drawn_levels(page: &str) -> Vec<Vec<String>> {
+    let after = page
+        .split("Inside the game the rooms are layered")
+        .nth(1)
+        .expect("the game's diagram");
+    let block = after
+        .split("```text\n")
+        .nth(1)
+        .and_then(|b| b.split("```").next())
+        .expect("a text block");
+    let mut levels: Vec<Vec<String>> = Vec::new();
+    let mut continued = false;
+    for line in block.lines() {
+        // The rooms, then two spaces or more, then what they are.
+        let rooms = line.trim_start().split("  ").next().unwrap_or("").trim();
+        let names: Vec<String> = rooms
+            .split(',')
+            .map(|room| room.trim().trim_end_matches('/').trim_end_matches(".rs"))
+            .filter(|room| !room.is_empty())
+            .map(|room| {
+                if room == "mod" {
+                    String::new()
+                } else {
+                    room.to_owned()
+                }
+            })
+            .collect();
+        if continued {
+            levels.last_mut().unwrap().extend(names);
+        } else {
+            levels.push(names);
+        }
+        continued = rooms.ends_with(',');
+    }
+    levels.reverse();
+    levels
+}
+
+#[test]
+fn the_architecture_page_draws_the_game_levels_the_check_holds() {
+    let drawn = drawn_levels(&architecture_page());
+    let graph = graph();
+    let leaves: BTreeSet<String> = graph
+        .keys()
+        .filter(|module| is_leaf(module))
+        .filter_map(|module| game_room(module).map(str::to_owned))
+        .collect();
+    assert!(leaves.contains("readouts"), "{leaves:?}");
+    let mut held: Vec<BTreeSet<String>> = GAME_LAYERS
+        .iter()
+        .map(|rooms| rooms.iter().map(|room| (*room).to_owned()).collect())
+        .collect();
+    held.insert(LEAF, leaves);
+    let drawn: Vec<BTreeSet<String>> = drawn.into_iter().map(BTreeSet::from_iter).collect();
+    assert_eq!(
+        drawn, held,
+        "docs/architecture.md's diagram of the game's levels (bottom up) against GAME_LAYERS \
+         and the leaves the sources have"
+    );
+}
+
+/// Returns the Markdown table of which rooms read each room: a room's modules imported by
+/// another room's, the wiring (`game/mod.rs`, `play.rs`) left out. Rooms bottom up.
+fn who_reads_whom(graph: &BTreeMap<String, BTreeSet<String>>) -> String {
+    let room_of = |module: &str| -> Option<String> {
+        if let Some(room) = game_room(module) {
+            return (!room.is_empty() && room != "play").then(|| format!("game/{room}"));
+        }
+        (!module.is_empty()).then(|| module.split("::").next().unwrap().to_owned())
+    };
+    let height = |room: &str| match room.strip_prefix("game/") {
+        Some(_) => (
+            LAYERS.len(),
+            game_layer(&room.replace('/', "::")).unwrap_or(0),
+        ),
+        None => (layer(room).unwrap_or(0), 0),
+    };
+    let mut readers: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for (module, imported) in graph {
+        let Some(reader) = room_of(module) else {
+            continue;
+        };
+        readers.entry(reader.clone()).or_default();
+        for target in imported {
+            if let Some(room) = room_of(target)
+                && room != reader
+            {
+                readers.entry(room).or_default().insert(reader.clone());
+            }
+        }
+    }
+    let mut rooms: Vec<&String> = readers.keys().collect();
+    rooms.sort_by_key(|room| (height(room), (*room).clone()));
+    let mut table = "| room | read by |\n|---|---|\n".to_owned();
+    for room in rooms {
+        let by: Vec<String> = readers[room].iter().map(|r| format!("`{r}`")).collect();
+        let by = if by.is_empty() {
+            "nothing but the wiring".to_owned()
+        } else {
+            by.join(", ")
+        };
+        table.push_str(&format!("| `{room}` | {by} |\n"));
+    }
+    table
+}
+
+const READERS_OPEN: &str = "<!-- rooms: who reads whom -->\n";
+const READERS_CLOSE: &str = "<!-- /rooms -->";
+
+#[test]
+fn the_architecture_page_says_who_reads_whom_as_the_code_does() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/architecture.md");
+    let page = architecture_page();
+    let start = page.find(READERS_OPEN).expect("the who-reads-whom block") + READERS_OPEN.len();
+    let end = start + page[start..].find(READERS_CLOSE).expect("its end");
+    let table = who_reads_whom(&graph());
+    assert!(table.contains("| `game/web` | ") && table.contains("| `physics` | "));
+    if page[start..end] == table {
+        return;
+    }
+    if std::env::var_os("RBB_WRITE_ROOMS").is_some() {
+        let fresh = format!("{}{table}{}", &page[..start], &page[end..]);
+        let beside = path.with_extension("md.new");
+        fs::write(&beside, fresh).expect("write beside the page");
+        fs::rename(&beside, &path).expect("rename into place");
+        return;
+    }
+    panic!(
+        "docs/architecture.md's table of who reads whom is not the code's; rewrite it with \
+         RBB_WRITE_ROOMS=1 cargo test --test architecture, then read what changed:\n{table}"
+    );
+}
+
+#[test]
+fn the_who_reads_whom_table_names_a_reader_and_leaves_out_the_wiring() {
+    let mut graph = BTreeMap::new();
+    for (module, imports) in [
+        ("game::hud", vec!["game::web", "game::shared"]),
+        ("game::replays::recording", vec!["game::web", "replay"]),
+        ("game", vec!["game::hud", "game::web"]),
+        ("game::web", vec![]),
+        ("game::shared", vec![]),
+        ("replay", vec!["physics"]),
+        ("physics", vec![]),
+    ] {
+        graph.insert(
+            module.to_owned(),
+            imports
+                .into_iter()
+                .map(str::to_owned)
+                .collect::<BTreeSet<_>>(),
+        );
+    }
+    let table = who_reads_whom(&graph);
+    assert!(
+        table.contains("| `game/web` | `game/hud`, `game/replays` |"),
+        "{table}"
+    );
+    assert!(
+        table.contains("| `game/hud` | nothing but the wiring |"),
+        "{table}"
+    );
+    assert!(table.contains("| `physics` | `replay` |"), "{table}");
+    assert!(
+        table.find("`physics`").unwrap() < table.find("`game/shared`").unwrap(),
+        "bottom up: {table}"
+    );
+}
+
+/// Returns each use of Bevy in the core other than its maths and the two derives the game
+/// reads the core's types through (`Component`, `Resource`), as "module: path".
+fn bevy_in_the_core(modules: &BTreeMap<String, String>) -> Vec<String> {
+    let allowed = [
+        "bevy::math",
+        "bevy::prelude::Component",
+        "bevy::prelude::Resource",
+    ];
+    let mut found = Vec::new();
+    for (module, code) in modules.iter().filter(|(m, _)| m.starts_with("physics")) {
+        for (at, _) in code.match_indices("bevy::") {
+            let path: String = code[at..]
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
+                .collect();
+            if !allowed.iter().any(|a| path.starts_with(a)) {
+                found.push(format!("{module}: {path}"));
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn the_core_takes_from_bevy_only_its_maths_and_two_derives() {
+    let found = bevy_in_the_core(&modules());
+    assert!(
+        found.is_empty(),
+        "docs/architecture.md says the core is plain Rust with no App, using Bevy's maths and \
+         deriving Component and Resource only:\n{}",
+        found.join("\n")
+    );
+    let mut known = BTreeMap::new();
+    known.insert(
+        "physics::body".to_owned(),
+        "use bevy::math::DVec2;\nuse bevy::prelude::App;".to_owned(),
+    );
+    assert_eq!(
+        bevy_in_the_core(&known),
+        ["physics::body: bevy::prelude::App"]
+    );
+}
