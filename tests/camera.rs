@@ -432,14 +432,14 @@ fn the_zoom_keys_zoom_about_the_centre_and_f_goes_home() {
         a.distance(b)
     };
     let before = side(&mut game);
-    game.tap_key(rubber_band_box::game::camera::ZOOM_IN);
+    game.tap_key(keys_of("zoom")[0]);
     game.update(30);
     let zoomed = frame(&mut game);
     assert!(zoomed.zoom < 1.0, "{zoomed:?}");
     let larger = side(&mut game);
     assert!(larger > before * 1.2, "{before} -> {larger} px");
-    game.tap_key(rubber_band_box::game::camera::ZOOM_OUT);
-    game.tap_key(rubber_band_box::game::camera::ZOOM_OUT);
+    game.tap_key(keys_of("zoom")[1]);
+    game.tap_key(keys_of("zoom")[1]);
     game.update(30);
     assert!(frame(&mut game).zoom > 1.0);
     game.tap_key(KeyCode::KeyF);

@@ -3,10 +3,7 @@
 mod common;
 
 use common::*;
-use rubber_band_box::game::input::controls::{
-    CONTROLS, FASTER, FEWER_STEPS, MORE_STEPS, OPEN, PAUSE, RESET, SINGLE_STEP, SLOWER, SOFTER,
-    STIFFER, TRAIL, VECTORS, help_line, key_hint,
-};
+use rubber_band_box::game::input::controls::{CONTROLS, help_line, key_hint};
 use rubber_band_box::game::shared::{Overlay, Overlays, StatusMessage};
 
 #[test]
@@ -16,12 +13,12 @@ fn pause_stops_the_fixed_steps_and_resume_continues() {
     assert_eq!(game.steps(), 5);
     // Bevy advances its clocks before it reads input, so the frame in which the key arrives
     // still runs its step; from the next frame on, none.
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(1);
     assert_eq!(game.steps(), 6);
     game.update(10);
     assert_eq!(game.steps(), 6, "paused: no fixed step");
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(1);
     game.update(3);
     assert_eq!(game.steps(), 9);
@@ -32,10 +29,10 @@ fn a_single_step_while_paused_advances_exactly_one() {
     let mut game = Game::stepping();
     game.press_at(DVec2::new(200.0, 100.0));
     game.update(3);
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(2);
     let before = (game.steps(), game.state());
-    game.tap_key(SINGLE_STEP);
+    game.tap_key(key(Action::Step));
     game.update(1);
     assert_eq!(game.steps(), before.0 + 1);
     assert_ne!(game.state(), before.1);
@@ -43,10 +40,10 @@ fn a_single_step_while_paused_advances_exactly_one() {
     assert_eq!(game.steps(), before.0 + 1, "still paused");
 
     // Not paused, the key does nothing extra.
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(1);
     let running = game.steps();
-    game.tap_key(SINGLE_STEP);
+    game.tap_key(key(Action::Step));
     game.update(1);
     assert_eq!(game.steps(), running + 1);
 }
@@ -58,7 +55,7 @@ fn reset_restores_the_initial_state_and_removes_the_band() {
     game.press_at(DVec2::new(200.0, 100.0));
     game.update(30);
     assert_ne!(game.state(), initial);
-    game.tap_key(RESET);
+    game.tap_key(key(Action::Reset));
     game.update(1);
     assert!(game.bands().is_empty());
     assert_eq!(
@@ -72,16 +69,16 @@ fn reset_restores_the_initial_state_and_removes_the_band() {
 #[test]
 fn k_moves_by_factors_of_ten_within_its_range_and_the_next_step_uses_it() {
     let mut game = Game::stepping();
-    game.tap_key(STIFFER);
+    game.tap_key(key(Action::Stiffer));
     game.update(1);
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 200.0);
     for _ in 0..2 {
-        game.tap_key(SOFTER);
+        game.tap_key(key(Action::Softer));
         game.update(1);
     }
     assert!((game.world().resource::<SceneParams>().stiffness - 2.0).abs() < 1e-12);
     for _ in 0..20 {
-        game.tap_key(STIFFER);
+        game.tap_key(key(Action::Stiffer));
         game.update(1);
     }
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 1e12);
@@ -91,7 +88,7 @@ fn k_moves_by_factors_of_ten_within_its_range_and_the_next_step_uses_it() {
     game.press_at(DVec2::new(200.0, 100.0));
     game.update(1);
     let anchor = game.the_band().ends.anchor;
-    game.tap_key(STIFFER);
+    game.tap_key(key(Action::Stiffer));
     game.update(1);
     let mut stepper = Stepper::new(SceneParams::tutorial()).unwrap();
     stepper.grab(anchor);
@@ -105,14 +102,14 @@ fn k_moves_by_factors_of_ten_within_its_range_and_the_next_step_uses_it() {
 fn the_time_scale_changes_the_fixed_steps_per_second_of_real_time() {
     let mut game = Game::stepping();
     // A change of scale applies from the frame after the key (the clocks advance first).
-    game.tap_key(FASTER);
+    game.tap_key(key(Action::Faster));
     game.update(2);
     let start = game.steps();
     game.update(10);
     assert_eq!(game.steps() - start, 20, "x2: two steps per 10 ms frame");
 
     for _ in 0..2 {
-        game.tap_key(SLOWER);
+        game.tap_key(key(Action::Slower));
         game.update(1);
     }
     game.update(1);
@@ -124,7 +121,7 @@ fn the_time_scale_changes_the_fixed_steps_per_second_of_real_time() {
 #[test]
 fn the_step_rate_changes_the_fixed_step() {
     let mut game = Game::stepping();
-    game.tap_key(MORE_STEPS);
+    game.tap_key(key(Action::MoreSteps));
     game.update(1);
     assert_eq!(game.world().resource::<SceneParams>().step_rate_hz, 200.0);
     let step = game.world().resource::<Time<Fixed>>().timestep();
@@ -139,7 +136,7 @@ fn page_down_halves_the_step_rate_down_to_its_lower_end() {
     let mut game = Game::stepping();
     let rates: Vec<f64> = (0..6)
         .map(|_| {
-            game.tap_key(FEWER_STEPS);
+            game.tap_key(key(Action::FewerSteps));
             game.update(1);
             game.world().resource::<SceneParams>().step_rate_hz
         })
@@ -153,12 +150,12 @@ fn page_down_halves_the_step_rate_down_to_its_lower_end() {
 fn vectors_and_trail_toggle() {
     let mut game = Game::stepping();
     assert_eq!(*game.world().resource::<Overlays>(), Overlays::default());
-    game.tap_key(VECTORS);
-    game.tap_key(TRAIL);
+    game.tap_key(key(Action::Toggle(Overlay::Vectors)));
+    game.tap_key(key(Action::Toggle(Overlay::Trail)));
     game.update(1);
     let overlays = *game.world().resource::<Overlays>();
     assert!(overlays.on(Overlay::Vectors) && overlays.on(Overlay::Trail));
-    game.tap_key(VECTORS);
+    game.tap_key(key(Action::Toggle(Overlay::Vectors)));
     game.update(1);
     assert!(!game.world().resource::<Overlays>().on(Overlay::Vectors));
 }
@@ -268,11 +265,11 @@ fn readme_the_help_line_and_the_title_name_every_control_as_the_list_does() {
 fn k_and_the_time_scale_stop_at_their_lower_ends_and_climb_back() {
     let mut game = Game::stepping();
     for _ in 0..8 {
-        game.tap_key(SOFTER);
+        game.tap_key(key(Action::Softer));
         game.update(1);
     }
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 1e-2);
-    game.tap_key(STIFFER);
+    game.tap_key(key(Action::Stiffer));
     game.update(1);
     let k = game.world().resource::<SceneParams>().stiffness;
     assert!((k - 0.1).abs() < 1e-15, "{k}");
@@ -283,12 +280,12 @@ fn k_and_the_time_scale_stop_at_their_lower_ends_and_climb_back() {
             .relative_speed_f64()
     };
     for _ in 0..6 {
-        game.tap_key(SLOWER);
+        game.tap_key(key(Action::Slower));
         game.update(1);
     }
     assert_eq!(speed(&mut game), 1.0 / 16.0);
     for _ in 0..10 {
-        game.tap_key(FASTER);
+        game.tap_key(key(Action::Faster));
         game.update(1);
     }
     assert_eq!(speed(&mut game), 16.0);
@@ -301,7 +298,7 @@ fn k_and_the_time_scale_stop_at_their_lower_ends_and_climb_back() {
 fn the_open_key_says_how_to_open_a_replay() {
     let mut game = Game::stepping();
     assert_eq!(game.world().resource::<StatusMessage>().0, None);
-    game.tap_key(OPEN);
+    game.tap_key(key(Action::Open));
     game.update(1);
     assert_eq!(
         game.world().resource::<StatusMessage>().0.as_deref(),

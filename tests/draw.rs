@@ -13,7 +13,7 @@ use bevy::gizmos::config::DefaultGizmoConfigGroup;
 use bevy::gizmos::{GizmoAsset, GizmoHandles};
 use common::*;
 use rubber_band_box::game::ghosts::GhostKind;
-use rubber_band_box::game::screen::draw::{BOX_OUTLINE, PIN_FILL};
+use rubber_band_box::game::theme::colour::{BOX_OUTLINE, PIN_FILL};
 
 /// The headless game with the screen's plugins ([`Game::with_screen`]).
 fn screen_game() -> Game {

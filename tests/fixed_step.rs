@@ -262,7 +262,7 @@ fn the_integrator_key_switches_on_the_next_step_and_names_it_in_the_title() {
     stepper.integrator = expected_next;
     stepper.step(0.01);
 
-    game.key(CYCLE_INTEGRATOR, ButtonState::Pressed);
+    game.key(key(Action::NextIntegrator), ButtonState::Pressed);
     game.update(1);
     assert_eq!(*game.world().resource::<Integrator>(), expected_next);
     let (linear, angular) = game.state();

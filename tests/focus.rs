@@ -10,8 +10,8 @@ use bevy::input_focus::{InputFocus, InputFocusVisible};
 use bevy::prelude::*;
 use bevy::ui_widgets::{Button, Slider};
 
-use common::Game;
-use rubber_band_box::game::input::controls::{Action, PAUSE, Parameter};
+use common::{Game, key};
+use rubber_band_box::game::input::controls::{Action, Parameter};
 use rubber_band_box::game::input::panel::PanelButton;
 use rubber_band_box::physics::{Integrator, SceneParams};
 
@@ -115,7 +115,7 @@ fn space_presses_a_focused_button_and_does_not_pause() {
     game.update(3);
     let rk4 = game.button(PanelButton::Send(Action::Integrator(Integrator::Rk4)));
     focus_on(&mut game, rk4);
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(2);
     assert_eq!(*game.world().resource::<Integrator>(), Integrator::Rk4);
     assert!(!paused(&mut game), "Space went to the button, not to pause");
@@ -123,7 +123,7 @@ fn space_presses_a_focused_button_and_does_not_pause() {
     game.tap_key(KeyCode::Escape);
     game.update(1);
     assert_eq!(focused(&mut game), None);
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(2);
     assert!(paused(&mut game));
 }
@@ -158,7 +158,7 @@ fn a_click_keeps_no_focus_and_space_still_pauses() {
     game.update(2);
     assert_eq!(*game.world().resource::<Integrator>(), Integrator::Rk4);
     assert_eq!(focused(&mut game), None);
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(2);
     assert!(paused(&mut game), "Space after a click pauses");
 }

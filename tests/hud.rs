@@ -1,11 +1,11 @@
-//! The HUD, headless: its lines follow the simulation and the controls, and its energy lines
+//! The key(Action::ToggleDock), headless: its lines follow the simulation and the controls, and its energy lines
 //! and history agree with the physics.
 
 mod common;
 
 use common::*;
 use rubber_band_box::game::ghosts::table::GhostCell;
-use rubber_band_box::game::input::controls::{HUD, PAUSE, STIFFER};
+
 use rubber_band_box::game::stability::card::{StabilityLine, line as stability_line};
 use rubber_band_box::physics::Energies;
 
@@ -17,7 +17,7 @@ fn the_hud_follows_the_game() {
         game.line("Readouts Integrator")
             .starts_with("integrator auto")
     );
-    game.tap_key(CYCLE_INTEGRATOR);
+    game.tap_key(key(Action::NextIntegrator));
     game.update(1);
     assert!(
         game.line("Readouts Integrator")
@@ -44,7 +44,7 @@ fn the_hud_follows_the_game() {
     assert!((value("Energy BandPotential", &mut game) - stretched).abs() < 0.01);
     assert!((value("Energy Total", &mut game) - (kinetic + stretched)).abs() < 0.01);
 
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(2);
     assert!(game.line("Readouts Clock").contains("PAUSED"));
 }
@@ -60,10 +60,10 @@ fn h_hides_and_shows_the_dock() {
     };
     game.update(1);
     assert_eq!(display(&mut game), Display::Flex);
-    game.tap_key(HUD);
+    game.tap_key(key(Action::ToggleDock));
     game.update(1);
     assert_eq!(display(&mut game), Display::None);
-    game.tap_key(HUD);
+    game.tap_key(key(Action::ToggleDock));
     game.update(1);
     assert_eq!(display(&mut game), Display::Flex);
 }
@@ -123,7 +123,7 @@ fn reset_restarts_the_graph_and_the_clock() {
         "{}",
         game.line("Readouts Clock")
     );
-    game.tap_key(rubber_band_box::game::input::controls::RESET);
+    game.tap_key(key(Action::Reset));
     game.update(1);
     let history = game.world().resource::<EnergyHistory>().clone();
     assert!(history.samples.len() <= 1, "{:?}", history.samples);
@@ -136,7 +136,7 @@ fn the_energy_panel_is_live_while_paused() {
     let mut game = Game::stepping();
     game.press_at(DVec2::new(200.0, 100.0));
     game.update(5);
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(2);
     let before = game.line("Energy BandPotential");
     // Pull the anchor further while paused: no step runs, the band stretches.
@@ -183,7 +183,7 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
         "stability: symplectic at ω·dt 0.04 of 1.99: holds k up to 5.0e4"
     );
     for _ in 0..4 {
-        game.tap_key(STIFFER);
+        game.tap_key(key(Action::Stiffer));
         game.update(1);
     }
     assert_eq!(game.world().resource::<SceneParams>().stiffness, 2e5);
@@ -208,7 +208,7 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
     assert!(row("implicit").ends_with("any k"), "{ghosts}");
 }
 
-/// One format for the HUD and the panel: numbers as a person reads them.
+/// One format for the key(Action::ToggleDock) and the panel: numbers as a person reads them.
 #[test]
 fn numbers_are_shown_as_a_person_reads_them() {
     use rubber_band_box::game::shared::readable;
@@ -235,7 +235,7 @@ fn numbers_are_shown_as_a_person_reads_them() {
     );
 }
 
-/// The HUD and the cards' texts only show: none of their nodes takes a press, so a long line lying over the panel
+/// The key(Action::ToggleDock) and the cards' texts only show: none of their nodes takes a press, so a long line lying over the panel
 /// on a small screen never keeps a click from the panel's button under it.
 #[test]
 fn the_hud_takes_no_press() {
@@ -243,7 +243,7 @@ fn the_hud_takes_no_press() {
     let mut game = Game::stepping();
     game.update(1);
     let world = game.world();
-    // The HUD's lines and the Readouts and Energy cards' are named by their place.
+    // The key(Action::ToggleDock)'s lines and the Readouts and Energy cards' are named by their place.
     let texts = ["HUD ", "Readouts ", "Energy "];
     let mut nodes: Vec<Option<Pickable>> = world
         .query_filtered::<(&Name, Option<&Pickable>), With<Text>>()
@@ -254,7 +254,7 @@ fn the_hud_takes_no_press() {
     assert_eq!(
         nodes.len(),
         14,
-        "the HUD's 2 lines, the Readouts' 5, the Energy's 7"
+        "the key(Action::ToggleDock)'s 2 lines, the Readouts' 5, the Energy's 7"
     );
     nodes.extend(
         world
@@ -264,7 +264,7 @@ fn the_hud_takes_no_press() {
     );
     assert!(nodes.len() > 14, "{}", nodes.len());
     for pickable in nodes {
-        let pickable = pickable.expect("every HUD node says how it is picked");
+        let pickable = pickable.expect("every key(Action::ToggleDock) node says how it is picked");
         assert!(!pickable.should_block_lower && !pickable.is_hoverable);
     }
 }
@@ -406,7 +406,7 @@ fn the_history_keeps_its_edges() {
     );
 }
 
-/// The window title, the HUD's essentials while it is hidden: `auto`'s substeps and
+/// The window title, the key(Action::ToggleDock)'s essentials while it is hidden: `auto`'s substeps and
 /// fall-backs, which no other integrator has, then k, the rate, the time scale.
 #[test]
 fn the_title_says_autos_substeps_and_no_one_elses() {
@@ -447,7 +447,7 @@ fn the_status_line_says_when_the_game_falls_behind_the_wall_clock() {
     game.update(500);
     let status = game.line("HUD Status");
     assert!(status.contains("behind: runs ×0.40"), "{status}");
-    // The window title says it too, for a hidden HUD.
+    // The window title says it too, for a hidden key(Action::ToggleDock).
     let window = game.window;
     let title = game.world().get::<Window>(window).unwrap().title.clone();
     assert!(title.contains("time ×1, behind: runs ×0.40"), "{title}");
@@ -460,15 +460,20 @@ fn the_status_line_says_when_the_game_falls_behind_the_wall_clock() {
     assert!(!status.contains("behind"), "{status}");
 }
 
-/// The step rate and the time scale read the same wherever they are written: the HUD's clock,
+/// The step rate and the time scale read the same wherever they are written: the key(Action::ToggleDock)'s clock,
 /// the status line, the window title and the panel's values (one formatter, `shared::hertz`
 /// and `shared::times`; the panel once wrote 12.5 Hz as "12 Hz" and the clock "time x0.25").
 #[test]
 fn the_rate_and_the_time_scale_read_the_same_everywhere() {
-    use rubber_band_box::game::input::controls::{FEWER_STEPS, SLOWER};
     let mut game = Game::stepping();
     game.update(1);
-    for key in [FEWER_STEPS, FEWER_STEPS, FEWER_STEPS, SLOWER, SLOWER] {
+    for key in [
+        key(Action::FewerSteps),
+        key(Action::FewerSteps),
+        key(Action::FewerSteps),
+        key(Action::Slower),
+        key(Action::Slower),
+    ] {
         game.tap_key(key);
         game.update(1);
     }

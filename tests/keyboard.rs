@@ -7,8 +7,7 @@ mod common;
 use bevy::input::ButtonState;
 use bevy::prelude::*;
 
-use common::{Game, assert_replays, bits};
-use rubber_band_box::game::pointer::BAND_KEY;
+use common::{Game, assert_replays, bits, keys_of};
 use rubber_band_box::game::pointer::{Grip, KeyCursor, PointerSource};
 use rubber_band_box::game::simulation::body_state;
 
@@ -41,7 +40,7 @@ fn pull_by_keyboard(game: &mut Game) -> (Vec<(Vec2, bool)>, Vec<[u64; 6]>) {
         }
         for frame in 0..frames {
             if tap && frame == 0 {
-                game.tap_key(BAND_KEY);
+                game.tap_key(keys_of("band")[0]);
             }
             game.update(1);
             let cursor = game
@@ -100,7 +99,7 @@ fn the_band_key_grabs_and_lets_go_and_the_cursor_stays_on_the_scene() {
     let mut game = Game::stepping();
     game.update(2);
     assert_eq!(game.world().resource::<KeyCursor>().screen, None);
-    game.tap_key(BAND_KEY);
+    game.tap_key(keys_of("band")[0]);
     game.update(1);
     assert_eq!(
         game.world().resource::<Grip>().0,
@@ -122,12 +121,12 @@ fn the_band_key_grabs_and_lets_go_and_the_cursor_stays_on_the_scene() {
         "{anchor}"
     );
     game.key(KeyCode::ArrowLeft, ButtonState::Released);
-    game.tap_key(BAND_KEY);
+    game.tap_key(keys_of("band")[0]);
     game.update(1);
     assert!(game.bands().is_empty());
     assert_eq!(game.world().resource::<Grip>().0, None);
     // The mouse pressing hides the keyboard's cursor and takes the band.
-    game.tap_key(BAND_KEY);
+    game.tap_key(keys_of("band")[0]);
     game.update(1);
     game.cursor(Some(Vec2::new(600.0, 300.0)));
     game.mouse(ButtonState::Pressed);

@@ -5,9 +5,6 @@ mod common;
 
 use common::*;
 use rubber_band_box::game::ghosts::{GhostKind, Ghosts};
-use rubber_band_box::game::input::controls::{
-    CYCLE_INTEGRATOR, GHOSTS, RESET, SCENE_KEYS, STIFFER,
-};
 use rubber_band_box::game::replays::playback::{Playback, PlaybackEnd};
 use rubber_band_box::game::shared::SceneName;
 use rubber_band_box::physics::{BodyState, Integrator, Scene};
@@ -20,14 +17,14 @@ fn lab() -> Game {
 fn play_a_hand(game: &mut Game, ghosts_on_at: Option<usize>) {
     for frame in 0..240 {
         if Some(frame) == ghosts_on_at {
-            game.tap_key(GHOSTS);
+            game.tap_key(key(Action::Toggle(Overlay::Ghosts)));
         }
         match frame {
             10 => game.press_at(DVec2::new(180.0, 90.0)),
-            60 => game.tap_key(STIFFER),
-            100 => game.tap_key(CYCLE_INTEGRATOR),
+            60 => game.tap_key(key(Action::Stiffer)),
+            100 => game.tap_key(key(Action::NextIntegrator)),
             150 => game.mouse(ButtonState::Released),
-            200 => game.tap_key(RESET),
+            200 => game.tap_key(key(Action::Reset)),
             210 => game.press_at(DVec2::new(-150.0, 40.0)),
             _ => {}
         }
@@ -63,7 +60,7 @@ fn ghosts_never_change_what_the_live_box_does() {
 #[test]
 fn every_ghost_steps_under_the_live_band() {
     let mut game = lab();
-    game.tap_key(GHOSTS);
+    game.tap_key(key(Action::Toggle(Overlay::Ghosts)));
     game.update(1);
     game.press_at(DVec2::new(180.0, 90.0));
     game.update(30);
@@ -118,10 +115,10 @@ fn every_ghost_steps_under_the_live_band() {
 fn a_diverged_ghost_freezes_with_its_step() {
     let mut game = lab();
     for _ in 0..4 {
-        game.tap_key(STIFFER);
+        game.tap_key(key(Action::Stiffer));
         game.update(1);
     }
-    game.tap_key(GHOSTS);
+    game.tap_key(key(Action::Toggle(Overlay::Ghosts)));
     game.update(1);
     game.press_at(DVec2::new(180.0, 90.0));
     game.update(60);
@@ -148,14 +145,14 @@ fn a_diverged_ghost_freezes_with_its_step() {
 #[test]
 fn ghosts_restart_with_a_reset_and_a_scene_and_go_when_switched_off() {
     let mut game = lab();
-    game.tap_key(GHOSTS);
+    game.tap_key(key(Action::Toggle(Overlay::Ghosts)));
     game.press_at(DVec2::new(180.0, 90.0));
     game.update(40);
-    game.tap_key(RESET);
+    game.tap_key(key(Action::Reset));
     game.update(1);
     let steps = game.world().resource::<Ghosts>().ghosts[0].steps;
     assert!(steps <= 2, "{steps}");
-    game.tap_key(SCENE_KEYS[2]);
+    game.tap_key(key(Action::Scene(2)));
     game.update(1);
     let (linear, angular) = game.state();
     let ghosts = game.world().resource::<Ghosts>();
@@ -168,7 +165,7 @@ fn ghosts_restart_with_a_reset_and_a_scene_and_go_when_switched_off() {
             .pose_error(&BodyState { linear, angular }, &reference.stepper.mass)
             < 1e-6
     );
-    game.tap_key(GHOSTS);
+    game.tap_key(key(Action::Toggle(Overlay::Ghosts)));
     game.update(1);
     assert!(game.world().resource::<Ghosts>().ghosts.is_empty());
     assert_eq!(game.ghost_table(), "");
@@ -179,7 +176,7 @@ fn ghosts_restart_with_a_reset_and_a_scene_and_go_when_switched_off() {
 /// which the game steps to the core's bits.
 #[test]
 fn number_keys_load_the_core_scenes_and_play_their_scripts() {
-    for (key, name) in SCENE_KEYS.iter().zip(Scene::NAMES) {
+    for (key, name) in scene_keys().iter().zip(Scene::NAMES) {
         let scene = Scene::named(name).unwrap();
         let mut game = lab();
         game.tap_key(*key);
@@ -214,14 +211,14 @@ fn number_keys_load_the_core_scenes_and_play_their_scripts() {
 #[test]
 fn a_scene_script_releases_on_time_and_a_press_takes_over() {
     let mut game = lab();
-    game.tap_key(SCENE_KEYS[0]);
+    game.tap_key(key(Action::Scene(0)));
     game.update(60);
     assert_eq!(game.bands().len(), 1);
     game.update(70);
     assert_eq!(game.bands().len(), 0, "released after 2 s");
 
     let mut game = lab();
-    game.tap_key(SCENE_KEYS[7]);
+    game.tap_key(key(Action::Scene(7)));
     game.update(30);
     let there = DVec2::new(-200.0, -100.0);
     game.press_at(there);

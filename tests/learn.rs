@@ -9,9 +9,9 @@ use bevy::input::ButtonState;
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
-use common::{Game, world_to_screen};
+use common::{Action, Game, Overlay, key, world_to_screen};
 use rubber_band_box::game::input::controls::Parameter;
-use rubber_band_box::game::input::controls::{LEARN, PAUSE, SINGLE_STEP};
+
 use rubber_band_box::game::learn::chapters::{CHAPTERS, Task};
 use rubber_band_box::game::learn::twin::{CentreTwin, TWIN_OFFSET};
 use rubber_band_box::game::learn::{LINES, Learn, LearnText, Learning, chapter_shown};
@@ -252,7 +252,7 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
 fn every_chapters_values_are_the_components_recomputed() {
     let mut game = Game::stepping();
     game.update(2);
-    game.tap_key(LEARN);
+    game.tap_key(key(Action::Learn));
     game.update(1);
     assert_eq!(chapter_shown(game.world()), Some(0));
     for (index, shown) in CHAPTERS.iter().enumerate() {
@@ -325,7 +325,7 @@ fn task_done(index: usize, answer: Option<usize>, act: bool) -> (bool, String) {
             }
             Task::DoubleTheInertia => {
                 // The scene's band holds; paused, the mass doubled.
-                game.tap_key(PAUSE);
+                game.tap_key(key(Action::TogglePause));
                 game.update(2);
                 let mass = game.world().resource::<SceneParams>().mass;
                 game.world()
@@ -345,15 +345,15 @@ fn task_done(index: usize, answer: Option<usize>, act: bool) -> (bool, String) {
                 game.mouse(ButtonState::Released);
             }
             Task::StepOrder => {
-                game.tap_key(PAUSE);
+                game.tap_key(key(Action::TogglePause));
                 game.update(2);
-                game.tap_key(SINGLE_STEP);
+                game.tap_key(key(Action::Step));
                 game.update(2);
             }
         }
     } else if CHAPTERS[index].task == Task::StepOrder {
         // Paused, without stepping.
-        game.tap_key(PAUSE);
+        game.tap_key(key(Action::TogglePause));
         game.update(12);
     }
     game.update(600);
@@ -444,7 +444,7 @@ fn a_side_root_two_times_as_long_does_the_inertias_task() {
     chapter(&mut game, index);
     game.update(20);
     game.world().trigger(Learn::Predict(RIGHT[index]));
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(2);
     let side = game.world().resource::<SceneParams>().size.x;
     game.world()
@@ -474,9 +474,9 @@ fn leaving_learn_mode_puts_the_game_back_as_it_was() {
     let mut game = Game::stepping();
     game.update(2);
     // A game of the player's own: other settings, overlays, a pull under way, then let go.
-    game.tap_key(rubber_band_box::game::input::controls::STIFFER);
-    game.tap_key(rubber_band_box::game::input::controls::CYCLE_INTEGRATOR);
-    game.tap_key(rubber_band_box::game::input::controls::GHOSTS);
+    game.tap_key(key(Action::Stiffer));
+    game.tap_key(key(Action::NextIntegrator));
+    game.tap_key(key(Action::Toggle(Overlay::Ghosts)));
     game.update(2);
     game.press_at(DVec2::new(150.0, 80.0));
     game.update(20);
@@ -490,14 +490,14 @@ fn leaving_learn_mode_puts_the_game_back_as_it_was() {
         world.resource::<SceneName>().clone(),
     );
     let state = game.state();
-    game.tap_key(LEARN);
+    game.tap_key(key(Action::Learn));
     game.update(2);
     for _ in 0..CHAPTERS.len() {
         game.world().trigger(Learn::Next);
         game.update(20);
     }
     assert_eq!(*game.world().resource::<State<Mode>>().get(), Mode::Learn);
-    game.tap_key(LEARN);
+    game.tap_key(key(Action::Learn));
     game.update(1);
     let world = game.world();
     assert_eq!(chapter_shown(world), None);
@@ -522,7 +522,7 @@ fn leaving_learn_mode_puts_the_game_back_as_it_was() {
 fn the_mode_state_saves_on_enter_and_restores_on_exit_whoever_sets_it() {
     let mut game = Game::stepping();
     game.update(2);
-    game.tap_key(rubber_band_box::game::input::controls::STIFFER);
+    game.tap_key(key(Action::Stiffer));
     game.tap_key(KeyCode::KeyP);
     game.update(2);
     let settings = |game: &mut Game| {
@@ -554,10 +554,10 @@ fn the_mode_state_saves_on_enter_and_restores_on_exit_whoever_sets_it() {
     assert_eq!(chapter_shown(game.world()), None);
     assert_eq!(settings(&mut game), before);
     // The control enters at the first chapter and leaves the same way.
-    game.tap_key(LEARN);
+    game.tap_key(key(Action::Learn));
     game.update(1);
     assert_eq!(chapter_shown(game.world()), Some(0));
-    game.tap_key(LEARN);
+    game.tap_key(key(Action::Learn));
     game.update(1);
     assert_eq!(settings(&mut game), before);
 }

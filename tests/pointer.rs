@@ -179,7 +179,7 @@ fn a_reset_in_the_frame_of_a_press_lets_go_and_leaves_no_band_behind() {
     );
 
     game.press_at(DVec2::new(-200.0, 100.0));
-    game.tap_key(rubber_band_box::game::input::controls::RESET);
+    game.tap_key(key(Action::Reset));
     game.update(1);
     assert!(game.bands().is_empty(), "{:?}", game.bands());
     assert_eq!(*game.world().resource::<Grip>(), Grip(None));

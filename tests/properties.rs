@@ -14,8 +14,7 @@ use bevy::prelude::*;
 use bevy::window::WindowFocused;
 use proptest::prelude::*;
 
-use common::Game;
-use rubber_band_box::game::input::controls;
+use common::{Action, Game, Overlay, key};
 use rubber_band_box::game::pointer::Grip;
 use rubber_band_box::game::simulation::{ForceAccumulator, RigidBox, Tap};
 use rubber_band_box::physics::{
@@ -289,18 +288,18 @@ fn input() -> impl Strategy<Value = Input> {
         prop_oneof![Just(0u64), 0u64..50_000_000, Just(10_000_000_000)]
             .prop_map(|ns| Input::Frame(Duration::from_nanos(ns))),
         prop::sample::select(vec![
-            controls::PAUSE,
-            controls::SINGLE_STEP,
-            controls::RESET,
-            controls::CYCLE_INTEGRATOR,
-            controls::SOFTER,
-            controls::STIFFER,
-            controls::SLOWER,
-            controls::FASTER,
-            controls::FEWER_STEPS,
-            controls::MORE_STEPS,
-            controls::VECTORS,
-            controls::TRAIL,
+            key(Action::TogglePause),
+            key(Action::Step),
+            key(Action::Reset),
+            key(Action::NextIntegrator),
+            key(Action::Softer),
+            key(Action::Stiffer),
+            key(Action::Slower),
+            key(Action::Faster),
+            key(Action::FewerSteps),
+            key(Action::MoreSteps),
+            key(Action::Toggle(Overlay::Vectors)),
+            key(Action::Toggle(Overlay::Trail)),
         ])
         .prop_map(Input::Key),
     ]

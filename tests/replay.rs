@@ -9,9 +9,7 @@ use std::path::PathBuf;
 use proptest::prelude::*;
 
 use common::*;
-use rubber_band_box::game::input::controls::{
-    FASTER, FEWER_STEPS, MORE_STEPS, PAUSE, RESET, SAVE, SINGLE_STEP, SOFTER, STIFFER,
-};
+
 use rubber_band_box::game::replays::playback::{self, Playback, PlaybackEnd};
 use rubber_band_box::game::replays::recording::Recorder;
 use rubber_band_box::game::shared::StatusMessage;
@@ -36,17 +34,20 @@ enum Hand {
     Idle,
 }
 
-const KEYS: [KeyCode; 9] = [
-    CYCLE_INTEGRATOR,
-    SOFTER,
-    STIFFER,
-    FEWER_STEPS,
-    MORE_STEPS,
-    RESET,
-    PAUSE,
-    SINGLE_STEP,
-    FASTER,
-];
+/// The keys a random hand presses, found by what they do.
+fn keys() -> [KeyCode; 9] {
+    [
+        key(Action::NextIntegrator),
+        key(Action::Softer),
+        key(Action::Stiffer),
+        key(Action::FewerSteps),
+        key(Action::MoreSteps),
+        key(Action::Reset),
+        key(Action::TogglePause),
+        key(Action::Step),
+        key(Action::Faster),
+    ]
+}
 
 fn hand() -> impl Strategy<Value = Hand> {
     let at = || (-300.0..300.0, -220.0..220.0);
@@ -55,7 +56,7 @@ fn hand() -> impl Strategy<Value = Hand> {
         6 => at().prop_map(|(x, y)| Hand::Move(x, y)),
         2 => Just(Hand::Release),
         1 => at().prop_map(|(x, y)| Hand::Tap(x, y)),
-        2 => (0..KEYS.len()).prop_map(Hand::Key),
+        2 => (0..keys().len()).prop_map(Hand::Key),
         4 => Just(Hand::Idle),
     ]
 }
@@ -70,7 +71,7 @@ fn play(game: &mut Game, hands: &[Hand]) {
                 game.press_at(DVec2::new(x, y));
                 game.mouse(ButtonState::Released);
             }
-            Hand::Key(index) => game.tap_key(KEYS[index]),
+            Hand::Key(index) => game.tap_key(keys()[index]),
             Hand::Idle => {}
         }
         game.update(1);
@@ -126,19 +127,19 @@ fn every_kind_of_record_replays_exactly_and_another_integrator_differs() {
     let mut game = recorded_game();
     game.press_at(DVec2::new(150.0, 100.0));
     game.update(20);
-    game.tap_key(CYCLE_INTEGRATOR);
+    game.tap_key(key(Action::NextIntegrator));
     game.update(5);
-    game.tap_key(STIFFER);
-    game.tap_key(MORE_STEPS);
+    game.tap_key(key(Action::Stiffer));
+    game.tap_key(key(Action::MoreSteps));
     game.cursor(Some(world_to_screen(DVec2::new(-120.0, 40.0))));
     game.update(20);
-    game.tap_key(RESET);
+    game.tap_key(key(Action::Reset));
     game.update(3);
     game.press_at(DVec2::new(-50.0, -150.0));
     game.update(10);
-    game.tap_key(PAUSE);
+    game.tap_key(key(Action::TogglePause));
     game.update(1);
-    game.tap_key(SINGLE_STEP);
+    game.tap_key(key(Action::Step));
     game.update(2);
     let played = game.world().resource::<Trajectory>().0.clone();
     let replay = saved_replay(&mut game);
@@ -168,7 +169,7 @@ fn the_save_key_and_the_games_end_write_a_replay_that_loads() {
     });
     game.press_at(DVec2::new(150.0, 100.0));
     game.update(30);
-    game.tap_key(SAVE);
+    game.tap_key(key(Action::Save));
     game.update(1);
     let status = game.world().resource::<StatusMessage>().0.clone().unwrap();
     assert_eq!(status, format!("saved 30 steps to {}", path.display()));
@@ -191,7 +192,7 @@ fn a_save_that_cannot_be_written_says_why_and_the_game_plays_on() {
         app.insert_resource(Recorder::to_file(target));
     });
     game.update(5);
-    game.tap_key(SAVE);
+    game.tap_key(key(Action::Save));
     game.update(5);
     let status = game.world().resource::<StatusMessage>().0.clone().unwrap();
     assert!(

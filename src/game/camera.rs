@@ -280,10 +280,10 @@ pub struct SceneView<'w, 's> {
 }
 
 /// Zooms the view in, about the viewport's centre: the wheel's zoom for the keyboard.
-pub const ZOOM_IN: KeyCode = KeyCode::KeyZ;
+pub(crate) const ZOOM_IN: KeyCode = KeyCode::KeyZ;
 
 /// Zooms the view out, about the viewport's centre.
-pub const ZOOM_OUT: KeyCode = KeyCode::KeyX;
+pub(crate) const ZOOM_OUT: KeyCode = KeyCode::KeyX;
 
 /// What one press of a zoom key zooms by (held, the key repeats).
 const KEY_ZOOM: f32 = 1.25;

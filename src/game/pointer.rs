@@ -4,7 +4,7 @@
 //! press is felt by the very next fixed step: `read_pointer` turns mouse, touch and focus
 //! input into [`PointerAction`]s in world coordinates (through the camera's frame,
 //! [`CameraFrame::anchor_at`]), `read_keyboard` does the same for the keyboard's cursor
-//! ([`KeyCursor`]: the arrows move it, [`BAND_KEY`] grabs and lets go), and `drive_band`
+//! ([`KeyCursor`]: the arrows move it, `BAND_KEY` grabs and lets go), and `drive_band`
 //! spawns, moves and despawns the band entity from them. Tests can drive either end. The
 //! plugin owns the grip (which device holds the band) and lets go on a reset.
 //!
@@ -93,7 +93,7 @@ pub enum PointerSource {
 }
 
 /// The key that grabs the corner nearest the keyboard's cursor, and lets go.
-pub const BAND_KEY: KeyCode = KeyCode::KeyB;
+pub(crate) const BAND_KEY: KeyCode = KeyCode::KeyB;
 
 /// The keys that move the keyboard's cursor, and the way each moves it (y up).
 const CURSOR_KEYS: [(KeyCode, Vec2); 4] = [
@@ -254,7 +254,7 @@ impl Arrows<'_, '_> {
     }
 }
 
-/// Reads the keyboard's band: the arrows move [`KeyCursor`], [`BAND_KEY`] grabs and lets go.
+/// Reads the keyboard's band: the arrows move [`KeyCursor`], `BAND_KEY` grabs and lets go.
 ///
 /// The cursor moves first, then each press of the band key acts where it has got to; a held
 /// band follows the cursor every frame, as the mouse's follows the mouse. The band key takes

@@ -70,6 +70,12 @@ pub mod colour {
     pub const FOCUS: Color = Color::srgb(1.0, 0.85, 0.2);
     use bevy::prelude::Color;
 
+    /// The box's fill.
+    pub const BOX_FILL: Color = Color::srgb(0.16, 0.42, 0.72);
+    /// The box's outline and centre cross (the tests find the box's gizmos by it).
+    pub const BOX_OUTLINE: Color = Color::WHITE;
+    /// The band's pin at the pointer, and the trail of the pulled corner.
+    pub const PIN_FILL: Color = Color::srgb(1.0, 0.85, 0.2);
     /// The scene's background (the clear colour) and the page around the dock.
     pub const BACKGROUND: Color = Color::srgb(0.05, 0.055, 0.07);
     /// A card's body.

@@ -25,9 +25,11 @@ pub use rubber_band_box::game::GameLogicPlugin;
 pub use rubber_band_box::game::budget::FrameBudget;
 pub use rubber_band_box::game::camera::SceneCamera;
 pub use rubber_band_box::game::energy::EnergyHistory;
-pub use rubber_band_box::game::input::controls::CYCLE_INTEGRATOR;
+pub use rubber_band_box::game::input::controls::Action;
+use rubber_band_box::game::input::controls::CONTROLS;
 pub use rubber_band_box::game::pointer::{Grip, PointerPlugin, PointerSource};
 pub use rubber_band_box::game::schedule::PhysicsSystems;
+pub use rubber_band_box::game::shared::Overlay;
 pub use rubber_band_box::game::simulation::{
     Band, EnergyBooks, ForceAccumulator, RigidBox, SimulationPlugin, StepCount, StepStats,
 };
@@ -45,6 +47,33 @@ pub const WINDOW: UVec2 = UVec2::new(1280, 720);
 
 /// World units a pixel at home in [`WINDOW`].
 pub const HOME_SCALE: f64 = 480.0 * 1.04 / 720.0;
+
+/// Returns the key that sends `action`, as the controls table (`CONTROLS`) binds it.
+pub fn key(action: Action) -> KeyCode {
+    CONTROLS
+        .iter()
+        .find_map(|control| {
+            let at = control.actions.iter().position(|sent| *sent == action)?;
+            control.keys.get(at).copied()
+        })
+        .unwrap_or_else(|| panic!("no key sends {action:?}"))
+}
+
+/// Returns the keys of the control the table names `name` (one with no action of its own).
+pub fn keys_of(name: &str) -> &'static [KeyCode] {
+    CONTROLS
+        .iter()
+        .find(|control| control.name == name)
+        .unwrap_or_else(|| panic!("no control named {name}"))
+        .keys
+}
+
+/// Returns the scenes' keys, in the core's order of scenes.
+pub fn scene_keys() -> Vec<KeyCode> {
+    (0..rubber_band_box::physics::Scene::NAMES.len())
+        .map(|index| key(Action::Scene(index)))
+        .collect()
+}
 
 pub fn screen_to_world(screen: Vec2) -> DVec2 {
     let scale = HOME_SCALE;

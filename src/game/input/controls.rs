@@ -37,29 +37,29 @@ impl Plugin for ControlsPlugin {
     }
 }
 
-pub const PAUSE: KeyCode = KeyCode::Space;
-pub const SINGLE_STEP: KeyCode = KeyCode::KeyN;
-pub const RESET: KeyCode = KeyCode::KeyR;
-pub const CYCLE_INTEGRATOR: KeyCode = KeyCode::KeyI;
-pub const SOFTER: KeyCode = KeyCode::BracketLeft;
-pub const STIFFER: KeyCode = KeyCode::BracketRight;
-pub const SLOWER: KeyCode = KeyCode::Minus;
-pub const FASTER: KeyCode = KeyCode::Equal;
-pub const FEWER_STEPS: KeyCode = KeyCode::PageDown;
-pub const MORE_STEPS: KeyCode = KeyCode::PageUp;
-pub const VECTORS: KeyCode = KeyCode::KeyV;
-pub const TRAIL: KeyCode = KeyCode::KeyT;
-pub const HUD: KeyCode = KeyCode::KeyH;
-pub const SAVE: KeyCode = KeyCode::KeyS;
-pub const OPEN: KeyCode = KeyCode::KeyO;
-pub const GHOSTS: KeyCode = KeyCode::KeyG;
+const PAUSE: KeyCode = KeyCode::Space;
+const SINGLE_STEP: KeyCode = KeyCode::KeyN;
+const RESET: KeyCode = KeyCode::KeyR;
+const CYCLE_INTEGRATOR: KeyCode = KeyCode::KeyI;
+const SOFTER: KeyCode = KeyCode::BracketLeft;
+const STIFFER: KeyCode = KeyCode::BracketRight;
+const SLOWER: KeyCode = KeyCode::Minus;
+const FASTER: KeyCode = KeyCode::Equal;
+const FEWER_STEPS: KeyCode = KeyCode::PageDown;
+const MORE_STEPS: KeyCode = KeyCode::PageUp;
+const VECTORS: KeyCode = KeyCode::KeyV;
+const TRAIL: KeyCode = KeyCode::KeyT;
+const HUD: KeyCode = KeyCode::KeyH;
+const SAVE: KeyCode = KeyCode::KeyS;
+const OPEN: KeyCode = KeyCode::KeyO;
+const GHOSTS: KeyCode = KeyCode::KeyG;
 const PLOT: KeyCode = KeyCode::KeyP;
 const HOME_VIEW: KeyCode = KeyCode::KeyF;
 const LINK: KeyCode = KeyCode::KeyC;
 const GAME_LINK: KeyCode = KeyCode::KeyU;
-pub const LEARN: KeyCode = KeyCode::KeyL;
+const LEARN: KeyCode = KeyCode::KeyL;
 /// The named scenes, in the core's order ([`Scene::NAMES`]).
-pub const SCENE_KEYS: [KeyCode; 10] = [
+const SCENE_KEYS: [KeyCode; 10] = [
     KeyCode::Digit1,
     KeyCode::Digit2,
     KeyCode::Digit3,

@@ -17,9 +17,6 @@ use crate::game::simulation::{Band, RenderSnapshots, ResetScene, RigidBox, inter
 use crate::game::theme::{VELOCITY_ARROW_SECONDS, colour, force_arrow};
 use crate::physics::{MassProperties, SCENE_SIZE, SceneParams};
 
-const BOX_FILL: Color = Color::srgb(0.16, 0.42, 0.72);
-pub const BOX_OUTLINE: Color = Color::WHITE;
-pub const PIN_FILL: Color = Color::srgb(1.0, 0.85, 0.2);
 const SCENE_BORDER: Color = colour::FRAME;
 const PIN_RADIUS: f32 = 5.0;
 /// The tutorial's band colour is [255, 0, min(length / 2, 255)]: fully magenta at this length.
@@ -67,7 +64,9 @@ fn box_fill(size: DVec2) -> impl Bundle {
         radii: None,
     };
     (
-        ShapeBuilder::with(&rectangle).fill(BOX_FILL).build(),
+        ShapeBuilder::with(&rectangle)
+            .fill(colour::BOX_FILL)
+            .build(),
         FilledSize(size),
     )
 }
@@ -101,7 +100,7 @@ fn pin_band(add: On<Add, Band>, bands: Query<&Band>, mut commands: Commands) {
         center: Vec2::ZERO,
     };
     commands.entity(add.entity).insert((
-        ShapeBuilder::with(&circle).fill(PIN_FILL).build(),
+        ShapeBuilder::with(&circle).fill(colour::PIN_FILL).build(),
         Transform::from_translation(band.ends.anchor.as_vec2().extend(1.0)),
     ));
 }
@@ -122,9 +121,9 @@ fn draw_boxes(
         gizmos.rect_2d(
             Isometry2d::new(centre, rotation),
             mass.size().as_vec2(),
-            BOX_OUTLINE,
+            colour::BOX_OUTLINE,
         );
-        gizmos.cross_2d(Isometry2d::new(centre, rotation), 4.0, BOX_OUTLINE);
+        gizmos.cross_2d(Isometry2d::new(centre, rotation), 4.0, colour::BOX_OUTLINE);
     }
 }
 
@@ -225,7 +224,7 @@ fn draw_trail(mut gizmos: Gizmos, trail: Res<Trail>) {
             .points
             .iter()
             .enumerate()
-            .map(|(i, &p)| (p, PIN_FILL.with_alpha(i as f32 / n))),
+            .map(|(i, &p)| (p, colour::PIN_FILL.with_alpha(i as f32 / n))),
     );
 }
 
