@@ -290,3 +290,52 @@ fn the_pages_quote_autos_defaults_as_the_code_has_them() {
         assert!(text.contains(&quoted), "{page} does not say \"{quoted}\"");
     }
 }
+
+/// The bounds the pages quote are the code's own: the sliders' and a link's ranges
+/// (`physics::scene`), the heaviest settings they allow, and the frame's budget of steps.
+#[test]
+fn the_pages_quote_the_ranges_and_bounds_as_the_code_has_them() {
+    use rubber_band_box::game::budget::FrameBudget;
+    use rubber_band_box::physics::scene::{
+        MASS_RANGE, SIZE_RANGE, STEP_RATE_RANGE, STIFFNESS_RANGE, TIME_SCALE_RANGE,
+    };
+    let read = |page: &str| fs::read_to_string(root().join(page)).expect(page);
+    let (k, mass, size, rate) = (STIFFNESS_RANGE, MASS_RANGE, SIZE_RANGE, STEP_RATE_RANGE);
+    for (page, quoted) in [
+        (
+            "docs/controls.md",
+            format!(
+                "(k from {:e} to {:e} and the mass from {:e} to {:e}",
+                k.low, k.high, mass.low, mass.high
+            ),
+        ),
+        (
+            "docs/controls.md",
+            format!("box from {} to {} px", size.low, size.high),
+        ),
+        (
+            "docs/links.md",
+            format!("{} to {} Hz, k, the mass", rate.low, rate.high),
+        ),
+        (
+            "docs/links.md",
+            format!("size from {} to {}", size.low, size.high),
+        ),
+        (
+            "docs/measurements.md",
+            format!(
+                "k = {:e}, {} Hz, ×{}",
+                k.high, rate.high, TIME_SCALE_RANGE.high
+            ),
+        ),
+        (
+            "docs/architecture.md",
+            format!("or {} steps", FrameBudget::MAX_STEPS),
+        ),
+    ] {
+        assert!(
+            read(page).contains(&quoted),
+            "{page} does not say \"{quoted}\""
+        );
+    }
+}
