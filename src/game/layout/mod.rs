@@ -198,76 +198,106 @@ fn card_node(title: &str) -> AccessibilityNode {
     AccessibilityNode(node)
 }
 
+/// Spawns the window's regions: the scene's column (status bar, viewport, hint) and the dock.
+///
+/// The dock holds the tabs (a tall window's row of card titles) and each registered card's
+/// frame, title and empty body, which its plugin fills in `Startup`.
 fn spawn_regions(mut commands: Commands, registry: Res<CardRegistry>) {
-    let root = commands
-        .spawn((
-            Name::new("Regions"),
-            Regions,
-            Pickable::IGNORE,
-            Node {
-                width: percent(100),
-                height: percent(100),
-                flex_direction: FlexDirection::Row,
-                ..default()
-            },
-        ))
-        .id();
-    let scene = commands
-        .spawn((
-            Name::new("Scene column"),
-            Pickable::IGNORE,
-            Node {
-                flex_grow: 1.0,
-                flex_shrink: 1.0,
-                flex_basis: px(0),
-                min_width: px(0),
-                min_height: px(0),
-                flex_direction: FlexDirection::Column,
-                ..default()
-            },
-            ChildOf(root),
-        ))
-        .id();
-    let bar = |name: &'static str, slot: Slot| {
-        (
-            Name::new(name),
-            slot,
-            Pickable::IGNORE,
-            Node {
-                padding: UiRect::axes(px(space::PAD + 2.0), px(3)),
-                column_gap: px(space::PAD * 2.0),
-                flex_wrap: FlexWrap::Wrap,
-                align_items: AlignItems::Center,
-                ..default()
-            },
-            BackgroundColor(colour::CARD),
-        )
-    };
-    let status = commands
-        .spawn((
-            Name::new("Status bar"),
-            Pickable::IGNORE,
-            Node {
-                justify_content: JustifyContent::SpaceBetween,
-                align_items: AlignItems::Center,
-                ..default()
-            },
-            BackgroundColor(colour::CARD),
-            ChildOf(scene),
-        ))
-        .id();
-    commands.spawn((bar("Status line", Slot::Status), ChildOf(status)));
-    commands.spawn((
-        Name::new("Status tools"),
-        Slot::StatusTools,
+    let root = commands.spawn(regions()).id();
+    commands.spawn((scene_column(), ChildOf(root)));
+    let holder = commands.spawn((dock_holder(), ChildOf(root))).id();
+    let dock = commands.spawn((dock_cards(), ChildOf(holder))).id();
+    commands.spawn((dock_scrollbar(dock), ChildOf(holder)));
+    let tabs = commands.spawn((tabs(), ChildOf(dock))).id();
+    for &CardSpec { card, title, .. } in &registry.0 {
+        commands.spawn((title_button(card, title), ChildOf(tabs)));
+        commands.spawn((card_frame(card, title), ChildOf(dock)));
+    }
+}
+
+/// Returns the window's root: the scene's column and the dock side by side.
+fn regions() -> impl Bundle {
+    (
+        Name::new("Regions"),
+        Regions,
+        Pickable::IGNORE,
         Node {
-            flex_shrink: 0.0,
+            width: percent(100),
+            height: percent(100),
+            flex_direction: FlexDirection::Row,
             ..default()
         },
-        ChildOf(status),
-    ));
-    // No background: the scene's camera renders under it.
-    commands.spawn((
+    )
+}
+
+/// Returns the scene's column: the status bar, the scene's viewport and the hint under it.
+fn scene_column() -> impl Bundle {
+    (
+        Name::new("Scene column"),
+        Pickable::IGNORE,
+        Node {
+            flex_grow: 1.0,
+            flex_shrink: 1.0,
+            flex_basis: px(0),
+            min_width: px(0),
+            min_height: px(0),
+            flex_direction: FlexDirection::Column,
+            ..default()
+        },
+        children![
+            status_bar(),
+            scene_viewport(),
+            bar("Hint line", Slot::Hint, Overflow::clip_x()),
+        ],
+    )
+}
+
+/// Returns a line of text over or under the scene, for the plugin that fills `slot`.
+fn bar(name: &'static str, slot: Slot, overflow: Overflow) -> impl Bundle {
+    (
+        Name::new(name),
+        slot,
+        Pickable::IGNORE,
+        Node {
+            padding: UiRect::axes(px(space::PAD + 2.0), px(3)),
+            column_gap: px(space::PAD * 2.0),
+            flex_wrap: FlexWrap::Wrap,
+            align_items: AlignItems::Center,
+            overflow,
+            ..default()
+        },
+        BackgroundColor(colour::CARD),
+    )
+}
+
+/// Returns the status bar: the status line, and the tools at its end.
+fn status_bar() -> impl Bundle {
+    (
+        Name::new("Status bar"),
+        Pickable::IGNORE,
+        Node {
+            justify_content: JustifyContent::SpaceBetween,
+            align_items: AlignItems::Center,
+            ..default()
+        },
+        BackgroundColor(colour::CARD),
+        children![
+            bar("Status line", Slot::Status, Overflow::DEFAULT),
+            (
+                Name::new("Status tools"),
+                Slot::StatusTools,
+                Node {
+                    flex_shrink: 0.0,
+                    ..default()
+                },
+            ),
+        ],
+    )
+}
+
+/// Returns the scene's viewport, where the scene's camera renders (so it has no background).
+fn scene_viewport() -> impl Bundle {
+    (
         Name::new("Scene viewport"),
         ViewportNode,
         scene_node(),
@@ -278,47 +308,49 @@ fn spawn_regions(mut commands: Commands, registry: Res<CardRegistry>) {
             min_height: px(0),
             ..default()
         },
-        ChildOf(scene),
-    ));
-    let mut hint = bar("Hint line", Slot::Hint);
-    hint.3.overflow = Overflow::clip_x();
-    commands.spawn((hint, ChildOf(scene)));
+    )
+}
 
-    let holder = commands
-        .spawn((
-            Name::new("Dock"),
-            Dock,
-            Node {
-                flex_direction: FlexDirection::Row,
-                flex_shrink: 0.0,
-                ..default()
+/// Returns the dock's holder: the cards' column and its scrollbar.
+fn dock_holder() -> impl Bundle {
+    (
+        Name::new("Dock"),
+        Dock,
+        Node {
+            flex_direction: FlexDirection::Row,
+            flex_shrink: 0.0,
+            ..default()
+        },
+    )
+}
+
+/// Returns the cards' column, which scrolls.
+///
+/// The scrollbar takes the cards' right padding: the cards keep the width they had.
+fn dock_cards() -> impl Bundle {
+    (
+        Name::new("Dock cards"),
+        DockCards,
+        Node {
+            flex_direction: FlexDirection::Column,
+            flex_grow: 1.0,
+            flex_shrink: 1.0,
+            min_width: px(0),
+            min_height: px(0),
+            overflow: Overflow::scroll_y(),
+            row_gap: px(space::GAP),
+            padding: UiRect {
+                right: px(0),
+                ..UiRect::all(px(space::GAP))
             },
-            ChildOf(root),
-        ))
-        .id();
-    // The scrollbar takes the cards' right padding: the cards keep the width they had.
-    let dock = commands
-        .spawn((
-            Name::new("Dock cards"),
-            DockCards,
-            Node {
-                flex_direction: FlexDirection::Column,
-                flex_grow: 1.0,
-                flex_shrink: 1.0,
-                min_width: px(0),
-                min_height: px(0),
-                overflow: Overflow::scroll_y(),
-                row_gap: px(space::GAP),
-                padding: UiRect {
-                    right: px(0),
-                    ..UiRect::all(px(space::GAP))
-                },
-                ..default()
-            },
-            ChildOf(holder),
-        ))
-        .id();
-    commands.spawn((
+            ..default()
+        },
+    )
+}
+
+/// Returns the scrollbar of the cards' column `dock`.
+fn dock_scrollbar(dock: Entity) -> impl Bundle {
+    (
         Name::new("Dock scrollbar"),
         DockScrollbar,
         Scrollbar::new(dock, ControlOrientation::Vertical, 24.0),
@@ -335,53 +367,53 @@ fn spawn_regions(mut commands: Commands, registry: Res<CardRegistry>) {
             },
             BackgroundColor(Color::NONE),
         )],
-        ChildOf(holder),
-    ));
-    let tabs = commands
-        .spawn((
-            Name::new("Tabs"),
-            Tabs,
-            Node {
-                display: Display::None,
-                flex_wrap: FlexWrap::Wrap,
-                column_gap: px(2),
-                row_gap: px(2),
-                flex_shrink: 0.0,
-                ..default()
-            },
-            ChildOf(dock),
-        ))
-        .id();
-    for &CardSpec { card, title, .. } in &registry.0 {
-        commands.spawn((title_button(card, title), ChildOf(tabs)));
-        // The card has no background of its own: a chart in it is drawn under the UI, seen
-        // where no node of the card paints.
-        let frame = commands
-            .spawn((
-                Name::new(format!("Card {title}")),
-                CardFrame(card),
-                card_node(title),
+    )
+}
+
+/// Returns the row of card titles a tall window shows above the open card (hidden at first).
+fn tabs() -> impl Bundle {
+    (
+        Name::new("Tabs"),
+        Tabs,
+        Node {
+            display: Display::None,
+            flex_wrap: FlexWrap::Wrap,
+            column_gap: px(2),
+            row_gap: px(2),
+            flex_shrink: 0.0,
+            ..default()
+        },
+    )
+}
+
+/// Returns a card's frame: its title, a button that folds it, and its body, hidden until open.
+///
+/// The card has no background of its own: a chart in it is drawn under the UI, seen where no
+/// node of the card paints.
+fn card_frame(card: Card, title: &'static str) -> impl Bundle {
+    (
+        Name::new(format!("Card {title}")),
+        CardFrame(card),
+        card_node(title),
+        Node {
+            flex_direction: FlexDirection::Column,
+            flex_shrink: 0.0,
+            ..default()
+        },
+        children![
+            title_button(card, title),
+            (
+                Name::new(format!("Card body {title}")),
+                Slot::Card(card),
                 Node {
+                    display: Display::None,
                     flex_direction: FlexDirection::Column,
                     flex_shrink: 0.0,
                     ..default()
                 },
-                ChildOf(dock),
-            ))
-            .id();
-        commands.spawn((title_button(card, title), ChildOf(frame)));
-        commands.spawn((
-            Name::new(format!("Card body {title}")),
-            Slot::Card(card),
-            Node {
-                display: Display::None,
-                flex_direction: FlexDirection::Column,
-                flex_shrink: 0.0,
-                ..default()
-            },
-            ChildOf(frame),
-        ));
-    }
+            ),
+        ],
+    )
 }
 
 fn scale_ui_to_window(windows: Query<&Window, With<PrimaryWindow>>, mut scale: ResMut<UiScale>) {

@@ -248,255 +248,365 @@ fn v(value: DVec2) -> String {
 
 /// Returns the equation's lines: its symbols, then the same with this frame's numbers.
 pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
+    match equation {
+        Equation::ForceSum => force_sum(q),
+        Equation::Acceleration => acceleration(q),
+        Equation::Motion => motion(q),
+        Equation::Orientation => orientation(q),
+        Equation::AngularDecay => angular_decay(q),
+        Equation::Arm => arm(q),
+        Equation::Torque => torque(q),
+        Equation::PointVelocity => point_velocity(q),
+        Equation::CentrePull => centre_pull(q),
+        Equation::PointMasses => point_masses(q),
+        Equation::Inertia => inertia(q),
+        Equation::AngularMomentum => angular_momentum(q),
+        Equation::AngularAcceleration => angular_acceleration(q),
+        Equation::BandShareOfAlpha => band_share_of_alpha(q),
+        Equation::Spring => spring(q),
+        Equation::NearestCorner => nearest_corner(q),
+        Equation::LinearDamping => linear_damping(q),
+        Equation::AngularDamping => angular_damping(q),
+        Equation::Energy => energy(q),
+        Equation::Ledger => ledger(q),
+        Equation::Update => update(q),
+        Equation::UpdateOrder => update_order(q),
+    }
+}
+
+/// Returns the lines of ΣF, the band's and damping's forces summed.
+fn force_sum(q: &Quantities) -> Vec<String> {
+    let sum = q.force_sum();
+    vec![format!(
+        "ΣF = F_band + F_damp = {} + {} = {}",
+        v(q.band_force()),
+        v(q.damping_force()),
+        v(sum)
+    )]
+}
+
+/// Returns the lines of a = ΣF / m.
+fn acceleration(q: &Quantities) -> Vec<String> {
     let m = n(q.mass);
+    let sum = q.force_sum();
+    vec![format!(
+        "a = ΣF / m = {} / {m} = {}",
+        v(sum),
+        v(sum / q.mass)
+    )]
+}
+
+/// Returns the lines of the position and its velocity.
+fn motion(q: &Quantities) -> Vec<String> {
     let x = q.state.linear.position;
     let velocity = q.state.linear.velocity;
+    vec![format!("x = {}   v = dx/dt = {}", v(x), v(velocity))]
+}
+
+/// Returns the lines of the angle and its rate.
+fn orientation(q: &Quantities) -> Vec<String> {
     let theta = q.state.angular.orientation;
     let omega = q.state.angular.angular_velocity;
-    let sum = q.force_sum();
-    let torque = q.torque_sum();
-    match equation {
-        Equation::ForceSum => vec![format!(
-            "ΣF = F_band + F_damp = {} + {} = {}",
-            v(q.band_force()),
-            v(q.damping_force()),
-            v(sum)
+    vec![format!(
+        "θ = {} rad   ω = dθ/dt = {} rad/s",
+        n(theta),
+        n(omega)
+    )]
+}
+
+/// Returns the lines of damping's share of dω/dt.
+fn angular_decay(q: &Quantities) -> Vec<String> {
+    let omega = q.state.angular.angular_velocity;
+    vec![format!(
+        "damping's part of dω/dt = −c ω = −{} × {} = {} rad/s²",
+        n(q.angular_damping),
+        f_(omega),
+        n(-q.angular_damping * omega)
+    )]
+}
+
+/// Returns the lines of the arm r from the centre to the band's corner.
+fn arm(q: &Quantities) -> Vec<String> {
+    let x = q.state.linear.position;
+    match q.band {
+        Some((corner, _)) => vec![format!(
+            "r = p − x = {} − {} = {}",
+            v(corner),
+            v(x),
+            v(q.arm())
         )],
-        Equation::Acceleration => vec![format!(
-            "a = ΣF / m = {} / {m} = {}",
-            v(sum),
-            v(sum / q.mass)
-        )],
-        Equation::Motion => vec![format!("x = {}   v = dx/dt = {}", v(x), v(velocity))],
-        Equation::Orientation => vec![format!(
-            "θ = {} rad   ω = dθ/dt = {} rad/s",
-            n(theta),
-            n(omega)
-        )],
-        Equation::AngularDecay => vec![format!(
-            "damping's part of dω/dt = −c ω = −{} × {} = {} rad/s²",
-            n(q.angular_damping),
-            f_(omega),
-            n(-q.angular_damping * omega)
-        )],
-        Equation::Arm => match q.band {
-            Some((corner, _)) => vec![format!(
-                "r = p − x = {} − {} = {}",
-                v(corner),
-                v(x),
-                v(q.arm())
-            )],
-            None => vec!["r = p − x: no band (press on the scene)".to_owned()],
-        },
-        Equation::Torque => {
-            let (r, f) = (q.arm(), q.band_force());
+        None => vec!["r = p − x: no band (press on the scene)".to_owned()],
+    }
+}
+
+/// Returns the lines of τ = r × F of the band.
+fn torque(q: &Quantities) -> Vec<String> {
+    let (r, f) = (q.arm(), q.band_force());
+    vec![format!(
+        "τ = r × F = r_x·F_y − r_y·F_x = {}·{} − {}·{} = {}",
+        n(r.x),
+        f_(f.y),
+        f_(r.y),
+        f_(f.x),
+        n(q.band_torque())
+    )]
+}
+
+/// Returns the lines of the band's corner's velocity, v + ω r⊥.
+fn point_velocity(q: &Quantities) -> Vec<String> {
+    let velocity = q.state.linear.velocity;
+    let omega = q.state.angular.angular_velocity;
+    match q.band {
+        Some(_) => {
+            let r = q.arm();
+            let perp = DVec2::new(-r.y, r.x);
             vec![format!(
-                "τ = r × F = r_x·F_y − r_y·F_x = {}·{} − {}·{} = {}",
-                n(r.x),
-                f_(f.y),
-                f_(r.y),
-                f_(f.x),
-                n(q.band_torque())
+                "v_p = v + ω r⊥ = {} + {} × {} = {}",
+                v(velocity),
+                n(omega),
+                v(perp),
+                v(velocity + omega * perp)
             )]
         }
-        Equation::PointVelocity => match q.band {
-            Some(_) => {
-                let r = q.arm();
-                let perp = DVec2::new(-r.y, r.x);
-                vec![format!(
-                    "v_p = v + ω r⊥ = {} + {} × {} = {}",
-                    v(velocity),
-                    n(omega),
-                    v(perp),
-                    v(velocity + omega * perp)
-                )]
-            }
-            None => vec!["v_p = v + ω r⊥, r⊥ = (−r_y, r_x): at the band's corner".to_owned()],
-        },
-        Equation::CentrePull => match (q.twin, q.band) {
-            (Some(twin), Some(_)) => vec![
-                format!(
-                    "twin: ΣF = F_band + F_damp = {} + {}, a = ΣF / m = {}",
-                    v(q.band_force()),
-                    // Its velocity is the box's, so its damping is too.
-                    v(q.damping_force()),
-                    v((q.band_force() + q.damping_force()) / q.mass)
-                ),
-                format!(
-                    "twin: r = 0, τ = 0 × F = 0, θ = {} rad",
-                    n(twin.angular.orientation)
-                ),
-            ],
-            _ => vec!["twin (below): the box's band force at its centre, r = 0, τ = 0".to_owned()],
-        },
-        Equation::PointMasses => {
-            let count = q.point_masses.max(1);
-            let sum = q.point_mass_inertia();
-            vec![format!(
-                "I ≈ Σ mₖ |rₖ|² over {count} × {count} masses of m / {} = {} ({}% of the box's)",
-                count * count,
-                n(sum),
-                n(100.0 * sum / q.inertia)
-            )]
-        }
-        Equation::Inertia => vec![format!(
-            "I = m (w² + h²) / 12 = {m} × ({}² + {}²) / 12 = {}",
-            n(q.size.x),
-            n(q.size.y),
-            n(q.inertia)
-        )],
-        Equation::AngularMomentum => {
-            let momentum = q.inertia * omega;
-            let mut lines = vec![format!(
-                "L = I ω = {} × {} = {}",
-                n(q.inertia),
-                f_(omega),
-                n(momentum)
-            )];
-            if let Some((after, torque_after)) = q.next {
-                let change = (q.inertia * after.angular.angular_velocity - momentum) / q.dt;
-                lines.push(format!(
-                    "over the next step ΔL / dt = {}; Στ goes {} → {}, mean {}",
-                    n(change),
-                    n(torque),
-                    n(torque_after),
-                    n(0.5 * (torque + torque_after))
-                ));
-            }
-            lines
-        }
-        Equation::AngularAcceleration => vec![
+        None => vec!["v_p = v + ω r⊥, r⊥ = (−r_y, r_x): at the band's corner".to_owned()],
+    }
+}
+
+/// Returns the lines of the twin's sum and its zero torque.
+fn centre_pull(q: &Quantities) -> Vec<String> {
+    match (q.twin, q.band) {
+        (Some(twin), Some(_)) => vec![
             format!(
-                "Στ = τ_band + τ_damp = {} + {} = {}",
-                n(q.band_torque()),
-                f_(q.damping_torque()),
-                n(torque)
+                "twin: ΣF = F_band + F_damp = {} + {}, a = ΣF / m = {}",
+                v(q.band_force()),
+                // Its velocity is the box's, so its damping is too.
+                v(q.damping_force()),
+                v((q.band_force() + q.damping_force()) / q.mass)
             ),
             format!(
-                "α = Στ / I = {} / {} = {} rad/s²",
-                f_(torque),
-                n(q.inertia),
-                n(torque / q.inertia)
+                "twin: r = 0, τ = 0 × F = 0, θ = {} rad",
+                n(twin.angular.orientation)
             ),
         ],
-        Equation::BandShareOfAlpha => vec![format!(
-            "τ_band / I = {} / {} = {} rad/s²",
-            f_(q.band_torque()),
+        _ => vec!["twin (below): the box's band force at its centre, r = 0, τ = 0".to_owned()],
+    }
+}
+
+/// Returns the lines of I summed over point masses across the box.
+fn point_masses(q: &Quantities) -> Vec<String> {
+    let count = q.point_masses.max(1);
+    let sum = q.point_mass_inertia();
+    vec![format!(
+        "I ≈ Σ mₖ |rₖ|² over {count} × {count} masses of m / {} = {} ({}% of the box's)",
+        count * count,
+        n(sum),
+        n(100.0 * sum / q.inertia)
+    )]
+}
+
+/// Returns the lines of I of the box in closed form.
+fn inertia(q: &Quantities) -> Vec<String> {
+    let m = n(q.mass);
+    vec![format!(
+        "I = m (w² + h²) / 12 = {m} × ({}² + {}²) / 12 = {}",
+        n(q.size.x),
+        n(q.size.y),
+        n(q.inertia)
+    )]
+}
+
+/// Returns the lines of L = I ω, and its change over the next step.
+fn angular_momentum(q: &Quantities) -> Vec<String> {
+    let omega = q.state.angular.angular_velocity;
+    let torque = q.torque_sum();
+    let momentum = q.inertia * omega;
+    let mut lines = vec![format!(
+        "L = I ω = {} × {} = {}",
+        n(q.inertia),
+        f_(omega),
+        n(momentum)
+    )];
+    if let Some((after, torque_after)) = q.next {
+        let change = (q.inertia * after.angular.angular_velocity - momentum) / q.dt;
+        lines.push(format!(
+            "over the next step ΔL / dt = {}; Στ goes {} → {}, mean {}",
+            n(change),
+            n(torque),
+            n(torque_after),
+            n(0.5 * (torque + torque_after))
+        ));
+    }
+    lines
+}
+
+/// Returns the lines of Στ and α = Στ / I.
+fn angular_acceleration(q: &Quantities) -> Vec<String> {
+    let torque = q.torque_sum();
+    vec![
+        format!(
+            "Στ = τ_band + τ_damp = {} + {} = {}",
+            n(q.band_torque()),
+            f_(q.damping_torque()),
+            n(torque)
+        ),
+        format!(
+            "α = Στ / I = {} / {} = {} rad/s²",
+            f_(torque),
             n(q.inertia),
-            n(q.band_torque() / q.inertia)
+            n(torque / q.inertia)
+        ),
+    ]
+}
+
+/// Returns the lines of the band's share of α.
+fn band_share_of_alpha(q: &Quantities) -> Vec<String> {
+    vec![format!(
+        "τ_band / I = {} / {} = {} rad/s²",
+        f_(q.band_torque()),
+        n(q.inertia),
+        n(q.band_torque() / q.inertia)
+    )]
+}
+
+/// Returns the lines of the band's force F = −k (p − q).
+fn spring(q: &Quantities) -> Vec<String> {
+    match q.band {
+        Some((corner, anchor)) => vec![format!(
+            "F = −k (p − q) = −{} × ({} − {}) = {}",
+            n(q.stiffness),
+            v(corner),
+            v(anchor),
+            v(q.band_force())
         )],
-        Equation::Spring => match q.band {
-            Some((corner, anchor)) => vec![format!(
-                "F = −k (p − q) = −{} × ({} − {}) = {}",
-                n(q.stiffness),
-                v(corner),
-                v(anchor),
-                v(q.band_force())
-            )],
-            None => vec!["F = −k (p − q): no band (press on the scene)".to_owned()],
-        },
-        Equation::NearestCorner => match q.band {
-            Some((corner, anchor)) => vec![format!(
-                "p = the corner nearest q at the press, held since: p = {}; q = {}; |p − q| = {} px",
-                v(corner),
-                v(anchor),
-                n(corner.distance(anchor))
-            )],
-            None => vec!["p = the corner nearest the pointer q, taken when pressed".to_owned()],
-        },
-        Equation::LinearDamping => vec![format!(
-            "F_damp = −b v = −{} × {} = {}",
-            n(q.linear_damping),
-            v(velocity),
-            v(q.damping_force())
+        None => vec!["F = −k (p − q): no band (press on the scene)".to_owned()],
+    }
+}
+
+/// Returns the lines of the corner the band holds and the anchor.
+fn nearest_corner(q: &Quantities) -> Vec<String> {
+    match q.band {
+        Some((corner, anchor)) => vec![format!(
+            "p = the corner nearest q at the press, held since: p = {}; q = {}; |p − q| = {} px",
+            v(corner),
+            v(anchor),
+            n(corner.distance(anchor))
         )],
-        Equation::AngularDamping => vec![format!(
-            "τ_damp = −c I ω = −{} × {} × {} = {}",
-            n(q.angular_damping),
-            n(q.inertia),
+        None => vec!["p = the corner nearest the pointer q, taken when pressed".to_owned()],
+    }
+}
+
+/// Returns the lines of F_damp = −b v.
+fn linear_damping(q: &Quantities) -> Vec<String> {
+    let velocity = q.state.linear.velocity;
+    vec![format!(
+        "F_damp = −b v = −{} × {} = {}",
+        n(q.linear_damping),
+        v(velocity),
+        v(q.damping_force())
+    )]
+}
+
+/// Returns the lines of τ_damp = −c I ω.
+fn angular_damping(q: &Quantities) -> Vec<String> {
+    let omega = q.state.angular.angular_velocity;
+    vec![format!(
+        "τ_damp = −c I ω = −{} × {} × {} = {}",
+        n(q.angular_damping),
+        n(q.inertia),
+        f_(omega),
+        n(q.damping_torque())
+    )]
+}
+
+/// Returns the lines of E, its three terms summed.
+fn energy(q: &Quantities) -> Vec<String> {
+    let (linear, turning, band) = q.energy();
+    vec![format!(
+        "E = ½mv² + ½Iω² + ½k|p − q|² = {} + {} + {} = {}",
+        n(linear),
+        n(turning),
+        n(band),
+        n(linear + turning + band)
+    )]
+}
+
+/// Returns the lines of the books and the energy's error against them.
+fn ledger(q: &Quantities) -> Vec<String> {
+    let books = q.ledger.expected();
+    vec![
+        format!(
+            "books: E₀ + W_hand − W_damp = {} + {} − {} = {}",
+            n(q.ledger.initial),
+            f_(q.ledger.work_in),
+            f_(q.ledger.dissipated),
+            n(books)
+        ),
+        format!(
+            "E after the step − books = {}: the error of {}",
+            n(q.settled_energy - books),
+            q.integrator.name()
+        ),
+    ]
+}
+
+/// Returns the lines of the `seed` integrator's five stages for the next step.
+fn update(q: &Quantities) -> Vec<String> {
+    let m = n(q.mass);
+    let omega = q.state.angular.angular_velocity;
+    // The `seed` integrator's own stages for the next step, in its order.
+    let s = &q.seed;
+    let after = s.after;
+    vec![
+        format!(
+            "1  ω ← e^(−c dt) ω = {} × {} = {}   (c = {} /s)",
+            n(s.damping_factor),
             f_(omega),
-            n(q.damping_torque())
-        )],
-        Equation::Energy => {
-            let (linear, turning, band) = q.energy();
-            vec![format!(
-                "E = ½mv² + ½Iω² + ½k|p − q|² = {} + {} + {} = {}",
-                n(linear),
-                n(turning),
-                n(band),
-                n(linear + turning + band)
-            )]
+            n(s.damped_angular_velocity),
+            n(q.angular_damping)
+        ),
+        format!(
+            "2  a = (F_band + F_damp) / m = ({} + {}) / {m} = {}",
+            v(s.band_force),
+            v(s.damping_force),
+            v(s.acceleration)
+        ),
+        format!(
+            "3  α_band = τ_band / I = {} / {} = {}   (damping acted in line 1)",
+            f_(s.torque),
+            n(q.inertia),
+            n(s.angular_acceleration)
+        ),
+        format!(
+            "4  ω += α dt → {}   θ += ω dt → {}",
+            n(after.angular.angular_velocity),
+            n(after.angular.orientation)
+        ),
+        format!(
+            "5  v += a dt → {}   x += v dt → {}   (dt = {} s)",
+            v(after.linear.velocity),
+            v(after.linear.position),
+            n(q.dt)
+        ),
+    ]
+}
+
+/// Returns the lines of the seed's and explicit Euler's ghosts' energy and residual.
+fn update_order(q: &Quantities) -> Vec<String> {
+    match q.update_order {
+        Some([seed, euler]) => vec![
+            format!(
+                "seed's ghost: E = {}, E − books = {}",
+                n(seed.energy),
+                n(seed.residual)
+            ),
+            format!(
+                "explicit Euler's ghost: E = {}, E − books = {}",
+                n(euler.energy),
+                n(euler.residual)
+            ),
+        ],
+        None => {
+            vec!["the ghosts (G) step seed and explicit Euler from the same start".to_owned()]
         }
-        Equation::Ledger => {
-            let books = q.ledger.expected();
-            vec![
-                format!(
-                    "books: E₀ + W_hand − W_damp = {} + {} − {} = {}",
-                    n(q.ledger.initial),
-                    f_(q.ledger.work_in),
-                    f_(q.ledger.dissipated),
-                    n(books)
-                ),
-                format!(
-                    "E after the step − books = {}: the error of {}",
-                    n(q.settled_energy - books),
-                    q.integrator.name()
-                ),
-            ]
-        }
-        Equation::Update => {
-            // The `seed` integrator's own stages for the next step, in its order.
-            let s = &q.seed;
-            let after = s.after;
-            vec![
-                format!(
-                    "1  ω ← e^(−c dt) ω = {} × {} = {}   (c = {} /s)",
-                    n(s.damping_factor),
-                    f_(omega),
-                    n(s.damped_angular_velocity),
-                    n(q.angular_damping)
-                ),
-                format!(
-                    "2  a = (F_band + F_damp) / m = ({} + {}) / {m} = {}",
-                    v(s.band_force),
-                    v(s.damping_force),
-                    v(s.acceleration)
-                ),
-                format!(
-                    "3  α_band = τ_band / I = {} / {} = {}   (damping acted in line 1)",
-                    f_(s.torque),
-                    n(q.inertia),
-                    n(s.angular_acceleration)
-                ),
-                format!(
-                    "4  ω += α dt → {}   θ += ω dt → {}",
-                    n(after.angular.angular_velocity),
-                    n(after.angular.orientation)
-                ),
-                format!(
-                    "5  v += a dt → {}   x += v dt → {}   (dt = {} s)",
-                    v(after.linear.velocity),
-                    v(after.linear.position),
-                    n(q.dt)
-                ),
-            ]
-        }
-        Equation::UpdateOrder => match q.update_order {
-            Some([seed, euler]) => vec![
-                format!(
-                    "seed's ghost: E = {}, E − books = {}",
-                    n(seed.energy),
-                    n(seed.residual)
-                ),
-                format!(
-                    "explicit Euler's ghost: E = {}, E − books = {}",
-                    n(euler.energy),
-                    n(euler.residual)
-                ),
-            ],
-            None => {
-                vec!["the ghosts (G) step seed and explicit Euler from the same start".to_owned()]
-            }
-        },
     }
 }
