@@ -2073,8 +2073,8 @@ fn snapshot_kind(name: &str) -> &'static str {
 fn superseded_by(name: &str, listed: &[String]) -> Option<String> {
     let newest = listed
         .iter()
-        .filter(|other| snapshot_kind(other) == snapshot_kind(name) && !other.contains('/'))
-        .last()?;
+        .rev()
+        .find(|other| snapshot_kind(other) == snapshot_kind(name) && !other.contains('/'))?;
     (snapshot_name(newest) != name).then(|| snapshot_name(newest))
 }
 
