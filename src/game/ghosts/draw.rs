@@ -8,7 +8,7 @@ use super::{Ghost, GhostKind, Ghosts};
 use crate::game::camera::{SceneView, shown_area, world_per_pixel};
 use crate::game::schedule::ScreenSystems;
 use crate::game::simulation::RenderSnapshots;
-use crate::physics::{Integrator, SCENE_SIZE};
+use crate::physics::{BodyState, Integrator, SCENE_SIZE};
 
 /// Draws the ghosts and their names.
 pub struct GhostsDrawPlugin;
@@ -96,55 +96,12 @@ fn draw_ghosts(
         &mut Visibility,
     )>,
 ) {
-    let SceneView {
-        window,
-        viewport,
-        frame,
-    } = view;
     let alpha = fixed_time.overstep_fraction_f64().clamp(0.0, 1.0);
-    // Each ghost's name, in the list's order, written once a frame.
-    let names: Vec<String> = ghosts
-        .ghosts
-        .iter()
-        .map(|ghost| match ghost.diverged_at {
-            Some(step) => format!("{} diverged @{step}", ghost.kind.name()),
-            None => ghost.kind.name().to_owned(),
-        })
-        .collect();
+    let names = ghost_names(&ghosts);
     // However far the camera widens, the names keep their size on screen.
-    let font_size = GHOST_LABEL_SIZE.max(GHOST_LABEL_PIXELS * world_per_pixel(&frame));
-    let line = font_size * 1.2;
-    let shown = window
-        .as_deref()
-        .and_then(|window| shown_area(&frame, &viewport, window))
-        .unwrap_or(Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2()));
-    let widest = names.iter().map(String::len).max().unwrap_or(0) as f32 * font_size * 0.6;
-    // One column for every name, beside the reference, which follows the live box: a column
-    // beside each ghost's own outline would start a few px from the next one's, and the names
-    // of two ghosts close together would be drawn over each other.
-    let interpolated = |ghost: &Ghost| {
-        RenderSnapshots {
-            previous: ghost.previous,
-            current: ghost.stepper.state,
-        }
-        .interpolate(if ghost.diverged_at.is_some() {
-            1.0
-        } else {
-            alpha
-        })
-    };
-    // (Where the first name goes, the step to the next.) The list always holds the reference.
-    let column = ghosts
-        .ghosts
-        .iter()
-        .find(|ghost| ghost.kind == GhostKind::Reference)
-        .map(|reference| {
-            let beside = interpolated(reference).linear.position.as_vec2();
-            let reach = reference.stepper.mass.size().as_vec2().length() / 2.0 + 4.0;
-            let lines = ghosts.ghosts.len().saturating_sub(1);
-            let (first, step) = label_column(beside, reach, lines, (line, widest), shown);
-            (beside + first, step)
-        });
+    let font_size = GHOST_LABEL_SIZE.max(GHOST_LABEL_PIXELS * world_per_pixel(&view.frame));
+    let column = name_column(&ghosts, alpha, font_size, &names, &view);
+    let live = GhostKind::Method(*integrator);
     let mut unlabelled: Vec<GhostKind> = ghosts.ghosts.iter().map(|g| g.kind).collect();
     for (entity, label, mut text, mut font, mut transform, mut visibility) in &mut labels {
         let Some((index, ghost)) = ghosts
@@ -160,7 +117,7 @@ fn draw_ghosts(
         if font.font_size != FontSize::Px(font_size) {
             font.font_size = FontSize::Px(font_size);
         }
-        let hidden = ghost.kind == GhostKind::Method(*integrator);
+        let hidden = ghost.kind == live;
         visibility.set_if_neq(if hidden {
             Visibility::Hidden
         } else {
@@ -169,24 +126,7 @@ fn draw_ghosts(
         if hidden {
             continue;
         }
-        let state = interpolated(ghost);
-        let colour = ghost.kind.colour().with_alpha(0.8);
-        let centre = state.linear.position.as_vec2();
-        let rotation = Rot2::radians(state.angular.orientation as f32);
-        let size = ghost.stepper.mass.size().as_vec2();
-        gizmos.rect_2d(Isometry2d::new(centre, rotation), size, colour);
-        if let Some(band) = ghost.stepper.band {
-            let corner = band.attachment(&state).as_vec2();
-            gizmos.line_2d(corner, band.anchor.as_vec2(), colour.with_alpha(0.35));
-        }
-        if ghost.diverged_at.is_some() {
-            let half = size / 2.0;
-            for corner in [half, Vec2::new(half.x, -half.y)] {
-                let a = centre + rotation * corner;
-                let b = centre - rotation * corner;
-                gizmos.line_2d(a, b, colour);
-            }
-        }
+        draw_outline(&mut gizmos, ghost, interpolated(ghost, alpha));
         if text.0 != names[index] {
             text.0.clone_from(&names[index]);
         }
@@ -194,7 +134,7 @@ fn draw_ghosts(
         let place = ghosts
             .ghosts
             .iter()
-            .filter(|g| g.kind != GhostKind::Method(*integrator))
+            .filter(|g| g.kind != live)
             .position(|g| g.kind == ghost.kind)
             .unwrap_or(0);
         if let Some((first, step)) = column {
@@ -202,16 +142,98 @@ fn draw_ghosts(
         }
     }
     for kind in unlabelled {
-        commands.spawn((
-            Name::new("Ghost label"),
-            GhostLabel(kind),
-            Text2d::new(kind.name()),
-            TextFont::from_font_size(GHOST_LABEL_SIZE),
-            TextColor(kind.colour()),
-            Transform::default(),
-            Visibility::Hidden,
-        ));
+        commands.spawn(ghost_label(kind));
     }
+}
+
+/// Returns each ghost's name, in the list's order: a diverged one with the step it diverged at.
+fn ghost_names(ghosts: &Ghosts) -> Vec<String> {
+    ghosts
+        .ghosts
+        .iter()
+        .map(|ghost| match ghost.diverged_at {
+            Some(step) => format!("{} diverged @{step}", ghost.kind.name()),
+            None => ghost.kind.name().to_owned(),
+        })
+        .collect()
+}
+
+/// Returns a ghost's state drawn between its last two steps (where it froze, if diverged).
+fn interpolated(ghost: &Ghost, alpha: f64) -> BodyState {
+    RenderSnapshots {
+        previous: ghost.previous,
+        current: ghost.stepper.state,
+    }
+    .interpolate(if ghost.diverged_at.is_some() {
+        1.0
+    } else {
+        alpha
+    })
+}
+
+/// Returns where the names' column starts and the step to its next line, beside the reference.
+///
+/// One column for every name, beside the reference, which follows the live box: a column
+/// beside each ghost's own outline would start a few px from the next one's, and the names of
+/// two ghosts close together would be drawn over each other. The list always holds the
+/// reference.
+fn name_column(
+    ghosts: &Ghosts,
+    alpha: f64,
+    font_size: f32,
+    names: &[String],
+    view: &SceneView,
+) -> Option<(Vec2, Vec2)> {
+    let line = font_size * 1.2;
+    let shown = view
+        .window
+        .as_deref()
+        .and_then(|window| shown_area(&view.frame, &view.viewport, window))
+        .unwrap_or(Rect::from_center_size(Vec2::ZERO, SCENE_SIZE.as_vec2()));
+    let widest = names.iter().map(String::len).max().unwrap_or(0) as f32 * font_size * 0.6;
+    let reference = ghosts
+        .ghosts
+        .iter()
+        .find(|ghost| ghost.kind == GhostKind::Reference)?;
+    let beside = interpolated(reference, alpha).linear.position.as_vec2();
+    let reach = reference.stepper.mass.size().as_vec2().length() / 2.0 + 4.0;
+    let lines = ghosts.ghosts.len().saturating_sub(1);
+    let (first, step) = label_column(beside, reach, lines, (line, widest), shown);
+    Some((beside + first, step))
+}
+
+/// Draws a ghost's outline and band in its colour, crossed out if it diverged.
+fn draw_outline(gizmos: &mut Gizmos, ghost: &Ghost, state: BodyState) {
+    let colour = ghost.kind.colour().with_alpha(0.8);
+    let centre = state.linear.position.as_vec2();
+    let rotation = Rot2::radians(state.angular.orientation as f32);
+    let size = ghost.stepper.mass.size().as_vec2();
+    gizmos.rect_2d(Isometry2d::new(centre, rotation), size, colour);
+    if let Some(band) = ghost.stepper.band {
+        let corner = band.attachment(&state).as_vec2();
+        gizmos.line_2d(corner, band.anchor.as_vec2(), colour.with_alpha(0.35));
+    }
+    if ghost.diverged_at.is_some() {
+        let half = size / 2.0;
+        for corner in [half, Vec2::new(half.x, -half.y)] {
+            let a = centre + rotation * corner;
+            let b = centre - rotation * corner;
+            gizmos.line_2d(a, b, colour);
+        }
+    }
+}
+
+/// Returns a ghost's name label, hidden until the drawing places it.
+fn ghost_label(kind: GhostKind) -> impl Bundle {
+    (
+        Name::new("Ghost label"),
+        GhostLabel(kind),
+        Text2d::new(kind.name()),
+        TextFont::from_font_size(GHOST_LABEL_SIZE),
+        TextColor(kind.colour()),
+        Transform::default(),
+        Visibility::Hidden,
+    )
 }
 
 #[cfg(test)]

@@ -456,15 +456,14 @@ fn arrange(
         .registry
         .cards()
         .any(|card| cards.body_shows(card, shape, &offers));
-    let set = |node: &mut Mut<Node>, wanted: &dyn Fn(&mut Node)| {
-        let mut next = (**node).clone();
-        wanted(&mut next);
-        if **node != next {
-            **node = next;
-        }
+    // Folded, a wide window's dock is a strip of titles; open, a share of the window.
+    let open_width = if any_open {
+        px(dock_width(window.x / scale))
+    } else {
+        Val::Auto
     };
     for mut node in &mut nodes.p0() {
-        set(&mut node, &|n| {
+        set(&mut node, |n| {
             n.flex_direction = match shape {
                 Shape::Wide => FlexDirection::Row,
                 Shape::Tall => FlexDirection::Column,
@@ -472,67 +471,66 @@ fn arrange(
         });
     }
     for mut node in &mut nodes.p1() {
-        set(&mut node, &|n| {
-            n.display = if dock_hidden {
-                Display::None
-            } else {
-                Display::Flex
-            };
-            match shape {
-                Shape::Wide => {
-                    // Folded, a strip of titles; open, a share of the window.
-                    n.width = if any_open {
-                        px(dock_width(window.x / scale))
-                    } else {
-                        Val::Auto
-                    };
-                    n.height = percent(100);
-                    n.max_height = Val::Auto;
-                }
-                Shape::Tall => {
-                    n.width = percent(100);
-                    n.height = Val::Auto;
-                    n.max_height = percent(SHEET_SHARE * 100.0);
-                }
-            }
+        set(&mut node, |n| {
+            size_the_dock(n, shape, dock_hidden, open_width)
         });
     }
     for mut node in &mut nodes.p2() {
-        set(&mut node, &|n| {
-            n.display = match shape {
-                Shape::Wide => Display::None,
-                Shape::Tall => Display::Flex,
-            };
-        });
+        set(&mut node, |n| show(n, shape == Shape::Tall));
     }
     for (CardFrame(card), mut node) in &mut nodes.p3() {
         let shown = offers.offers(*card)
             && (shape == Shape::Wide || cards.body_shows(*card, shape, &offers));
-        set(&mut node, &|n| {
-            n.display = if shown { Display::Flex } else { Display::None };
-        });
+        set(&mut node, |n| show(n, shown));
     }
     for (slot, mut node) in &mut nodes.p4() {
         if let Slot::Card(card) = slot {
             let shows = cards.body_shows(*card, shape, &offers);
-            set(&mut node, &|n| {
-                n.display = if shows { Display::Flex } else { Display::None };
-            });
+            set(&mut node, |n| show(n, shows));
         }
     }
     for (CardButton(card), parent, mut background, mut node) in &mut nodes.p5() {
         let in_tabs = tabs.contains(parent.parent());
         // A tall window's card shows under its tab, without its own title.
         let shown = offers.offers(*card) && (in_tabs || shape == Shape::Wide);
-        set(&mut node, &|n| {
-            n.display = if shown { Display::Flex } else { Display::None };
-        });
+        set(&mut node, |n| show(n, shown));
         let lit = cards.body_shows(*card, shape, &offers);
         background.set_if_neq(BackgroundColor(if lit {
             colour::LIT
         } else {
             colour::CARD_TITLE
         }));
+    }
+}
+
+/// Changes a node as `wanted` does, writing it only if that changes it.
+fn set(node: &mut Mut<Node>, wanted: impl Fn(&mut Node)) {
+    let mut next = (**node).clone();
+    wanted(&mut next);
+    if **node != next {
+        **node = next;
+    }
+}
+
+/// Shows a node, or takes it out of the layout.
+fn show(node: &mut Node, shown: bool) {
+    node.display = if shown { Display::Flex } else { Display::None };
+}
+
+/// Sizes the dock: beside the scene on a wide window, a sheet under it on a tall one.
+fn size_the_dock(node: &mut Node, shape: Shape, hidden: bool, open_width: Val) {
+    show(node, !hidden);
+    match shape {
+        Shape::Wide => {
+            node.width = open_width;
+            node.height = percent(100);
+            node.max_height = Val::Auto;
+        }
+        Shape::Tall => {
+            node.width = percent(100);
+            node.height = Val::Auto;
+            node.max_height = percent(SHEET_SHARE * 100.0);
+        }
     }
 }
 

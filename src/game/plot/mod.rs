@@ -188,13 +188,110 @@ struct PlotTexts<'w, 's> {
     >,
 }
 
+impl PlotTexts<'_, '_> {
+    /// Says under the plot when the reference was capped, and hides the note otherwise.
+    fn note_the_reference(&mut self, capped: u64) {
+        for (mut text, mut node) in &mut self.notes {
+            let said = if capped > 0 {
+                format!("The reference was capped at {capped} steps: errors there are implicit's.")
+            } else {
+                String::new()
+            };
+            let display = if said.is_empty() {
+                Display::None
+            } else {
+                Display::Flex
+            };
+            if node.display != display {
+                node.display = display;
+            }
+            text.set_if_neq(Text(said));
+        }
+    }
+
+    /// Places the ticks' values, spaced so that none meets the next, and the axes' captions.
+    ///
+    /// Returns where they lie, for the names to keep clear of.
+    fn place_the_axes(&mut self, frame: Rect, size: Vec2, every: (i32, i32)) -> Vec<Rect> {
+        let caption = size::CAPTION;
+        let (across_every, up_every) = every;
+        let mut obstacles = Vec::new();
+        for (what, mut node) in &mut self.texts {
+            let rect = match *what {
+                PlotText::Across(decade) if (decade - ERROR_DECADES.0) % across_every == 0 => {
+                    let x = frame.min.x + along(ERROR_DECADES, 10f64.powi(decade), frame.width());
+                    let text = text_box(Vec2::ZERO, &decade_label(decade), caption);
+                    let left = (x - text.width() / 2.0).clamp(0.0, size.x - text.width());
+                    Some(text_box(
+                        Vec2::new(left, frame.max.y + 8.0),
+                        &decade_label(decade),
+                        caption,
+                    ))
+                }
+                PlotText::Up(decade) if (decade - COST_DECADES.0) % up_every == 0 => {
+                    let y = frame.max.y - along(COST_DECADES, 10f64.powi(decade), frame.height());
+                    let text = text_box(Vec2::ZERO, &decade_label(decade), caption);
+                    Some(text_box(
+                        Vec2::new(frame.min.x - 3.0 - text.width(), y - text.height() / 2.0),
+                        &decade_label(decade),
+                        caption,
+                    ))
+                }
+                PlotText::AcrossCaption => Some(text_box(
+                    Vec2::new(frame.min.x, size.y - 1.2 * caption - 1.0),
+                    "error from the reference, px →",
+                    caption,
+                )),
+                PlotText::UpCaption => Some(text_box(
+                    Vec2::new(2.0, 1.0),
+                    "↑ cost, ns per simulated second",
+                    caption,
+                )),
+                _ => None,
+            };
+            if let Some(rect) = rect {
+                obstacles.push(rect);
+            }
+            put(&mut node, rect);
+        }
+        obstacles
+    }
+
+    /// Names each point where its name fits clear of the axes' texts and of each other.
+    ///
+    /// Returns each point's place and its name's size, and where each name went.
+    fn name_the_points(
+        &mut self,
+        points: &[PlotPoint],
+        frame: Rect,
+        obstacles: &[Rect],
+    ) -> (Vec<(Vec2, Vec2)>, Vec<Rect>) {
+        let wanted: Vec<(Vec2, Vec2)> = points
+            .iter()
+            .map(|point| {
+                let size = text_box(Vec2::ZERO, &point.label(), size::CAPTION).size();
+                (place(point, frame), size)
+            })
+            .collect();
+        let places = place_labels(&wanted, frame.inflate(-1.0), obstacles);
+        for (label, mut text, mut node) in &mut self.labels {
+            let index = points.iter().position(|p| p.kind == label.0);
+            let name = index.map(|i| points[i].label()).unwrap_or_default();
+            text.set_if_neq(Text(name));
+            put(&mut node, index.map(|i| places[i]));
+        }
+        (wanted, places)
+    }
+}
+
+/// Draws the Speed against error card: its note, axes, ticks, names and points.
 fn draw_plot(
     mut gizmos: Gizmos<ChartGizmos>,
     window: Option<Single<&Window, With<PrimaryWindow>>>,
     ui_scale: Res<UiScale>,
     plotted: Plotted,
     canvases: Query<(&ComputedNode, &UiGlobalTransform), With<PlotCanvas>>,
-    plot_texts: PlotTexts,
+    mut plot_texts: PlotTexts,
 ) {
     let Plotted {
         overlays,
@@ -202,11 +299,6 @@ fn draw_plot(
         params,
         integrator,
     } = plotted;
-    let PlotTexts {
-        mut texts,
-        mut labels,
-        mut notes,
-    } = plot_texts;
     // A folded card's canvas has no size.
     let canvas = canvases
         .iter()
@@ -217,92 +309,35 @@ fn draw_plot(
         .iter()
         .find(|g| g.kind == GhostKind::Reference)
         .map_or(0, |g| g.capped);
-    for (mut text, mut node) in &mut notes {
-        let said = if capped > 0 {
-            format!("The reference was capped at {capped} steps: errors there are implicit's.")
-        } else {
-            String::new()
-        };
-        let display = if said.is_empty() {
-            Display::None
-        } else {
-            Display::Flex
-        };
-        if node.display != display {
-            node.display = display;
-        }
-        text.set_if_neq(Text(said));
-    }
+    plot_texts.note_the_reference(capped);
     let Some(canvas) = canvas else {
         return;
     };
     let size = canvas.size();
     let frame = plot_frame(size);
     let caption = size::CAPTION;
-
-    // The ticks' values, spaced so that none meets the next; the captions at the corners.
     let across_every = label_every(ERROR_DECADES, frame.width(), 6.0 * 0.602 * caption + 6.0);
     let up_every = label_every(COST_DECADES, frame.height(), 1.2 * caption + 2.0);
-    let mut obstacles = Vec::new();
-    for (what, mut node) in &mut texts {
-        let rect = match *what {
-            PlotText::Across(decade) if (decade - ERROR_DECADES.0) % across_every == 0 => {
-                let x = frame.min.x + along(ERROR_DECADES, 10f64.powi(decade), frame.width());
-                let text = text_box(Vec2::ZERO, &decade_label(decade), caption);
-                let left = (x - text.width() / 2.0).clamp(0.0, size.x - text.width());
-                Some(text_box(
-                    Vec2::new(left, frame.max.y + 8.0),
-                    &decade_label(decade),
-                    caption,
-                ))
-            }
-            PlotText::Up(decade) if (decade - COST_DECADES.0) % up_every == 0 => {
-                let y = frame.max.y - along(COST_DECADES, 10f64.powi(decade), frame.height());
-                let text = text_box(Vec2::ZERO, &decade_label(decade), caption);
-                Some(text_box(
-                    Vec2::new(frame.min.x - 3.0 - text.width(), y - text.height() / 2.0),
-                    &decade_label(decade),
-                    caption,
-                ))
-            }
-            PlotText::AcrossCaption => Some(text_box(
-                Vec2::new(frame.min.x, size.y - 1.2 * caption - 1.0),
-                "error from the reference, px →",
-                caption,
-            )),
-            PlotText::UpCaption => Some(text_box(
-                Vec2::new(2.0, 1.0),
-                "↑ cost, ns per simulated second",
-                caption,
-            )),
-            _ => None,
-        };
-        if let Some(rect) = rect {
-            obstacles.push(rect);
-        }
-        put(&mut node, rect);
-    }
-
-    // The names.
+    let obstacles = plot_texts.place_the_axes(frame, size, (across_every, up_every));
     let points = plot_points(&ghosts, params.step_rate_hz, *integrator);
-    let wanted: Vec<(Vec2, Vec2)> = points
-        .iter()
-        .map(|point| {
-            let size = text_box(Vec2::ZERO, &point.label(), caption).size();
-            (place(point, frame), size)
-        })
-        .collect();
-    let places = place_labels(&wanted, frame.inflate(-1.0), &obstacles);
-    for (label, mut text, mut node) in &mut labels {
-        let index = points.iter().position(|p| p.kind == label.0);
-        let name = index.map(|i| points[i].label()).unwrap_or_default();
-        text.set_if_neq(Text(name));
-        put(&mut node, index.map(|i| places[i]));
-    }
+    let (wanted, places) = plot_texts.name_the_points(&points, frame, &obstacles);
 
-    // The frame, the decades' ticks and the points, in window pixels.
+    // In window pixels.
     let window = window.map_or(Vec2::ONE, |window| window.size());
     let at = |point: Vec2| canvas.to_chart(point, window);
+    draw_the_frame(&mut gizmos, frame, across_every, &at);
+    for ((point, (anchor, _)), label) in points.iter().zip(&wanted).zip(&places) {
+        draw_a_point(&mut gizmos, point, (*anchor, *label), canvas.ui_scale, &at);
+    }
+}
+
+/// Draws the plot's frame and the decades' ticks, longer where a value is written.
+fn draw_the_frame(
+    gizmos: &mut Gizmos<ChartGizmos>,
+    frame: Rect,
+    across_every: i32,
+    at: &impl Fn(Vec2) -> Vec2,
+) {
     gizmos.linestrip_2d(
         [
             Vec2::new(frame.min.x, frame.min.y),
@@ -335,31 +370,39 @@ fn draw_plot(
             colour::FRAME,
         );
     }
-    let scale = canvas.ui_scale;
-    for ((point, (anchor, _)), label) in points.iter().zip(&wanted).zip(&places) {
-        let shade = point.kind.colour();
-        let centre = at(*anchor);
-        // A name moved off its point is tied to it, from its nearest edge.
-        let nearest = anchor.clamp(label.min, label.max);
-        if nearest.distance(*anchor) > 9.0 {
-            let from = *anchor + (nearest - *anchor).normalize_or_zero() * (MARK + 1.0);
-            gizmos.line_2d(at(from), at(nearest), shade.with_alpha(0.6));
-        }
-        match point.error {
-            Some(_) => {
-                gizmos.circle_2d(Isometry2d::from_translation(centre), 3.0 * scale, shade);
-                if point.live {
-                    gizmos.circle_2d(Isometry2d::from_translation(centre), 5.5 * scale, shade);
-                }
+}
+
+/// Draws one ghost's point, tied to its name when the name moved off it.
+///
+/// A dot (ringed for the live integrator), or a cross where it has no error yet.
+fn draw_a_point(
+    gizmos: &mut Gizmos<ChartGizmos>,
+    point: &PlotPoint,
+    (anchor, label): (Vec2, Rect),
+    scale: f32,
+    at: &impl Fn(Vec2) -> Vec2,
+) {
+    let shade = point.kind.colour();
+    let centre = at(anchor);
+    let nearest = anchor.clamp(label.min, label.max);
+    if nearest.distance(anchor) > 9.0 {
+        let from = anchor + (nearest - anchor).normalize_or_zero() * (MARK + 1.0);
+        gizmos.line_2d(at(from), at(nearest), shade.with_alpha(0.6));
+    }
+    match point.error {
+        Some(_) => {
+            gizmos.circle_2d(Isometry2d::from_translation(centre), 3.0 * scale, shade);
+            if point.live {
+                gizmos.circle_2d(Isometry2d::from_translation(centre), 5.5 * scale, shade);
             }
-            None => {
-                let arm = 4.0 * scale;
-                for (a, b) in [
-                    (Vec2::new(-arm, -arm), Vec2::new(arm, arm)),
-                    (Vec2::new(-arm, arm), Vec2::new(arm, -arm)),
-                ] {
-                    gizmos.line_2d(centre + a, centre + b, shade);
-                }
+        }
+        None => {
+            let arm = 4.0 * scale;
+            for (a, b) in [
+                (Vec2::new(-arm, -arm), Vec2::new(arm, arm)),
+                (Vec2::new(-arm, arm), Vec2::new(arm, -arm)),
+            ] {
+                gizmos.line_2d(centre + a, centre + b, shade);
             }
         }
     }

@@ -154,6 +154,7 @@ fn spawn_chapter_buttons(
     }
 }
 
+/// Spawns the Controls card's panel, row by row, and the dock's switch on the status line.
 fn spawn_panel(mut commands: Commands, slots: Slots) {
     // The dock's own switch stands on the status line, where a finger finds it with the dock
     // hidden.
@@ -168,93 +169,47 @@ fn spawn_panel(mut commands: Commands, slots: Slots) {
     let Some(card) = slots.card_body(Card::CONTROLS) else {
         return;
     };
-    let body = commands
-        .spawn((
-            Name::new("Panel"),
-            Node {
-                flex_direction: FlexDirection::Column,
-                padding: UiRect::all(px(space::PAD)),
-                ..default()
-            },
-            BackgroundColor(colour::CARD),
-            ChildOf(card),
-        ))
-        .id();
-
-    let row = spawn_row(&mut commands, body, "");
-    for (label, action) in [
-        ("pause", Action::TogglePause),
-        ("step", Action::Step),
-        ("reset", Action::Reset),
-        ("save", Action::Save),
-        ("open", Action::Open),
-        ("frame", Action::HomeView),
-        ("learn", Action::Learn),
-    ] {
-        spawn_button(&mut commands, row, label, PanelButton::Send(action));
-    }
-    let row = spawn_row(&mut commands, body, "method");
-    for integrator in Integrator::ALL {
-        let does = PanelButton::Send(Action::Integrator(integrator));
-        spawn_button(&mut commands, row, integrator.name(), does);
-    }
-    let row = spawn_row(&mut commands, body, "scene");
-    for (index, name) in Scene::NAMES.iter().enumerate() {
-        spawn_button(
-            &mut commands,
-            row,
-            name,
-            PanelButton::Send(Action::Scene(index)),
-        );
-    }
+    let body = commands.spawn((panel_body(), ChildOf(card))).id();
+    let commands = &mut commands;
+    spawn_buttons(
+        commands,
+        (body, ""),
+        [
+            ("pause", Action::TogglePause),
+            ("step", Action::Step),
+            ("reset", Action::Reset),
+            ("save", Action::Save),
+            ("open", Action::Open),
+            ("frame", Action::HomeView),
+            ("learn", Action::Learn),
+        ],
+    );
+    let methods = Integrator::ALL.map(|method| (method.name(), Action::Integrator(method)));
+    spawn_buttons(commands, (body, "method"), methods);
+    let scenes = (0..Scene::NAMES.len()).map(|index| (Scene::NAMES[index], Action::Scene(index)));
+    spawn_buttons(commands, (body, "scene"), scenes);
     for parameter in Parameter::ALL {
-        let row = spawn_row(&mut commands, body, parameter.name());
-        spawn_slider(&mut commands, row, parameter);
-        commands.spawn((
-            text(""),
-            ValueText::Parameter(parameter),
-            Node {
-                margin: UiRect::left(px(8)),
-                ..default()
-            },
-            ChildOf(row),
-        ));
+        spawn_slider_row(commands, body, parameter);
     }
-    for (title, readout, slower, faster) in [
-        (
-            "rate",
-            ValueText::StepRate,
-            Action::FewerSteps,
-            Action::MoreSteps,
-        ),
-        ("time", ValueText::TimeScale, Action::Slower, Action::Faster),
-    ] {
-        let row = spawn_row(&mut commands, body, title);
-        spawn_button(&mut commands, row, "÷2", PanelButton::Send(slower));
-        commands.spawn((
-            text(""),
-            readout,
-            Node {
-                min_width: px(80),
-                justify_content: JustifyContent::Center,
-                ..default()
-            },
-            ChildOf(row),
-        ));
-        spawn_button(&mut commands, row, "×2", PanelButton::Send(faster));
-    }
-    let row = spawn_row(&mut commands, body, "share");
-    for (label, action) in [
+    spawn_halve_and_double(
+        commands,
+        (body, "rate"),
+        ValueText::StepRate,
+        [Action::FewerSteps, Action::MoreSteps],
+    );
+    spawn_halve_and_double(
+        commands,
+        (body, "time"),
+        ValueText::TimeScale,
+        [Action::Slower, Action::Faster],
+    );
+    let share = [
         ("link", Action::ShareLink),
         ("game link", Action::ShareGame),
-    ] {
-        spawn_button(&mut commands, row, label, PanelButton::Send(action));
-    }
-    let row = spawn_row(&mut commands, body, "show");
-    for overlay in Overlay::ALL {
-        let button = PanelButton::Send(Action::Toggle(overlay));
-        spawn_button(&mut commands, row, overlay.name(), button);
-    }
+    ];
+    spawn_buttons(commands, (body, "share"), share);
+    let overlays = Overlay::ALL.map(|overlay| (overlay.name(), Action::Toggle(overlay)));
+    spawn_buttons(commands, (body, "show"), overlays);
     // Under the buttons, every key: the card is the panel's, whole.
     commands.spawn((
         Name::new("Keys"),
@@ -262,6 +217,68 @@ fn spawn_panel(mut commands: Commands, slots: Slots) {
         card_line(help_line(), theme::text_font(size::CAPTION), DIM),
         ChildOf(card),
     ));
+}
+
+/// Returns the panel's column of rows.
+fn panel_body() -> impl Bundle {
+    (
+        Name::new("Panel"),
+        Node {
+            flex_direction: FlexDirection::Column,
+            padding: UiRect::all(px(space::PAD)),
+            ..default()
+        },
+        BackgroundColor(colour::CARD),
+    )
+}
+
+/// Spawns a row of the panel, titled, with a button for each (label, action).
+fn spawn_buttons<'a>(
+    commands: &mut Commands,
+    (body, title): (Entity, &str),
+    buttons: impl IntoIterator<Item = (&'a str, Action)>,
+) {
+    let row = spawn_row(commands, body, title);
+    for (label, action) in buttons {
+        spawn_button(commands, row, label, PanelButton::Send(action));
+    }
+}
+
+/// Spawns a parameter's row: its slider and the value it holds.
+fn spawn_slider_row(commands: &mut Commands, body: Entity, parameter: Parameter) {
+    let row = spawn_row(commands, body, parameter.name());
+    spawn_slider(commands, row, parameter);
+    commands.spawn((
+        text(""),
+        ValueText::Parameter(parameter),
+        Node {
+            margin: UiRect::left(px(8)),
+            ..default()
+        },
+        ChildOf(row),
+    ));
+}
+
+/// Spawns a row that halves and doubles a value, shown between its two buttons.
+fn spawn_halve_and_double(
+    commands: &mut Commands,
+    (body, title): (Entity, &str),
+    readout: ValueText,
+    [halve, double]: [Action; 2],
+) {
+    let row = spawn_row(commands, body, title);
+    spawn_button(commands, row, "÷2", PanelButton::Send(halve));
+    commands.spawn((
+        text(""),
+        readout,
+        Node {
+            min_width: px(80),
+            justify_content: JustifyContent::Center,
+            ..default()
+        },
+        ChildOf(row),
+    ));
+    spawn_button(commands, row, "×2", PanelButton::Send(double));
 }
 
 /// The Controls card's line of every key and what it does (`controls::help_line`).
