@@ -469,6 +469,48 @@ fn a_side_root_two_times_as_long_does_the_inertias_task() {
     );
 }
 
+/// Leaving learn mode puts back what each plugin kept beside the scene: the dock, the cards,
+/// `auto`'s settings, the clock's pace and pause, and the fixed clock's step.
+#[test]
+fn leaving_learn_mode_puts_back_the_dock_the_cards_and_the_clocks() {
+    use rubber_band_box::game::layout::Cards;
+    use rubber_band_box::game::shared::DockHidden;
+    use rubber_band_box::physics::AutoSettings;
+    let mut game = Game::stepping();
+    game.update(2);
+    game.tap_key(key(Action::ToggleDock));
+    game.tap_key(key(Action::Slower));
+    game.tap_key(key(Action::FewerSteps));
+    game.update(2);
+    game.tap_key(key(Action::TogglePause));
+    game.update(2);
+    game.world().insert_resource(AutoSettings {
+        tolerance: 1e-9,
+        ..AutoSettings::default()
+    });
+    let kept = |game: &mut Game| {
+        let world = game.world();
+        let clock = world.resource::<Time<Virtual>>();
+        (
+            world.resource::<DockHidden>().0,
+            world.resource::<Cards>().clone(),
+            *world.resource::<AutoSettings>(),
+            (clock.relative_speed_f64(), clock.is_paused()),
+            world.resource::<Time<Fixed>>().timestep(),
+        )
+    };
+    let before = kept(&mut game);
+    game.tap_key(key(Action::Learn));
+    game.update(2);
+    game.world().trigger(Learn::Next);
+    game.update(5);
+    assert_ne!(kept(&mut game), before, "the chapter shows its own");
+    game.tap_key(key(Action::Learn));
+    game.update(1);
+    assert_eq!(chapter_shown(game.world()), None);
+    assert_eq!(kept(&mut game), before);
+}
+
 #[test]
 fn leaving_learn_mode_puts_the_game_back_as_it_was() {
     let mut game = Game::stepping();
@@ -517,7 +559,8 @@ fn leaving_learn_mode_puts_the_game_back_as_it_was() {
 
 /// Learn mode is the state `Mode::Learn`: whatever sets it (here the state itself, as a plugin
 /// of the game might) enters at the chapter asked and saves the game, and whatever leaves it
-/// puts the game back. Save and restore live on the state's enter and exit, not in the control.
+/// puts the game back. Save and restore live on the state's transitions (each owner's, into and
+/// out of learn mode), not in the control.
 #[test]
 fn the_mode_state_saves_on_enter_and_restores_on_exit_whoever_sets_it() {
     let mut game = Game::stepping();

@@ -84,7 +84,6 @@ fn put_back<R: Resource + Clone>(mut commands: Commands, kept: Option<Res<KeptAc
 
 /// What the game is doing: played freely, or walking the tutorial's chapters.
 ///
-///
 /// Each plugin whose state learn mode changes keeps it across the mode ([`KeepAcrossLearn`]); a
 /// system that runs in one mode asks `in_state(Mode::Learn)`.
 #[derive(States, Debug, Default, Clone, Copy, PartialEq, Eq, Hash)]

@@ -479,3 +479,20 @@ fn decode(text: &str) -> String {
     }
     String::from_utf8_lossy(&out).into_owned()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Checks that an overlay's index is its place in `Overlay::ALL`.
+    ///
+    /// `ALL` lists the variants in the order they are declared; the ghosts come before the
+    /// plot, which turns them on.
+    #[test]
+    fn overlays_are_listed_in_their_order_the_ghosts_before_the_plot() {
+        for (at, overlay) in Overlay::ALL.into_iter().enumerate() {
+            assert_eq!(overlay.index(), at, "{overlay:?}");
+        }
+        assert!(Overlay::Ghosts.index() < Overlay::Plot.index());
+    }
+}

@@ -76,7 +76,7 @@ impl Card {
     pub const LEARN: Card = Card("learn");
 }
 
-/// Learn mode's chapters: the one shown, its prediction and experiment, the game to go back to.
+/// Learn mode's chapters: the one shown, its prediction and experiment, what each chapter taught.
 ///
 /// Whether the mode is on is the state [`Mode`], asked nowhere else.
 #[derive(Resource, Debug)]
@@ -270,7 +270,8 @@ fn stop_the_chapter(world: &mut World) {
     for band in bands {
         world.despawn(band);
     }
-    // The recorder notes the box put back as it notes any other change, and goes on.
+    // The recorder notes the box put back (in `OUT_OF_LEARN`, next) as it notes any other
+    // change, and says it goes on.
     say_it_goes_on(world);
 }
 

@@ -331,7 +331,7 @@ fn draw_plot(
     }
 }
 
-/// Draws the plot's frame and the decades' ticks, longer where a value is written.
+/// Draws the plot's frame and the decades' ticks, the error's longer where a value is written.
 fn draw_the_frame(
     gizmos: &mut Gizmos<ChartGizmos>,
     frame: Rect,
