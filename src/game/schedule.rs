@@ -5,8 +5,8 @@
 //! A frame, in order:
 //! 1. `RunFixedMainLoop`, before the fixed loop, [`GameSystems`] in this order, so that all
 //!    of it acts on the very next step: the pointer read, the input acted on, the controls
-//!    applied, the settings' consequences derived (a learn control runs Bevy's
-//!    `StateTransition` at once, so learn mode's `OnEnter` and `OnExit` act there too);
+//!    applied, the game's mode changed (Bevy's `StateTransition` run again here, so learn
+//!    mode's `OnEnter` and `OnExit` act before the steps), the settings' consequences derived;
 //! 2. `FixedUpdate`, zero or more times, [`PhysicsSystems`]: a playback's recorded inputs,
 //!    the observers of the step's inputs (the recorder, the ghosts, learn mode's twin), the
 //!    step (accumulate,
@@ -40,6 +40,12 @@ pub enum GameSystems {
     Input,
     /// The controls: each action writes the resource it controls, or triggers a reset.
     Controls,
+    /// Bevy's `StateTransition` run again, so a mode a control set is in place for the next step.
+    ///
+    /// Bevy runs it once a frame after `PreUpdate`, before the controls; here it runs a second
+    /// time, as Bevy's docs allow, so that learn mode's chapter (its `OnEnter`) and the game put
+    /// back (`OnExit`) act on this frame's steps. With no mode asked it does nothing.
+    ModeChange,
     /// What derives from the settings the controls wrote (the fixed clock's step).
     ApplySettings,
     /// The frame's budget for fixed steps opened, just before the loop (`budget`).
@@ -142,6 +148,12 @@ pub fn order_the_physics(app: &mut App) {
     );
 }
 
+/// Runs Bevy's state transition at this point of the frame ([`GameSystems::ModeChange`]).
+fn change_the_mode(world: &mut World) {
+    // Without Bevy's states (a physics-only app) there is no transition to run.
+    let _ = world.try_run_schedule(StateTransition);
+}
+
 /// Orders the rest of the frame, for the game.
 ///
 /// The fixed step's chain is the physics plugin's own call of [`order_the_physics`]. A press
@@ -155,6 +167,7 @@ pub fn order_the_frame(app: &mut App) {
                 GameSystems::ReadPointer,
                 GameSystems::Input,
                 GameSystems::Controls,
+                GameSystems::ModeChange,
                 GameSystems::ApplySettings,
                 GameSystems::Budget,
             )
@@ -162,6 +175,10 @@ pub fn order_the_frame(app: &mut App) {
                 .in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
             AfterStepsSystems::Conclude.in_set(RunFixedMainLoopSystems::AfterFixedMainLoop),
         ),
+    )
+    .add_systems(
+        RunFixedMainLoop,
+        change_the_mode.in_set(GameSystems::ModeChange),
     )
     .configure_sets(
         Update,

@@ -138,8 +138,9 @@ pub fn chapter_shown(world: &World) -> Option<usize> {
 
 /// Acts on a learn control at once, within the frame that sent it.
 ///
-/// Entering and leaving change [`Mode`] and run the state's transition there and then, so the
-/// chapter is in place before the frame's steps, as every other control is.
+/// Entering and leaving ask for a [`Mode`]; the frame's `GameSystems::ModeChange`, after the
+/// controls, runs Bevy's transition, so the chapter is in place before the frame's steps, as
+/// every other control is.
 fn learn(learn: On<Learn>, mut commands: Commands) {
     let asked = *learn;
     commands.queue(move |world: &mut World| {
@@ -204,13 +205,12 @@ fn enter_at(world: &mut World, index: usize) {
     switch_to(world, Mode::Learn);
 }
 
-/// Sets the mode and runs the state's transition now, `OnExit` and `OnEnter` included.
+/// Asks for the mode: Bevy's transition puts it in place, `OnExit` and `OnEnter` included.
 ///
-/// Bevy's own transition runs once a frame, before the fixed loop and so before the controls:
-/// left to it, a chapter would wait a frame, and its first steps would be the game's.
+/// The frame runs the transition after the controls (`GameSystems::ModeChange`), so the
+/// chapter is in place for this frame's steps.
 fn switch_to(world: &mut World, mode: Mode) {
     world.resource_mut::<NextState<Mode>>().set(mode);
-    world.run_schedule(StateTransition);
 }
 
 /// Shows the chapter asked as learn mode is entered.
