@@ -513,13 +513,15 @@ const keyboardAlone = async (p) => {
   await until(p, () => window.rubberBandBox?.focus === null, null, 5000);
   const start = boxCentre(await api(p));
   await p.keyboard.press("b");
+  // → held until the box has come 20 px right, however fast the frames come: held for less,
+  // the cursor can stop beside the grabbed corner and the band pull the box back.
   await p.keyboard.down("ArrowRight");
-  const pulling = await until(p, () => (document.getElementById("said")?.textContent ?? "").includes("A band pulls a corner"), null, 15000);
-  await p.keyboard.up("ArrowRight");
   const moved = await until(p, (x) => {
     const box = window.rubberBandBox?.box ?? [];
     return box.length > 0 && box.reduce((sum, c) => sum + c[0], 0) / box.length > x + 20;
   }, start?.[0] ?? 0, 15000);
+  await p.keyboard.up("ArrowRight");
+  const pulling = await until(p, () => (document.getElementById("said")?.textContent ?? "").includes("A band pulls a corner"), null, 15000);
   await p.screenshot({ path: path.join(screens, "keyboard-band.png") });
   await p.keyboard.press("b");
   const letGo = await until(p, () => (document.getElementById("said")?.textContent ?? "").includes("No band."), null, 15000);
