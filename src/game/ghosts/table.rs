@@ -7,7 +7,7 @@ use bevy::picking::Pickable;
 use bevy::prelude::*;
 
 use super::steppers::{GhostKind, Ghosts};
-use crate::game::layout::{Card, CardSpec, RegisterCard, Slots};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, show_node};
 use crate::game::shared::Overlay;
 use crate::game::stability::StabilityMargins;
 use crate::game::theme::{self, colour, size, space};
@@ -234,14 +234,7 @@ fn show_table(
         if text.0 != content {
             text.0 = content.to_owned();
         }
-        let display = if cell.row < table.len() {
-            Display::Flex
-        } else {
-            Display::None
-        };
-        if node.display != display {
-            node.display = display;
-        }
+        show_node(&mut node, cell.row < table.len());
         let ghost = cell
             .row
             .checked_sub(1)

@@ -476,24 +476,24 @@ fn arrange(
         });
     }
     for mut node in &mut nodes.p2() {
-        set(&mut node, |n| show(n, shape == Shape::Tall));
+        show_node(&mut node, shape == Shape::Tall);
     }
     for (CardFrame(card), mut node) in &mut nodes.p3() {
         let shown = offers.offers(*card)
             && (shape == Shape::Wide || cards.body_shows(*card, shape, &offers));
-        set(&mut node, |n| show(n, shown));
+        show_node(&mut node, shown);
     }
     for (slot, mut node) in &mut nodes.p4() {
         if let Slot::Card(card) = slot {
             let shows = cards.body_shows(*card, shape, &offers);
-            set(&mut node, |n| show(n, shows));
+            show_node(&mut node, shows);
         }
     }
     for (CardButton(card), parent, mut background, mut node) in &mut nodes.p5() {
         let in_tabs = tabs.contains(parent.parent());
         // A tall window's card shows under its tab, without its own title.
         let shown = offers.offers(*card) && (in_tabs || shape == Shape::Wide);
-        set(&mut node, |n| show(n, shown));
+        show_node(&mut node, shown);
         let lit = cards.body_shows(*card, shape, &offers);
         background.set_if_neq(BackgroundColor(if lit {
             colour::LIT
@@ -512,14 +512,17 @@ fn set(node: &mut Mut<Node>, wanted: impl Fn(&mut Node)) {
     }
 }
 
-/// Shows a node, or takes it out of the layout.
-fn show(node: &mut Node, shown: bool) {
-    node.display = if shown { Display::Flex } else { Display::None };
+/// Shows a node or takes it out of the layout, writing it only if that changes it.
+pub(crate) fn show_node(node: &mut Mut<Node>, shown: bool) {
+    let display = if shown { Display::Flex } else { Display::None };
+    if node.display != display {
+        node.display = display;
+    }
 }
 
 /// Sizes the dock: beside the scene on a wide window, a sheet under it on a tall one.
 fn size_the_dock(node: &mut Node, shape: Shape, hidden: bool, open_width: Val) {
-    show(node, !hidden);
+    node.display = if hidden { Display::None } else { Display::Flex };
     match shape {
         Shape::Wide => {
             node.width = open_width;

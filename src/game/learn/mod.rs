@@ -22,7 +22,7 @@ use self::equations::{GhostBooks, Quantities};
 use self::twin::{CentreTwin, TWIN_OFFSET};
 use crate::game::camera::{CameraFrame, Stage};
 use crate::game::ghosts::{GhostKind, Ghosts};
-use crate::game::layout::{Card, CardSpec, Cards, RegisterCard, Slots};
+use crate::game::layout::{Card, CardSpec, Cards, RegisterCard, Slots, show_node};
 use crate::game::pointer::Grip;
 use crate::game::replays::links::{ShareLink, publish};
 use crate::game::replays::playback::Playback;
@@ -609,14 +609,7 @@ fn show_chapter(
             Some(ChoiceButton(i)) => choices.get(*i).copied(),
             None => sums.then_some(""),
         };
-        let display = if label.is_some() {
-            Display::Flex
-        } else {
-            Display::None
-        };
-        if node.display != display {
-            node.display = display;
-        }
+        show_node(&mut node, label.is_some());
         if let Some(label) = label.filter(|label| !label.is_empty())
             && let Some(mut text) = children
                 .first()

@@ -17,7 +17,7 @@ use bevy::ui::UiGlobalTransform;
 use bevy::window::PrimaryWindow;
 
 use crate::game::ghosts::{GhostKind, Ghosts};
-use crate::game::layout::{Card, CardSpec, RegisterCard, Slots};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, show_node};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::chart::{Canvas, ChartGizmos, text_box};
 use crate::game::shared::{Overlay, Overlays};
@@ -197,14 +197,7 @@ impl PlotTexts<'_, '_> {
             } else {
                 String::new()
             };
-            let display = if said.is_empty() {
-                Display::None
-            } else {
-                Display::Flex
-            };
-            if node.display != display {
-                node.display = display;
-            }
+            show_node(&mut node, !said.is_empty());
             text.set_if_neq(Text(said));
         }
     }
