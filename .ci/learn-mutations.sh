@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Makes each of learn mode's claims false once (docs/learn.md#mutations-tried): applies a
-# mutation, runs tests/learn.rs, prints the tests that failed, and puts the file back with
+# mutation, runs tests/suite/learn.rs, prints the tests that failed, and puts the file back with
 # git checkout (so run it on a clean tree). Run: bash .ci/learn-mutations.sh
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -17,7 +17,7 @@ s=s.replace(a,b,1)
 open(p,'w').write(s)
 PY
   echo "== $name"
-  timeout 900 cargo test --no-fail-fast --test learn 2>&1 | grep -E "^test .*FAILED|error\[|test result"
+  timeout 900 cargo test --no-fail-fast --test suite learn:: 2>&1 | grep -E "^test .*FAILED|error\[|test result"
   git checkout -q "$file"
 }
 run "the diagonal pull off the diagonal by 10 px" src/physics/scenes.rs "vec![(0.0, held, DVec2::new(150.0, 150.0))]" "vec![(0.0, held, DVec2::new(150.0, 140.0))]"

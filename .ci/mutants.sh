@@ -1,18 +1,18 @@
 #!/usr/bin/env bash
 # Mutation scores (docs/testing.md, "Mutation testing"): cargo-mutants changes the code one
 # operator at a time and runs the tests against each change. Not part of CI: on the 2-core
-# machine a mutant takes 15 to 30 s (our crate rebuilt, the group's test targets linked), so
+# machine a mutant takes 15 to 30 s (our crate rebuilt, the test binary linked), so
 # all of src/physics (about 1150 mutants) takes hours and the game layer (about 380) two;
 # `--since COMMIT` tries only the functions changed since a run. Needs
 # `cargo install --locked cargo-mutants --version '^27'`.
 #
 # Two runs:
-# - core (the default): src/physics/ against the core's tests (tests/core.rs,
-#   tests/integrators.rs without the soak, tests/cli.rs, tests/stability.rs). Results in
+# - core (the default): src/physics/ against the core's tests (tests/suite's core,
+#   integrators without the soak, cli and stability). Results in
 #   mutants.out/core/.
 # - game: the game layer (src/game/input/controls.rs, the panel, src/game/pointer.rs,
 #   src/game/simulation.rs, the HUD and the Readouts and Energy cards), each file against the
-#   headless tests that drive it (the groups below). Results in mutants-game.out/, a folder a group.
+#   modules of headless tests that drive it (the groups below). Results in mutants-game.out/, a folder a group.
 # Each writes summary.csv beside its results (.ci/mutants-summary.sh): a row a group, the
 # score of the viable mutants; docs/testing.md shows a committed snapshot of it.
 #
@@ -54,13 +54,12 @@ if [ "$kind" = core ]; then
     if [ -d "$out/core" ]; then cp -r "$out/core" "$work/mutants.out"; fi
     (
         cd "$work"
-        # The targets go to the build as well as the test (-C): building every test target
-        # for each mutant would double its time. The soak would multiply it by ten (the
-        # invariant tests cover what it checks, over fewer steps).
+        # The target goes to the build as well as the test (-C), the modules to the test
+        # binary as filters. The soak would multiply the time by ten (the invariant tests
+        # cover what it checks, over fewer steps).
         cargo mutants --in-place --no-shuffle --timeout 15 \
-            -C --test=core -C --test=integrators -C --test=cli -C --test=stability \
-            "${since[@]}" "$@" \
-            -- -- --skip soak || true
+            -C --test=suite "${since[@]}" "$@" \
+            -- -- core:: integrators:: cli:: stability:: --skip soak || true
     )
     rm -rf "$out"
     mkdir -p "$out"
@@ -83,12 +82,19 @@ else
     mkdir -p "$out"
     baseline=run
     for group in "${groups[@]}"; do
-        files=() targets=()
+        files=() targets=() filters=()
         for file in ${group%%:*}; do files+=(--file "$file"); done
-        # `lib`: the tests beside the code (`#[cfg(test)]`), the rest integration targets.
+        # `lib`: the tests beside the code (`#[cfg(test)]`, all under `game::`), the rest
+        # modules of the one test binary, tests/suite (a filter each).
         for test in ${group##*:}; do
-            if [ "$test" = lib ]; then targets+=(-C --lib); else targets+=(-C "--test=$test"); fi
+            if [ "$test" = lib ]; then
+                targets+=(-C --lib)
+                filters+=("game::")
+            else
+                filters+=("$test::")
+            fi
         done
+        targets+=(-C --test=suite)
         name=$(basename "${group%% *}" .rs)
         if [ "$name" = mod ]; then name=$(basename "$(dirname "${group%% *}")"); fi
         if [ -d "$previous/$name" ]; then
@@ -98,7 +104,8 @@ else
         (
             cd "$work"
             cargo mutants --in-place --no-shuffle --timeout 60 --baseline "$baseline" \
-                "${targets[@]}" "${files[@]}" "${since[@]}" "$@" --output "$work/$name" || true
+                "${targets[@]}" "${files[@]}" "${since[@]}" "$@" --output "$work/$name" \
+                -- -- "${filters[@]}" || true
         )
         # With `--since`, a group whose files did not change has no mutants and no results.
         if [ -d "$work/$name/mutants.out" ]; then

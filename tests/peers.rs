@@ -1,7 +1,7 @@
 //! The peers' harness (`cargo test --features peers --test peers`): each engine holds the
 //! scene as we set it up, and our own contender is the core, step for step. CI runs these.
-#![cfg(feature = "peers")]
 
+#[path = "suite/common.rs"]
 mod common;
 
 use rubber_band_box::measure::peers::avian::Avian;

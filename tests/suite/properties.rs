@@ -1,9 +1,9 @@
 //! Property tests: random scenes, states, pulls and input sequences. Nothing panics, nothing
 //! non-finite reaches a component, there is never more than one band, and the default
 //! integrator never diverges. About 1e5 generated cases in all; set RBB_LONG=1 for ten times
-//! as many (`RBB_LONG=1 cargo test --release --test properties`).
+//! as many (`RBB_LONG=1 cargo test --release --test suite properties::`).
 
-mod common;
+use crate::common;
 
 use std::time::Duration;
 

@@ -3,7 +3,7 @@
 //! focused slider the arrows, and the game's key of the same name does not fire; Escape gives
 //! focus back to the scene, where every key works as before.
 
-mod common;
+use crate::common;
 
 use bevy::input::ButtonState;
 use bevy::input_focus::{InputFocus, InputFocusVisible};

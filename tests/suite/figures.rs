@@ -3,12 +3,12 @@
 //! - a generated block, a table rendered from a snapshot's CSV between
 //!   `<!-- figures: FILE; COLUMN=VALUE|VALUE; show=COLUMN:FORMAT:LABEL,... -->` and
 //!   `<!-- /figures -->`, which this test compares with what the CSV renders to today, and
-//!   rewrites when run as `RBB_WRITE_FIGURES=1 cargo test --test figures` (the one command that
+//!   rewrites when run as `RBB_WRITE_FIGURES=1 cargo test --test suite figures::` (the one command that
 //!   refreshes them after a new snapshot: point the marker at it);
 //! - a figure in prose, listed in [`QUOTED`] with the cell it comes from: the page must hold the
 //!   words, and the words the cell's value as the page prints it.
 
-mod pages;
+use crate::pages;
 
 use std::collections::HashMap;
 use std::fs;
@@ -262,7 +262,7 @@ fn every_generated_block_is_what_its_snapshot_renders() {
     assert!(
         stale.is_empty(),
         "generated figures differ from their snapshots in {}; refresh with \
-         RBB_WRITE_FIGURES=1 cargo test --test figures",
+         RBB_WRITE_FIGURES=1 cargo test --test suite figures::",
         stale.join(", ")
     );
 }

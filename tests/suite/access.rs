@@ -3,7 +3,7 @@
 //! range, every text is a label, the scene is described when it changes and only then, and
 //! the screen reader's requests act as the keys do.
 
-mod common;
+use crate::common;
 
 use accesskit::{Action, Role};
 use bevy::a11y::{AccessibilityNode, ActionRequest};

@@ -5,7 +5,7 @@
 //! recording that replays to another game is lost data. Then the messages of a replay that does
 //! not reach its hash: each says its own cause.
 
-mod common;
+use crate::common;
 
 use common::*;
 use rubber_band_box::game::input::controls::{Action, Parameter};

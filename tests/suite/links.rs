@@ -3,7 +3,7 @@
 //! recorded hash; every way into the game (a link, a replay file, `play`'s flags) is held to
 //! the game's ranges, and refused with the bound named, never with a panic.
 
-mod common;
+use crate::common;
 
 use std::process::Output;
 use std::time::Duration;
@@ -378,7 +378,7 @@ fn play_refuses_rates_out_of_range_and_a_missing_display_in_one_line() {
 
 /// How many seconds of a game fit in a link of 8 KB and of 64 KB (docs/links.md's table): a
 /// game at 100 Hz in which the hand moves every frame (60 a second), and one in which it
-/// pulls and lets go once a second. `cargo test --test links -- --nocapture link_sizes`.
+/// pulls and lets go once a second. `cargo test --test suite links::link_sizes -- --nocapture`.
 #[test]
 fn link_sizes() {
     for (name, hold) in [("moving every frame", 60), ("a pull a second", 30)] {

@@ -4,9 +4,9 @@
 //! the line or the key it is about.
 //!
 //! `RBB_FUZZ_CASES` sets the cases per property (a few hundred by default, for CI; the long
-//! run docs/testing.md quotes is `RBB_FUZZ_CASES=20000 cargo test --release --test fuzz`).
+//! run docs/testing.md quotes is `RBB_FUZZ_CASES=20000 cargo test --release --test suite fuzz::`).
 
-mod common;
+use crate::common;
 
 use std::time::Duration;
 

@@ -2,7 +2,7 @@
 //! gives the game's states to the bit; bad files are refused with the line and what is wrong,
 //! never a panic; saving never leaves a half-written file.
 
-mod common;
+use crate::common;
 
 use std::path::PathBuf;
 
@@ -660,7 +660,7 @@ fn cross_platform_replay() -> Replay {
 /// The fixture is the script above stepped natively, so its recorded hash is this platform's;
 /// the browser test steps it in the page and must read back the same hash
 /// (`.ci/web/browser-test.mjs`). A change to the core that moves a bit fails here first:
-/// regenerate with `UPDATE_FIXTURES=1 cargo test --test replay cross_platform`.
+/// regenerate with `UPDATE_FIXTURES=1 cargo test --test suite replay::cross_platform`.
 #[test]
 fn the_cross_platform_fixture_is_its_script_stepped_here() {
     let path =

@@ -4,7 +4,7 @@
 //! the messages winit would send, the cursor turned into world coordinates by a camera set up
 //! exactly as the game's.
 
-mod common;
+use crate::common;
 
 use common::*;
 

@@ -1,6 +1,6 @@
 //! The `simulate` command, run as a user runs it.
 
-mod common;
+use crate::common;
 
 use std::process::Output;
 

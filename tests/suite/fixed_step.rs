@@ -4,7 +4,7 @@
 //! ambiguities). Headless `App`s: `MinimalPlugins` plus the game without its screen, time
 //! driven by `TimeUpdateStrategy`.
 
-mod common;
+use crate::common;
 
 use common::*;
 

@@ -2,7 +2,7 @@
 //! before anything is put in place, so a bad one leaves the app as it was, and a replay given
 //! starts the game with its scene, settings and integrator.
 
-mod common;
+use crate::common;
 
 use common::scratch;
 

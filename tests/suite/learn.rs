@@ -3,7 +3,7 @@
 //! not through the code that writes them), to the last printed digit; each chapter's task
 //! passes under the action it asks for and not without it; leaving puts the game back.
 
-mod common;
+use crate::common;
 
 use bevy::input::ButtonState;
 use bevy::math::DVec2;

@@ -1,6 +1,6 @@
 //! The keyboard controls in the headless game: each one's effect on the state and the clock.
 
-mod common;
+use crate::common;
 
 use common::*;
 use rubber_band_box::game::input::controls::{CONTROLS, help_line, key_hint};

@@ -2,7 +2,7 @@
 //! the repository that exists and every anchor at one of its headings, none leaves the
 //! repository, and README stays an entrance.
 
-mod pages;
+use crate::pages;
 
 use std::fs;
 use std::path::{Component, Path, PathBuf};

@@ -602,7 +602,7 @@ fn autos_engine_converges_at_the_order_of_its_series_on_the_diagonal_pull() {
 /// The stiff pulls' reference states, from tests/fixtures/stiff_references.py (SciPy's DOP853
 /// at a tolerance of 1e-13, checked against 3e-14): (k, rate, ticks, state, agreement).
 fn stiff_references() -> Vec<(f64, f64, u64, BodyState, f64)> {
-    include_str!("fixtures/stiff_references.csv")
+    include_str!("../fixtures/stiff_references.csv")
         .lines()
         .skip(1)
         .map(|line| {
@@ -742,7 +742,7 @@ fn a_tighter_budget_makes_auto_fall_back_sooner() {
 
 /// The soak: 1e7 steps (28 simulated hours) of the default integrator on the undamped
 /// tutorial scene with the band held, part of `cargo test` (a few seconds). Its figures:
-/// `cargo test --test integrators soak -- --nocapture`. The bounds leave a wide margin over
+/// `cargo test --test suite integrators::soak -- --nocapture`. The bounds leave a wide margin over
 /// the figures measured (docs/testing.md, "Robustness"), far below what a slow drift would reach;
 /// `auto` must never fall back here.
 #[test]
@@ -837,7 +837,7 @@ fn the_ledger_residual_shrinks_with_dt_at_the_integrators_order() {
 /// The references with spin (tests/fixtures/spin_references.py): (case, release time, end
 /// time, state, how far its two solutions agree).
 fn spin_references() -> Vec<(String, f64, f64, BodyState, f64)> {
-    include_str!("fixtures/spin_references.csv")
+    include_str!("../fixtures/spin_references.csv")
         .lines()
         .skip(1)
         .map(|line| {

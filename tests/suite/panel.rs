@@ -3,7 +3,7 @@
 //! sliders set their parameter (refused values kept out), what it shows follows the game, and
 //! a press on it never grabs the box.
 
-mod common;
+use crate::common;
 
 use bevy::picking::pointer::PointerId;
 use bevy::ui_widgets::{SetSliderValue, SliderValue, SliderValueChange};

@@ -2,7 +2,7 @@
 //! corner nearest it and lets go. It is the mouse's band: the same entity, the same steps to
 //! the bit, the same recording, the same clamps.
 
-mod common;
+use crate::common;
 
 use bevy::input::ButtonState;
 use bevy::prelude::*;

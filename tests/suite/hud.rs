@@ -1,7 +1,7 @@
 //! The key(Action::ToggleDock), headless: its lines follow the simulation and the controls, and its energy lines
 //! and history agree with the physics.
 
-mod common;
+use crate::common;
 
 use common::*;
 use rubber_band_box::game::ghosts::table::GhostCell;

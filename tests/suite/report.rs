@@ -1,6 +1,6 @@
 //! The report's quick mode as CI's smoke test: it runs, and its files exist and parse.
 
-mod common;
+use crate::common;
 
 use std::ffi::OsStr;
 use std::fs;

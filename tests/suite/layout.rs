@@ -4,7 +4,7 @@
 //! lies in the window, and the viewport is the largest region. (The box in the viewport under
 //! a player's hand: tests/camera.rs.)
 
-mod common;
+use crate::common;
 
 use bevy::ecs::system::RunSystemOnce;
 use bevy::ui::{CalculatedClip, UiGlobalTransform};

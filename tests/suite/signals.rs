@@ -1,11 +1,11 @@
 //! What a player's Ctrl-C and a SIGTERM do to a recorded game: the game ends and the
 //! recording is saved. The test runs the game in a child process (this test binary again,
-//! running only `signalled_game`, headless: `GameLogicPlugin` with Bevy's Ctrl-C handler and
+//! running only `signals::signalled_game`, headless: `GameLogicPlugin` with Bevy's Ctrl-C handler and
 //! the game's SIGTERM handler, as `play --record` installs them), signals it once it has
 //! recorded some steps, and reads the file it saved.
 #![cfg(unix)]
 
-mod common;
+use crate::common;
 
 use std::io::{BufRead, BufReader};
 use std::process::{Command, Stdio};
@@ -60,7 +60,7 @@ fn signalled(signal: libc::c_int, name: &str) -> Replay {
     let mut child = Command::new(std::env::current_exe().unwrap())
         .args([
             "--exact",
-            "signalled_game",
+            "signals::signalled_game",
             "--nocapture",
             "--test-threads",
             "1",

@@ -1,7 +1,7 @@
 //! The game as a lab: the core's named scenes played in the game by number keys, and the
 //! ghosts (every integrator and a reference beside the live box, under the same band).
 
-mod common;
+use crate::common;
 
 use common::*;
 use rubber_band_box::game::ghosts::{GhostKind, Ghosts};

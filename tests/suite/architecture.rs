@@ -1102,7 +1102,7 @@ fn the_architecture_page_says_who_reads_whom_as_the_code_does() {
     }
     panic!(
         "docs/architecture.md's table of who reads whom is not the code's; rewrite it with \
-         RBB_WRITE_ROOMS=1 cargo test --test architecture, then read what changed:\n{table}"
+         RBB_WRITE_ROOMS=1 cargo test --test suite architecture::, then read what changed:\n{table}"
     );
 }
 

@@ -4,7 +4,7 @@
 //! in the colour its stretch gives, the ghosts' outlines in their colours, the vectors and the
 //! trail only when they are on.
 
-mod common;
+use crate::common;
 
 use std::any::TypeId;
 

@@ -11,11 +11,11 @@
 //! again. Other seeds, for as long as one likes (docs/testing.md):
 //!
 //! ```sh
-//! MONKEY_SEEDS=7,8,9 MONKEY_FRAMES=20000 cargo test --release --test monkey -- --nocapture
-//! MONKEY_SEEDS=random MONKEY_RUNS=50 cargo test --release --test monkey -- --nocapture
+//! MONKEY_SEEDS=7,8,9 MONKEY_FRAMES=20000 cargo test --release --test suite monkey:: -- --nocapture
+//! MONKEY_SEEDS=random MONKEY_RUNS=50 cargo test --release --test suite monkey:: -- --nocapture
 //! ```
 
-mod common;
+use crate::common;
 
 use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
 
@@ -424,7 +424,7 @@ fn run_seed(seed: u64, frames: usize) {
         eprintln!(
             "monkey seed {seed} failed after these inputs (the last 60 of {}):\n{}\n\
              its recording: {} ({written:?})\n\
-             again: MONKEY_SEEDS={seed} MONKEY_FRAMES={frames} cargo test --test monkey -- --nocapture",
+             again: MONKEY_SEEDS={seed} MONKEY_FRAMES={frames} cargo test --test suite monkey:: -- --nocapture",
             monkey.script.len(),
             monkey.script[tail..].join("\n"),
             saved.display(),

@@ -10,7 +10,7 @@
 //! The box's place on the window is read from the scene camera's transform and projection
 //! (as `screen::view` placed them) against the body's state.
 
-mod common;
+use crate::common;
 
 use common::*;
 use rubber_band_box::game::camera::{CameraFrame, MAX_WIDEN};
