@@ -1,7 +1,7 @@
 //! The game's shape at its smallest: a box pulled by a rubber band, on the crate's own core.
 //!
 //! - Components hold the box's linear state, angular state and mass properties.
-//! - In `FixedUpdate`, one system sums the band's and damping's force and torque, and the next
+//! - In `FixedUpdate`, one system sums the band's and damping's force and torque, then
 //!   integrates them over the step with the core's default integrator (`auto`).
 //! - An input system spawns the band entity on a press and despawns it on release.
 //! - Gizmos draw the box and the band.
@@ -13,7 +13,7 @@
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 use rubber_band_box::physics::{
-    AngularState, BandEnds, BodyState, Forces, Integrator, LinearState, MassProperties, SceneParams,
+    AngularState, BandEnds, BodyState, Integrator, LinearState, MassProperties, SceneParams,
 };
 
 fn main() {
@@ -37,22 +37,14 @@ impl Plugin for BandPlugin {
             .insert_resource(Time::<Fixed>::from_hz(scene.step_rate_hz))
             .add_systems(Startup, spawn_box)
             .add_systems(Update, grab_and_release)
-            .add_systems(FixedUpdate, (accumulate, integrate).chain());
+            .add_systems(FixedUpdate, step);
     }
 }
 
 /// Marks the box; its state and its mass are the core's own components.
 #[derive(Component)]
-#[require(LinearState, AngularState, Accumulated)]
+#[require(LinearState, AngularState)]
 pub struct RigidBox;
-
-/// What acts on the box during the current step: the summed forces and torques, and the band
-/// whose force the integrator evaluates again inside the step.
-#[derive(Component, Default)]
-pub struct Accumulated {
-    forces: Forces,
-    band: Option<BandEnds>,
-}
 
 /// The band, an entity of its own while the button is held: a spring of zero rest length from
 /// a corner of the box (`local_point`, in the box's frame) to the pointer (`anchor`).
@@ -106,42 +98,20 @@ fn grab_and_release(
     }
 }
 
-/// Sums the force and the torque on the box: the band's pull at its corner, and damping.
-fn accumulate(
-    scene: Res<SceneParams>,
-    band: Option<Single<&Band>>,
-    body: Single<(
-        &LinearState,
-        &AngularState,
-        &MassProperties,
-        &mut Accumulated,
-    )>,
-) {
-    let (linear, angular, mass, mut accumulated) = body.into_inner();
-    let band = band.map(|band| band.0);
-    let model = scene.force_model(*mass, band);
-    *accumulated = Accumulated {
-        forces: model.forces(&state(linear, angular)),
-        band,
-    };
-}
-
-/// Advances the box one fixed step under what `accumulate` summed.
-fn integrate(
+/// Sums the force and the torque on the box (the band's pull at its corner, and damping), then
+/// integrates them over the fixed step with the core's default integrator (`auto`).
+fn step(
     scene: Res<SceneParams>,
     time: Res<Time>,
-    body: Single<(
-        &mut LinearState,
-        &mut AngularState,
-        &MassProperties,
-        &Accumulated,
-    )>,
+    band: Option<Single<&Band>>,
+    body: Single<(&mut LinearState, &mut AngularState, &MassProperties)>,
 ) {
-    let (mut linear, mut angular, mass, accumulated) = body.into_inner();
+    let (mut linear, mut angular, mass) = body.into_inner();
     let mut next = state(&linear, &angular);
-    let model = scene.force_model(*mass, accumulated.band);
-    let dt = time.delta_secs_f64();
-    Integrator::default().step(&mut next, &model, accumulated.forces, dt);
+    // The band goes with the sum: `auto` evaluates its force again inside the step.
+    let model = scene.force_model(*mass, band.map(|band| band.0));
+    let sum = model.forces(&next);
+    Integrator::default().step(&mut next, &model, sum, time.delta_secs_f64());
     (*linear, *angular) = (next.linear, next.angular);
 }
 

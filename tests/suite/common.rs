@@ -185,6 +185,9 @@ impl Game {
                 ..default()
             });
         });
+        // Each test's app on its own thread: the test threads already keep every core busy,
+        // and the ambiguity check above holds all a multi-threaded executor could reorder.
+        rubber_band_box::game::simulation::run_single_threaded(&mut app);
         app.finish();
         app.cleanup();
         // The first update only starts the clock: it runs Startup and no fixed step.

@@ -145,3 +145,10 @@ fn a_band_held_moves_and_turns_the_box_as_the_core_steps_it() {
     app.update();
     assert!(bands(&mut app).is_empty(), "a release despawns the band");
 }
+
+/// The door stays short: what a Bevy reader reads before the 20,000 lines behind it.
+#[test]
+fn the_example_stays_under_150_lines() {
+    let lines = include_str!("../../examples/band.rs").lines().count();
+    assert!(lines <= 150, "examples/band.rs has {lines} lines");
+}

@@ -4,7 +4,7 @@
 //! the line or the key it is about.
 //!
 //! `RBB_FUZZ_CASES` sets the cases per property (a few hundred by default, for CI; the long
-//! run docs/testing.md quotes is `RBB_FUZZ_CASES=20000 cargo test --release --test suite fuzz::`).
+//! run docs/testing.md quotes is `RBB_FUZZ_CASES=20000 cargo test --test suite fuzz::`).
 
 use crate::common;
 

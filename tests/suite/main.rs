@@ -25,6 +25,7 @@ mod layout;
 mod learn;
 mod links;
 mod monkey;
+mod names;
 mod panel;
 mod play;
 mod pointer;
