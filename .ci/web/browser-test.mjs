@@ -148,7 +148,7 @@ const settle = async (p, timeout = 5000) => {
 // viewport's (a status line wrapped onto a second line when "behind" is added, the viewport
 // moved down under it): the two are read from one layout.
 const steady = async (p, tries = 10) => {
-  const shape = (s) => JSON.stringify([s.viewport, s.panel, (s.texts ?? []).map((t) => [t.text.length > 0, t.rect[0], t.rect[1], t.rect[3]])]);
+  const shape = (s) => JSON.stringify([s.viewport, s.panel, (s.texts ?? []).map((t) => [t.rect[0], t.rect[1], t.rect[3]])]);
   let before = await api(p);
   for (let i = 0; i < tries; i++) {
     await frames(p, 1);
