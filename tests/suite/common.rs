@@ -96,6 +96,35 @@ pub struct Game {
     pub window: Entity,
 }
 
+/// An app with no window and no renderer: `MinimalPlugins`, input, and window messages (a test
+/// spawns its own window), its clock advanced by `frame` each update.
+pub fn headless_app(frame: Duration) -> App {
+    let mut app = App::new();
+    app.add_plugins((
+        MinimalPlugins,
+        InputPlugin,
+        WindowPlugin {
+            primary_window: None,
+            exit_condition: ExitCondition::DontExit,
+            close_when_requested: false,
+            ..default()
+        },
+    ))
+    .insert_resource(TimeUpdateStrategy::ManualDuration(frame));
+    app
+}
+
+/// Sets `camera`'s computed values and `projection` for a window of `size`, as bevy_render's
+/// camera system would (the headless tests have no renderer to do it).
+pub fn compute_camera(camera: &mut Camera, projection: &mut Projection, size: UVec2) {
+    projection.update(size.x as f32, size.y as f32);
+    camera.computed.clip_from_view = projection.get_clip_from_view();
+    camera.computed.target_info = Some(RenderTargetInfo {
+        physical_size: size,
+        scale_factor: 1.0,
+    });
+}
+
 impl Game {
     /// A headless game whose every `update()` advances the clock by `frame`.
     pub fn new(frame: Duration) -> Self {
@@ -105,25 +134,14 @@ impl Game {
     /// [`Game::new`] with `extra` applied to the app after the game's plugins (a test's own
     /// systems), before its schedules are built.
     pub fn with(frame: Duration, extra: impl FnOnce(&mut App)) -> Self {
-        let mut app = App::new();
-        app.add_plugins((
-            MinimalPlugins,
-            InputPlugin,
-            WindowPlugin {
-                primary_window: None,
-                exit_condition: ExitCondition::DontExit,
-                close_when_requested: false,
-                ..default()
-            },
-            GameLogicPlugin,
-        ))
-        .insert_resource(TimeUpdateStrategy::ManualDuration(frame))
-        // The manual clock's frames keep every step they owe, however long the steps take on
-        // a loaded machine: the step counts a test asserts never vary (a test of the budget
-        // puts the wall back).
-        .insert_resource(FrameBudget::steps_only())
-        .init_resource::<AccumulatorAudit>()
-        .add_systems(FixedUpdate, audit_accumulators.after(PhysicsSystems::Step));
+        let mut app = headless_app(frame);
+        app.add_plugins(GameLogicPlugin)
+            // The manual clock's frames keep every step they owe, however long the steps take on
+            // a loaded machine: the step counts a test asserts never vary (a test of the budget
+            // puts the wall back).
+            .insert_resource(FrameBudget::steps_only())
+            .init_resource::<AccumulatorAudit>()
+            .add_systems(FixedUpdate, audit_accumulators.after(PhysicsSystems::Step));
 
         let window = app
             .world_mut()
@@ -144,13 +162,8 @@ impl Game {
             },
             ..OrthographicProjection::default_2d()
         });
-        projection.update(WINDOW.x as f32, WINDOW.y as f32);
         let mut camera = Camera::default();
-        camera.computed.clip_from_view = projection.get_clip_from_view();
-        camera.computed.target_info = Some(RenderTargetInfo {
-            physical_size: WINDOW,
-            scale_factor: 1.0,
-        });
+        compute_camera(&mut camera, &mut projection, WINDOW);
         app.world_mut().spawn((
             Camera2d,
             SceneCamera,
@@ -354,12 +367,7 @@ impl Game {
             .set(size.x as f32, size.y as f32);
         let mut cameras = self.world().query::<(&mut Camera, &mut Projection)>();
         for (mut camera, mut projection) in cameras.iter_mut(self.app.world_mut()) {
-            projection.update(size.x as f32, size.y as f32);
-            camera.computed.clip_from_view = projection.get_clip_from_view();
-            camera.computed.target_info = Some(RenderTargetInfo {
-                physical_size: size,
-                scale_factor: 1.0,
-            });
+            compute_camera(&mut camera, &mut projection, size);
         }
     }
 

@@ -6,18 +6,18 @@
 #[allow(dead_code)]
 mod band;
 
-use bevy::camera::RenderTargetInfo;
+use std::time::Duration;
+
 use bevy::input::ButtonState;
-use bevy::input::InputPlugin;
 use bevy::input::mouse::MouseButtonInput;
 use bevy::math::DVec2;
 use bevy::prelude::*;
-use bevy::time::TimeUpdateStrategy;
-use bevy::window::{ExitCondition, PrimaryWindow, WindowResolution};
+use bevy::window::{PrimaryWindow, WindowResolution};
 use rubber_band_box::physics::{
     AngularState, BandEnds, BodyState, LinearState, SceneParams, Stepper,
 };
 
+use crate::common::{compute_camera, headless_app};
 use band::{Band, BandPlugin};
 
 const WINDOW: UVec2 = UVec2::new(640, 480);
@@ -25,21 +25,8 @@ const WINDOW: UVec2 = UVec2::new(640, 480);
 /// The example's plugin in a headless app stepped 10 ms a frame, with a 640 x 480 window and a
 /// 2D camera at the origin as bevy_render would compute them: a window pixel is a world unit.
 fn app() -> (App, Entity) {
-    let mut app = App::new();
-    app.add_plugins((
-        MinimalPlugins,
-        InputPlugin,
-        WindowPlugin {
-            primary_window: None,
-            exit_condition: ExitCondition::DontExit,
-            close_when_requested: false,
-            ..default()
-        },
-        BandPlugin,
-    ))
-    .insert_resource(TimeUpdateStrategy::ManualDuration(
-        std::time::Duration::from_millis(10),
-    ));
+    let mut app = headless_app(Duration::from_millis(10));
+    app.add_plugins(BandPlugin);
     let window = app
         .world_mut()
         .spawn((
@@ -51,13 +38,8 @@ fn app() -> (App, Entity) {
         ))
         .id();
     let mut projection = Projection::Orthographic(OrthographicProjection::default_2d());
-    projection.update(WINDOW.x as f32, WINDOW.y as f32);
     let mut camera = Camera::default();
-    camera.computed.clip_from_view = projection.get_clip_from_view();
-    camera.computed.target_info = Some(RenderTargetInfo {
-        physical_size: WINDOW,
-        scale_factor: 1.0,
-    });
+    compute_camera(&mut camera, &mut projection, WINDOW);
     app.world_mut()
         .spawn((Camera2d, camera, projection, GlobalTransform::IDENTITY));
     // The first update starts the clock: Startup, and no fixed step.
