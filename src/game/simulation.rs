@@ -1,9 +1,9 @@
 //! The physics plugin: the box's state as components, the band as an entity, and the fixed
-//! step as one system in the frame's `schedule::PhysicsSystems::Step`: the hand's work booked,
-//! forces and torques accumulated, the integration (and what damping took out booked), then
-//! the results settled (render snapshots, the energy books settled, the step counted).
-//! A tap's band is the pointer's to remove after its step. It owns the body, the energy books and the step statistics, and puts them back on
-//! [`ResetScene`].
+//! step as one system in the frame's `schedule::PhysicsSystems::Step`: forces and torques
+//! accumulated, then the core's booked step (the hand's work and damping's share booked, a
+//! state the game cannot play refused), then the results settled (render snapshots, the
+//! energies, the step counted). A tap's band is the pointer's to remove after its step. It owns
+//! the body, the energy books and the step statistics, and puts them back on [`ResetScene`].
 //!
 //! Headless, and usable alone (the benchmarks and the side-by-side with the peers run it
 //! without the rest of the game). Every system is a thin loop over the numerical core in
@@ -20,8 +20,8 @@ use bevy::prelude::*;
 use crate::game::schedule::{self, GameSystems, PhysicsSystems};
 use crate::game::shared::{INTO_LEARN, KeepAcrossLearn, OUT_OF_LEARN};
 use crate::physics::{
-    AngularState, AutoSettings, BandEnds, BodyState, Energies, EnergyLedger, Forces, Integrator,
-    LinearState, MassProperties, SceneParams, damping_wrench,
+    AngularState, AutoSettings, BandEnds, BodyState, Books, Bound, Energies, Forces, Integrator,
+    LinearState, MassProperties, SceneParams, Stepper, damping_wrench,
 };
 
 pub struct SimulationPlugin;
@@ -174,19 +174,16 @@ pub struct StepStats {
     pub divergence: Option<(Integrator, u64)>,
 }
 
-/// The energy ledger of the game.
+/// The box's energy books, kept by the core's booked step ([`Books::step`]), and its energies.
 ///
 /// Between two steps only the player changes the energy (attaching, moving or releasing the band,
 /// changing k, resetting), so whatever the energy did between the end of one step and the start of
 /// the next is booked as the hand's work; damping's share comes from the integrator. The residual
-/// after each step is the integrator's error.
-#[derive(Resource, Debug, Default, Clone, Copy, PartialEq)]
+/// after each step ([`Books::residual`]) is the integrator's error.
+#[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Deref, DerefMut)]
 pub struct EnergyBooks {
-    pub ledger: EnergyLedger,
-    /// Mechanical energy right after the latest step; None before the first.
-    pub settled: Option<f64>,
-    /// The ledger's residual after the latest step.
-    pub residual: f64,
+    #[deref]
+    pub books: Books,
     /// The energies by kind right after the latest step.
     pub energies: Energies,
 }
@@ -451,23 +448,15 @@ struct StepRecords<'w> {
 /// It is one system because each system a step costs Bevy about as much again as the box's physics
 /// (docs/peers.md).
 fn step(settings: StepSettings, bands: Query<&Band>, mut bodies: Moving, mut records: StepRecords) {
-    accumulate(&settings.params, &bands, &mut bodies, &mut records.books);
+    accumulate(&settings.params, &bands, &mut bodies);
     integrate(&settings, &mut bodies, &mut records);
     settle(&settings.params, &bands, &bodies, &mut records);
 }
 
-/// Books the hand's work since the last step, then puts the band's force on each body.
+/// Puts the band's force on each body (one band a body).
 ///
-/// On each body the band's force k·(anchor − corner) acts at its corner, with its torque r × F (one
-/// band a body).
-fn accumulate(
-    params: &SceneParams,
-    bands: &Query<&Band>,
-    bodies: &mut Moving,
-    books: &mut EnergyBooks,
-) {
-    let before = mechanical_energies(params, &bodies.as_readonly(), bands).total();
-    books.ledger.open_step(books.settled, before);
+/// The force k·(anchor − corner) acts at its corner, with its torque r × F.
+fn accumulate(params: &SceneParams, bands: &Query<&Band>, bodies: &mut Moving) {
     for band in bands {
         let Ok(mut body) = bodies.get_mut(band.body) else {
             continue;
@@ -483,11 +472,12 @@ fn accumulate(
     }
 }
 
-/// Advances each body by the `Integrator` resource under what was accumulated and damping.
+/// Advances each body by the core's booked step under what was accumulated and damping.
 ///
-/// Damping adds −b·v and −c·I·ω. A step that would leave the state non-finite is refused (damping's
-/// share is booked otherwise). Either way the accumulator is emptied and the render snapshots move
-/// on.
+/// Damping adds −b·v and −c·I·ω. The step books the hand's work since the last one and damping's
+/// share, and refuses a state the game cannot play. Either way the accumulator is emptied and the
+/// render snapshots move on. The scene has one box, whose books the game keeps; the benchmarks'
+/// extra boxes share them.
 fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRecords) {
     let StepSettings {
         time,
@@ -501,27 +491,32 @@ fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRec
     stats.fell_back = false;
     let step = records.count.0 + 1;
     for mut body in bodies.iter_mut() {
-        let mut state = body.state();
+        let mut stepper = Stepper {
+            params: **params,
+            mass: *body.mass,
+            state: body.state(),
+            band: body.accumulator.band,
+            integrator: **integrator,
+            auto: **auto,
+        };
         let mut forces = body.accumulator.forces;
         forces.damping += damping_wrench(
-            &state,
+            &stepper.state,
             body.mass,
             params.linear_damping,
             params.angular_damping,
         );
-        let model = params.force_model(*body.mass, body.accumulator.band);
         *body.accumulator = ForceAccumulator::default();
-        let info = integrator.step_with(&mut state, &model, forces, dt, auto);
-        stats.substeps = stats.substeps.max(info.substeps);
-        stats.fell_back |= info.fell_back;
-        stats.fallbacks += u64::from(info.fell_back);
+        let booked = records
+            .books
+            .step(&mut stepper, forces, dt, Bound::Playable);
+        stats.substeps = stats.substeps.max(booked.info.substeps);
+        stats.fell_back |= booked.info.fell_back;
+        stats.fallbacks += u64::from(booked.info.fell_back);
         // A divergent explicit method (a stiff band) must not put NaN, infinity or an absurd
-        // value into a component, nor fling the box past where it can be drawn: refuse the
-        // step, keep the last playable state, and say so.
-        if state.is_playable() {
-            records.books.ledger.dissipated += info.dissipated;
-            body.set_state(state);
-        } else {
+        // value into a component, nor fling the box past where it can be drawn: the step is
+        // refused, the last playable state kept, and the game says so.
+        if booked.refused {
             if stats.divergence.is_none() {
                 warn!(
                     "integrator {} diverged at step {step}: step refused",
@@ -530,18 +525,14 @@ fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRec
             }
             stats.divergence = Some((**integrator, step));
         }
-        let now = body.state();
+        body.set_state(stepper.state);
         body.snapshots.previous = body.snapshots.current;
-        body.snapshots.current = now;
+        body.snapshots.current = stepper.state;
     }
 }
 
-/// Settles the energy books (the energies now, the ledger's residual) and counts the step.
+/// Keeps the energies by kind after the step, and counts the step.
 fn settle(params: &SceneParams, bands: &Query<&Band>, bodies: &Moving, records: &mut StepRecords) {
-    let books = &mut *records.books;
-    let energies = mechanical_energies(params, &bodies.as_readonly(), bands);
-    books.energies = energies;
-    books.settled = Some(energies.total());
-    books.residual = books.ledger.residual(energies.total());
+    records.books.energies = mechanical_energies(params, &bodies.as_readonly(), bands);
     records.count.0 += 1;
 }

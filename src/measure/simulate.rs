@@ -35,7 +35,7 @@ impl Row {
             band: run.stepper.band.is_some(),
             substeps: run.last_step.substeps,
             fallbacks: run.fallbacks,
-            residual: run.ledger.residual(run.stepper.energy()),
+            residual: run.books.residual(),
         }
     }
 

@@ -27,4 +27,4 @@ pub use scene::{
     STEP_RATE_RANGE, STIFFNESS_RANGE, SceneParams, TIME_SCALE_RANGE,
 };
 pub use scenes::{Diverged, Pull, Run, Scene};
-pub use stepper::Stepper;
+pub use stepper::{Booked, Books, Bound, Stepper};

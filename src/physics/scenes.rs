@@ -6,11 +6,10 @@ use std::fmt;
 use bevy::math::DVec2;
 
 use super::body::{BodyState, STATE_LIMIT};
-use super::energy::EnergyLedger;
 use super::integrators::{Integrator, StepInfo};
 use super::param_error::ParamError;
 use super::scene::SceneParams;
-use super::stepper::Stepper;
+use super::stepper::{Books, Bound, Stepper};
 
 /// A pull of the band toward `target` during steps `start <= s < end`.
 ///
@@ -263,7 +262,7 @@ pub struct Run {
     pub last_step: StepInfo,
     pub fallbacks: u64,
     /// Where the energy came from and went; its residual is the integrator's error.
-    pub ledger: EnergyLedger,
+    pub books: Books,
 }
 
 impl Run {
@@ -306,7 +305,7 @@ impl Run {
             energy_budget,
             last_step: StepInfo::SINGLE,
             fallbacks: 0,
-            ledger: EnergyLedger::starting_at(energy_budget),
+            books: Books::starting_at(energy_budget),
         };
         run.apply_pulls();
         if !run.energy_budget.is_finite() {
@@ -334,51 +333,49 @@ impl Run {
     }
 
     /// Attaches or releases the band as the pulls say for the coming step.
+    ///
+    /// The next step books the band's energy it puts in or takes away as the hand's work.
     fn apply_pulls(&mut self) {
         let Some(change) = self.schedule.change_at(self.step) else {
             return;
         };
-        let band_energy = |stepper: &Stepper| {
-            stepper.band.map_or(0.0, |band| {
-                band.potential_energy(&stepper.state, stepper.params.stiffness)
-            })
-        };
-        // The hand takes the old band's energy away and puts the new one's in.
-        self.ledger.hand(-band_energy(&self.stepper));
         match change {
             BandChange::Grab(target) => {
                 self.stepper.grab(target);
-                let attached = band_energy(&self.stepper);
-                self.energy_budget += attached;
-                self.ledger.hand(attached);
+                if let Some(band) = self.stepper.band {
+                    self.energy_budget +=
+                        band.potential_energy(&self.stepper.state, self.stepper.params.stiffness);
+                }
             }
             BandChange::Release => self.stepper.release(),
         }
     }
 
-    /// Advances the run by one step, refusing a step that diverges.
+    /// Advances the run by one booked step, refusing a step that diverges.
     ///
     /// A step that leaves the state not sane or its energy beyond every physical bound is
     /// refused, as the game refuses it: `Err` names it (the first such step), and the run stays
     /// as it was before it (the last sane state, its books and counters).
     pub fn advance(&mut self) -> Result<(), Diverged> {
-        let before = self.stepper.state;
-        let info = self.stepper.step(self.dt);
-        let energy = self.stepper.energy();
-        if !self.stepper.state.is_sane()
+        let kept = (self.stepper.state, self.books);
+        let start = self.stepper.model().forces(&self.stepper.state);
+        let booked = self
+            .books
+            .step(&mut self.stepper, start, self.dt, Bound::Sane);
+        let energy = self.books.settled.unwrap_or(f64::NAN);
+        if booked.refused
             || !energy.is_finite()
             || energy > DIVERGENCE_FACTOR * self.energy_budget + 1.0
         {
-            self.stepper.state = before;
+            (self.stepper.state, self.books) = kept;
             return Err(Diverged {
                 integrator: self.stepper.integrator,
                 step: self.step + 1,
                 time: (self.step + 1) as f64 * self.dt,
             });
         }
-        self.last_step = info;
-        self.ledger.dissipated += info.dissipated;
-        self.fallbacks += u64::from(info.fell_back);
+        self.last_step = booked.info;
+        self.fallbacks += u64::from(booked.info.fell_back);
         self.step += 1;
         self.apply_pulls();
         Ok(())

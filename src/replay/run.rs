@@ -1,11 +1,10 @@
 //! A replay stepped again with the core, exactly as the game stepped it: the same band at
-//! each step, the settings and resets where the controls made them, a step that would leave
-//! the state unplayable (not sane, or the box past the drawable world) refused (the state
-//! kept, the replay going on), and the energy books kept
-//! as the game keeps them. With the recorded integrator it gives the game's states to the bit.
+//! each step, the settings and resets where the controls made them, and the core's booked
+//! step, as the game takes it (a state past the playable bound refused, the replay going on).
+//! With the recorded integrator it gives the game's states to the bit.
 
 use crate::physics::{
-    AutoSettings, BandEnds, BodyState, EnergyLedger, Integrator, ParamError, StepInfo, Stepper,
+    AutoSettings, BandEnds, BodyState, Books, Bound, Integrator, ParamError, StepInfo, Stepper,
 };
 
 use super::{Integrity, Record, Replay, TrajectoryHash, made_by};
@@ -41,9 +40,8 @@ pub struct ReplayRun<'a> {
     pub fallbacks: u64,
     /// The latest step refused because its state was not sane, if any.
     pub refused: Option<u64>,
-    pub ledger: EnergyLedger,
-    /// Mechanical energy right after the latest step (None at the start and after a reset).
-    settled: Option<f64>,
+    /// The energy books (started over at a reset).
+    pub books: Books,
     pub hash: TrajectoryHash,
     /// Steps of the integrator per recorded step (1: as the game stepped).
     substeps: u32,
@@ -77,8 +75,7 @@ impl<'a> ReplayRun<'a> {
             last_step: StepInfo::SINGLE,
             fallbacks: 0,
             refused: None,
-            ledger: EnergyLedger::default(),
-            settled: None,
+            books: Books::default(),
             hash: TrajectoryHash::default(),
             substeps: 1,
             departure: None,
@@ -116,7 +113,7 @@ impl<'a> ReplayRun<'a> {
                 Record::Reset { step } => {
                     self.stepper.state = BodyState::from_array(self.replay.header.initial);
                     self.stepper.band = None;
-                    self.settled = None;
+                    self.books.settled = None;
                     self.refused = None;
                     self.fallbacks = 0;
                     self.latest_change = Some(("a reset", *step));
@@ -145,38 +142,39 @@ impl<'a> ReplayRun<'a> {
                 }
                 Record::Check { step, state } => self.check(*step, state),
                 Record::Step { band, .. } => {
-                    return Some(self.step_with(band.map(BandEnds::from)));
+                    return Some(self.step_under(band.map(BandEnds::from)));
                 }
                 Record::End { .. } => return None,
             }
         }
     }
 
-    /// Takes one step as the game's fixed step takes it.
-    fn step_with(&mut self, band: Option<BandEnds>) -> StepInfo {
+    /// Takes one step as the game's fixed step takes it: the core's booked step.
+    ///
+    /// A state past the playable bound is refused, as the game refuses it.
+    ///
+    /// A step split into parts is that many booked steps under the same band.
+    fn step_under(&mut self, band: Option<BandEnds>) -> StepInfo {
         self.stepper.band = band;
-        self.ledger.open_step(self.settled, self.stepper.energy());
-        let before = self.stepper.state;
-        let step = self.dt / f64::from(self.substeps);
+        let part = self.dt / f64::from(self.substeps);
         let mut info = StepInfo::default();
         for _ in 0..self.substeps {
-            let taken = self.stepper.step(step);
-            info.substeps += taken.substeps;
-            info.evaluations += taken.evaluations;
-            info.fell_back |= taken.fell_back;
-            info.dissipated += taken.dissipated;
+            let start = self.stepper.model().forces(&self.stepper.state);
+            let booked = self
+                .books
+                .step(&mut self.stepper, start, part, Bound::Playable);
+            info.substeps += booked.info.substeps;
+            info.evaluations += booked.info.evaluations;
+            info.fell_back |= booked.info.fell_back;
+            info.dissipated += booked.info.dissipated;
+            if booked.refused {
+                self.refused = Some(self.step + 1);
+            }
         }
         self.fallbacks += u64::from(info.fell_back);
         self.step += 1;
         self.time += self.dt;
-        if self.stepper.state.is_playable() {
-            self.ledger.dissipated += info.dissipated;
-        } else {
-            self.stepper.state = before;
-            self.refused = Some(self.step);
-        }
         self.last_step = info;
-        self.settled = Some(self.stepper.energy());
         self.hash.add(&self.stepper.state);
         info
     }
@@ -286,7 +284,7 @@ impl<'a> ReplayRun<'a> {
 
     /// Returns the ledger's residual after the latest step: the integrator's energy error.
     pub fn residual(&self) -> f64 {
-        self.ledger.residual(self.stepper.energy())
+        self.books.residual()
     }
 
     /// Plays every remaining step and returns the hash of all the states.

@@ -1184,3 +1184,54 @@ fn the_core_takes_from_bevy_only_its_maths_and_two_derives() {
         ["physics::body: bevy::prelude::App"]
     );
 }
+
+/// Returns each line outside the core's stepper that steps an integrator or opens the books.
+///
+/// The core's booked step (`Books::step` in src/physics/stepper.rs) is the one step with its
+/// books: a second one would keep them its own way.
+fn second_steps(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
+    let mut found = Vec::new();
+    for (path, code) in files {
+        let file = path.to_string_lossy().replace('\\', "/");
+        let core = [
+            "physics/stepper.rs",
+            "physics/energy.rs",
+            "physics/integrators/",
+        ];
+        if core.iter().any(|part| file.starts_with(part)) {
+            continue;
+        }
+        for (n, line) in code.lines().enumerate() {
+            let line = line.trim_start();
+            if line.starts_with("//") {
+                continue;
+            }
+            if [".open_step(", ".step_with(", ".step_from("]
+                .iter()
+                .any(|call| line.contains(call))
+            {
+                found.push(format!("{file}:{}: {line}", n + 1));
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn the_step_and_its_books_are_written_once_in_the_core() {
+    let found = second_steps(&source_files());
+    assert!(
+        found.is_empty(),
+        "steps outside the booked step:\n{}",
+        found.join("\n")
+    );
+}
+
+#[test]
+fn the_step_check_finds_a_second_booked_step() {
+    let file = (
+        std::path::PathBuf::from("game/ghosts/steppers.rs"),
+        "fn step(&mut self) {\n    self.ledger.open_step(self.settled, now);\n}\n".to_owned(),
+    );
+    assert_eq!(second_steps(&[file]).len(), 1);
+}

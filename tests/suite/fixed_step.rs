@@ -334,7 +334,7 @@ fn the_games_energy_books_balance_to_the_integrators_error() {
         game.update(80);
         let books = *game.world().resource::<EnergyBooks>();
         assert!(books.ledger.work_moved > 0.0 && books.ledger.dissipated > 0.0);
-        books.residual.abs() / books.ledger.throughput()
+        books.residual().abs() / books.ledger.throughput()
     };
     let auto = residual_of(Integrator::Auto);
     assert!(auto < 1e-9, "auto: {auto}");

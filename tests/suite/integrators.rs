@@ -714,12 +714,12 @@ fn the_ledger_balances_on_stiff_pulls_where_auto_did_not_fall_back() {
         let mut run = Run::of(&scene, Integrator::Auto, 1.0 / rate).unwrap();
         for _ in 0..ticks {
             run.advance().unwrap();
-            let residual = run.ledger.residual(run.stepper.energy()).abs();
+            let residual = run.books.residual().abs();
             assert!(
-                residual <= 1e-6 * run.ledger.throughput(),
+                residual <= 1e-6 * run.books.ledger.throughput(),
                 "k {k:e} step {}: residual {residual} of {}",
                 run.step,
-                run.ledger.throughput()
+                run.books.ledger.throughput()
             );
         }
         assert_eq!(run.fallbacks, 0);
@@ -783,9 +783,9 @@ fn ledger_residual(integrator: Integrator, dt: f64) -> f64 {
     let mut worst: f64 = 0.0;
     for _ in 0..(4.0 / dt).round() as u64 {
         run.advance().unwrap();
-        worst = worst.max(run.ledger.residual(run.stepper.energy()).abs());
+        worst = worst.max(run.books.residual().abs());
     }
-    worst / run.ledger.throughput()
+    worst / run.books.ledger.throughput()
 }
 
 #[test]
@@ -801,9 +801,9 @@ fn the_ledger_balances_exactly_where_nothing_acts() {
         let mut run = Run::new(params, initial, vec![], integrator, 0.01).unwrap();
         run.advance_by(500).unwrap();
         // Zero to round-off (`implicit` recovers the velocity from two positions).
-        let residual = run.ledger.residual(run.stepper.energy());
+        let residual = run.books.residual();
         assert!(
-            residual.abs() <= 1e-13 * run.ledger.initial,
+            residual.abs() <= 1e-13 * run.books.ledger.initial,
             "{integrator}: {residual}"
         );
     }

@@ -1087,7 +1087,7 @@ fn claim_7_the_tutorials_order_keeps_the_energy_bounded_and_explicit_euler_gains
         let mut errors = Vec::new();
         for _ in 0..(60.0 / dt) as usize {
             run.advance().unwrap();
-            errors.push(run.ledger.residual(run.stepper.energy()) / run.ledger.throughput());
+            errors.push(run.books.residual() / run.books.ledger.throughput());
         }
         errors
     };

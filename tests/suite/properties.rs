@@ -366,7 +366,7 @@ proptest! {
             if auto && soft && never_fell_back && integrator == Integrator::Auto
                 && books.ledger.throughput() > 0.0
             {
-                let relative = books.residual.abs() / books.ledger.throughput();
+                let relative = books.residual().abs() / books.ledger.throughput();
                 prop_assert!(relative < 1e-6, "books off by {}", relative);
             }
             let audit = game.world().resource::<common::AccumulatorAudit>();

@@ -135,7 +135,7 @@ impl Sources<'_, '_> {
             // Now, not at the last step: the band moves while paused too.
             energies: mechanical_energies(&self.params, &self.boxes, &self.bands),
             ledger: self.books.ledger,
-            residual: self.books.residual,
+            residual: self.books.residual(),
         }
     }
 }

@@ -1,8 +1,8 @@
 //! The ghosts' steppers: every integrator, and a reference, stepping the live box's scene
 //! beside it under the live band (the same anchor path, the same attach and release steps), so
 //! that a player sees each method's distance from the converged answer follow their own hand.
-//! Each ghost is the core's [`Stepper`] with its own energy books; the live box never reads
-//! them.
+//! Each ghost is the core's [`Stepper`] with its own [`Books`], stepped by the core's booked
+//! step; the live box never reads them.
 //!
 //! A ghost whose step leaves the bounds freezes there, with the step. The reference is a
 //! Taylor series of order 32 at 1e-13 px a step, with a budget of substeps so that a stiff
@@ -18,7 +18,7 @@ use crate::game::shared::{Overlay, Overlays};
 use crate::game::simulation::{Band, Bodies, ResetScene, acting_band};
 use crate::physics::integrators::taylor::MAX_ORDER;
 use crate::physics::{
-    AutoSettings, BandEnds, BodyState, EnergyLedger, Integrator, MassProperties, SceneParams,
+    AutoSettings, BandEnds, BodyState, Books, Bound, Integrator, MassProperties, SceneParams,
     StepInfo, Stepper,
 };
 
@@ -74,9 +74,7 @@ pub struct Ghost {
     pub previous: BodyState,
     /// The step at which it left the bounds (frozen since).
     pub diverged_at: Option<u64>,
-    pub ledger: EnergyLedger,
-    /// Mechanical energy right after the latest step.
-    settled: Option<f64>,
+    pub books: Books,
     pub last: StepInfo,
     /// Steps taken since the (re)start.
     pub steps: u64,
@@ -104,8 +102,7 @@ impl Ghost {
             },
             previous: state,
             diverged_at: None,
-            ledger: EnergyLedger::default(),
-            settled: None,
+            books: Books::default(),
             last: StepInfo::SINGLE,
             steps: 0,
             capped: 0,
@@ -113,19 +110,18 @@ impl Ghost {
         }
     }
 
-    /// Takes one step of `dt` under `band`, as the game's fixed step takes one.
+    /// Takes the core's booked step of `dt` under `band`, as the game's fixed step takes one.
     ///
-    /// The books are kept as the game keeps them. A step that leaves the bounds is undone and the
-    /// ghost frozen.
+    /// A step that leaves the bounds is refused and the ghost frozen.
     fn step(&mut self, band: Option<BandEnds>, dt: f64) {
         if self.diverged_at.is_some() {
             return;
         }
         self.stepper.band = band;
-        self.ledger.open_step(self.settled, self.stepper.energy());
         let before = self.stepper.state;
         let started = Instant::now();
-        let info = self.stepper.step(dt);
+        let start = self.stepper.model().forces(&self.stepper.state);
+        let booked = self.books.step(&mut self.stepper, start, dt, Bound::Sane);
         let ns = started.elapsed().as_nanos() as f64;
         self.ns_per_step = if self.steps == 0 {
             ns
@@ -133,22 +129,17 @@ impl Ghost {
             0.95 * self.ns_per_step + 0.05 * ns
         };
         self.steps += 1;
-        self.last = info;
-        self.capped += u64::from(info.fell_back && self.kind == GhostKind::Reference);
-        if self.stepper.state.is_sane() {
-            self.previous = before;
-            self.ledger.dissipated += info.dissipated;
-            self.settled = Some(self.stepper.energy());
-        } else {
-            self.stepper.state = before;
-            self.previous = before;
+        self.last = booked.info;
+        self.capped += u64::from(booked.info.fell_back && self.kind == GhostKind::Reference);
+        self.previous = before;
+        if booked.refused {
             self.diverged_at = Some(self.steps);
         }
     }
 
     /// Returns the books' residual now: the integrator's energy error since the (re)start.
     pub fn residual(&self) -> f64 {
-        self.ledger.residual(self.stepper.energy())
+        self.books.residual()
     }
 }
 

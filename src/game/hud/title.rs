@@ -46,7 +46,7 @@ pub(super) fn show_state_in_title(
     ) {
         title += &format!(", {behind}");
     }
-    title += &format!(", energy error {:.1e}", books.residual);
+    title += &format!(", energy error {:.1e}", books.residual());
     if virtual_time.is_paused() {
         title += ", paused (N steps)";
     }

@@ -133,7 +133,7 @@ pub(super) fn place_labels(labels: &[(Vec2, Vec2)], bounds: Rect, obstacles: &[R
                     .iter()
                     .chain(obstacles)
                     .chain(&placed)
-                    .all(|other| other.inflate(1.0).intersect(rect).is_empty())
+                    .all(|other| other.inflate(3.0).intersect(rect).is_empty())
         };
         let half = size / 2.0;
         let near = [6.0, 12.0, 20.0, 30.0, 42.0, 56.0, 72.0]

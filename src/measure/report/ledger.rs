@@ -14,9 +14,9 @@ fn ledger_residual(scene: &Scene, integrator: Integrator, steps: u64) -> Result<
     let mut worst: f64 = 0.0;
     for _ in 0..steps {
         run.advance().map_err(|d| d.step)?;
-        worst = worst.max(run.ledger.residual(run.stepper.energy()).abs());
+        worst = worst.max(run.books.residual().abs());
     }
-    Ok(worst / run.ledger.throughput())
+    Ok(worst / run.books.ledger.throughput())
 }
 
 /// Builds the energy ledger's table: a line per integrator, in the Markdown only.
