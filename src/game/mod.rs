@@ -21,7 +21,7 @@
 //! - [`stability`]: each integrator's distance from instability at the present settings;
 //! - [`input`]: the keys and the on-screen panel, which send the same actions;
 //! - [`readouts`]: the Readouts card: the scene, the integrator, the clock, the parameters;
-//! - [`hud`]: the status line over the scene, the hint under it, and the window title;
+//! - [`hud`]: the status line over the scene and the hint under it;
 //! - [`energy`]: the Energy card: the energies, the ledger, and their graph;
 //! - [`mod@plot`]: the Speed against error card: each ghost a point on the report's axes;
 //! - [`access`]: what a screen reader hears: names, roles, labels, the scene in words;

@@ -92,7 +92,7 @@ pub enum AfterStepsSystems {
 pub enum ScreenSystems {
     /// The regions arranged for the window's shape and the cards open, the UI's scale.
     Scale,
-    /// The status line, the hint and the window title.
+    /// The status line and the hint.
     Hud,
     /// The cards that write their own text (Readouts, Energy, Ghosts, Stability).
     Cards,

@@ -193,7 +193,7 @@ pub fn readable(value: f64) -> String {
 
 /// Writes a rate in hertz as every readout shows it: `100 Hz`, `62.5 Hz`.
 ///
-/// The HUD's clock, the status line, the window title and the panel all write it so.
+/// The HUD's clock, the status line and the panel all write it so.
 pub fn hertz(rate: f64) -> String {
     format!("{} Hz", readable(rate))
 }

@@ -1235,3 +1235,112 @@ fn the_step_check_finds_a_second_booked_step() {
     );
     assert_eq!(second_steps(&[file]).len(), 1);
 }
+
+// --- No type of the crate is named as one of Bevy's. ---
+
+/// Tells whether a word is a type's name: CamelCase.
+fn is_type_name(word: &str) -> bool {
+    word.starts_with(|c: char| c.is_ascii_uppercase())
+}
+
+/// Returns the types a module brings in from Bevy by name: those its `use bevy…;` statements
+/// list, and the type of each `bevy::…::Name` path it writes inline.
+fn bevy_names(code: &str) -> BTreeSet<String> {
+    let mut names = BTreeSet::new();
+    let mut rest = code;
+    while let Some(at) = rest.find("use bevy") {
+        let statement = &rest[at..];
+        let end = statement.find(';').unwrap_or(statement.len());
+        let words = statement[..end].split(|c: char| !c.is_ascii_alphanumeric() && c != '_');
+        names.extend(words.filter(|w| is_type_name(w)).map(str::to_owned));
+        rest = &statement[end..];
+    }
+    for (at, _) in code.match_indices("bevy::") {
+        let path: String = code[at..]
+            .chars()
+            .take_while(|c| c.is_ascii_alphanumeric() || *c == '_' || *c == ':')
+            .collect();
+        if let Some(name) = path.split("::").find(|w| is_type_name(w)) {
+            names.insert(name.to_owned());
+        }
+    }
+    names
+}
+
+/// Returns the structs and enums a module defines.
+fn defined_types(code: &str) -> BTreeSet<String> {
+    code.lines()
+        .filter_map(|line| {
+            let line = line.trim_start();
+            let line = ["pub ", "pub(crate) ", "pub(super) "]
+                .iter()
+                .find_map(|p| line.strip_prefix(p))
+                .unwrap_or(line);
+            ["struct ", "enum "]
+                .iter()
+                .find_map(|k| line.strip_prefix(k))
+        })
+        .map(|rest| {
+            rest.chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect()
+        })
+        .collect()
+}
+
+/// Returns each type defined under a name some module brings in from Bevy, as
+/// "module: Name (Bevy's, in other)".
+fn names_shared_with_bevy(modules: &BTreeMap<String, String>) -> Vec<String> {
+    let imported: Vec<(&String, BTreeSet<String>)> = modules
+        .iter()
+        .map(|(module, code)| (module, bevy_names(code)))
+        .collect();
+    let mut shared = Vec::new();
+    for (module, code) in modules {
+        for name in defined_types(code) {
+            for (other, names) in &imported {
+                if names.contains(&name) {
+                    shared.push(format!("{module}: {name} (Bevy's, in {other})"));
+                }
+            }
+        }
+    }
+    shared
+}
+
+/// A marker named as a Bevy type that another module imports reads as Bevy's there: `access`
+/// once queried Bevy's `ViewportNode`, not the layout's, and found no node (issue 61).
+#[test]
+fn no_type_of_the_crate_is_named_as_one_brought_in_from_bevy() {
+    let shared = names_shared_with_bevy(&modules());
+    assert!(
+        shared.is_empty(),
+        "types named as Bevy's:\n{}",
+        shared.join("\n")
+    );
+}
+
+#[test]
+fn the_bevy_name_check_finds_a_marker_named_as_bevys() {
+    let modules: BTreeMap<String, String> = [
+        ("game::layout", "#[derive(Component)]\nstruct ViewportNode;"),
+        (
+            "game::access",
+            "use bevy::prelude::*;\nuse bevy::ui::widget::{\n    Label,\n    ViewportNode,\n};",
+        ),
+        (
+            "game::screen",
+            "let a = bevy::ui::widget::ViewportNode::new(camera);",
+        ),
+    ]
+    .into_iter()
+    .map(|(module, code)| (module.to_owned(), code.to_owned()))
+    .collect();
+    assert_eq!(
+        names_shared_with_bevy(&modules),
+        [
+            "game::layout: ViewportNode (Bevy's, in game::access)",
+            "game::layout: ViewportNode (Bevy's, in game::screen)",
+        ]
+    );
+}

@@ -3,7 +3,7 @@
 use crate::common;
 
 use common::*;
-use rubber_band_box::game::input::controls::{CONTROLS, help_line, key_hint};
+use rubber_band_box::game::input::controls::{CONTROLS, help_line};
 use rubber_band_box::game::shared::{Overlay, Overlays, StatusMessage};
 
 #[test]
@@ -202,14 +202,13 @@ fn ghosts_plot_and_hud_toggle() {
     assert!(!dock_hidden(&mut game));
 }
 
-/// The keys are listed once (`CONTROLS`): README's table, the help line and the title hint
-/// are all written from that list, so none can name a key the game does not read or miss one.
+/// The keys are listed once (`CONTROLS`): README's table and the help line are both written
+/// from that list, so neither can name a key the game does not read or miss one.
 #[test]
-fn readme_the_help_line_and_the_title_name_every_control_as_the_list_does() {
+fn readme_and_the_help_line_name_every_control_as_the_list_does() {
     let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
         .expect("README.md");
     let help = help_line();
-    let hint = key_hint();
     let mut control_rows = Vec::new();
     for control in CONTROLS {
         let keys: Vec<String> = control
@@ -222,7 +221,6 @@ fn readme_the_help_line_and_the_title_name_every_control_as_the_list_does() {
         control_rows.push(row);
         let item = format!("{}: {}", control.label, control.name).replace(' ', "\u{a0}");
         assert!(help.contains(&item), "{help}");
-        assert!(hint.contains(control.label));
     }
     // And the other way: every row of README's table is a pointer's or a control's, so a
     // stale row (a key the game no longer reads) or a duplicate fails.
@@ -256,9 +254,6 @@ fn readme_the_help_line_and_the_title_name_every_control_as_the_list_does() {
         .expect("the Controls card has its line of keys");
     assert_eq!(keys.0, help);
     assert_eq!(shade.0, rubber_band_box::game::theme::colour::DIM);
-    let window = game.window;
-    let title = game.world().get::<Window>(window).unwrap().title.clone();
-    assert!(title.ends_with(&hint), "{title}");
 }
 
 #[test]
@@ -306,7 +301,7 @@ fn the_open_key_says_how_to_open_a_replay() {
     );
 }
 
-/// The keys are one list (`CONTROLS`, which the help line, the title, README and the link's
+/// The keys are one list (`CONTROLS`, which the help line, README and the link's
 /// docs read), so a key bound twice shows there: none is, and every control has a key.
 #[test]
 fn no_key_is_bound_to_two_controls() {

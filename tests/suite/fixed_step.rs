@@ -240,7 +240,7 @@ fn a_long_frame_catches_up_a_bounded_number_of_steps() {
 }
 
 #[test]
-fn the_integrator_key_switches_on_the_next_step_and_names_it_in_the_title() {
+fn the_integrator_key_switches_on_the_next_step_and_names_it_on_the_status_line() {
     let mut game = Game::stepping();
     assert_eq!(
         *game.world().resource::<Integrator>(),
@@ -270,9 +270,8 @@ fn the_integrator_key_switches_on_the_next_step_and_names_it_in_the_title() {
         (linear, angular),
         (stepper.state.linear, stepper.state.angular)
     );
-    let window = game.window;
-    let title = game.world().get::<Window>(window).unwrap().title.clone();
-    assert!(title.contains(expected_next.name()), "{title}");
+    let status = game.line("HUD Status");
+    assert!(status.starts_with(expected_next.name()), "{status}");
 }
 
 #[test]
@@ -292,9 +291,8 @@ fn a_diverging_step_is_refused_and_the_state_stays_finite() {
     let (integrator, step) = stats.divergence.expect("the divergence is reported");
     assert_eq!(integrator, Integrator::Euler);
     assert!((1..=30).contains(&step), "{step}");
-    let window = game.window;
-    let title = game.world().get::<Window>(window).unwrap().title.clone();
-    assert!(title.contains("euler diverged at step"), "{title}");
+    let status = game.line("HUD Status");
+    assert!(status.contains("euler DIVERGED at step"), "{status}");
 }
 
 #[test]

@@ -15,10 +15,9 @@ use bevy::ecs::system::SystemParam;
 use bevy::input_focus::InputFocus;
 use bevy::input_focus::tab_navigation::{NavAction, TabNavigation};
 use bevy::prelude::*;
-use bevy::ui::widget::ViewportNode;
 use bevy::ui_widgets::{Activate, Button, SetSliderValue, Slider, SliderValueChange};
 
-use crate::game::layout::{CardButton, Cards};
+use crate::game::layout::{CardButton, Cards, SceneCanvas};
 use crate::game::schedule::ScreenSystems;
 use crate::game::shared::{Displayed, StatusMessage};
 use crate::game::simulation::{Band, Bodies};
@@ -69,7 +68,7 @@ fn describe_the_scene(
     virtual_time: Res<Time<Virtual>>,
     real: Res<Time<Real>>,
     mut description: ResMut<SceneDescription>,
-    mut scene: Query<&mut AccessibilityNode, With<ViewportNode>>,
+    mut scene: Query<&mut AccessibilityNode, With<SceneCanvas>>,
 ) {
     let Ok(body) = boxes.single() else {
         return;

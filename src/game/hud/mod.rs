@@ -1,14 +1,14 @@
 //! The heads-up display: the status line over the scene (the integrator, k, the rate, the
-//! time scale, the clock, and whether the game is paused, diverged or falls behind), the hint
-//! under it (how to play, or the latest news), and the window title ([`title`]) that says the
-//! same for a hidden dock. The dock's cards write their own lines (`game::readouts`,
-//! `game::energy` and the rest).
+//! time scale, the clock, and whether the game is paused, diverged or falls behind), and the
+//! hint under it (how to play, or the latest news). The dock's cards write their own lines
+//! (`game::readouts`, `game::energy` and the rest). The window's title is the game's name
+//! alone: a screen reader says it as the window's name, so what changes is said by the status
+//! line (the window's status bar) and the hint (a live region); `layout` gives them those roles.
 //!
 //! The numbers come from resources the physics keeps; this module only formats them, so its
-//! text and title run headless too (the text is plain `Text` components).
+//! text runs headless too (the text is plain `Text` components).
 
 pub mod pace;
-pub mod title;
 
 use bevy::ecs::system::SystemParam;
 use bevy::picking::Pickable;
@@ -30,9 +30,7 @@ impl Plugin for HudPlugin {
             .add_systems(Startup, spawn_hud)
             .add_systems(
                 Update,
-                (measure_pace, (show_hud, title::show_state_in_title))
-                    .chain()
-                    .in_set(ScreenSystems::Hud),
+                (measure_pace, show_hud).chain().in_set(ScreenSystems::Hud),
             );
     }
 }

@@ -1,5 +1,5 @@
-//! The pace: the share of the set pace the game's clock keeps, for the status line and the
-//! window title to say when the game falls behind the wall clock.
+//! The pace: the share of the set pace the game's clock keeps, for the status line to say when
+//! the game falls behind the wall clock.
 
 use bevy::prelude::*;
 
@@ -24,7 +24,7 @@ impl Default for Pace {
     }
 }
 
-/// Returns what the status line and the window title say of the pace, if anything.
+/// Returns what the status line says of the pace, if anything.
 ///
 /// "behind: runs ×0.42" while the clock falls behind: the rate it really runs at, beside the
 /// one set (`time_scale`). Nothing while it keeps the pace or the game is paused.

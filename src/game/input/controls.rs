@@ -1,8 +1,8 @@
 //! The controls: every action a player can take ([`Action`]), from the keys or from the
 //! on-screen panel, applied in one place before the fixed loop ([`GameSystems::Controls`]) so
 //! that it acts on the very next step. The keys are listed once, in [`CONTROLS`], with the
-//! action each sends: the HUD's help line, the window title's hint and README's table are
-//! written from it (a test holds README to it). A value that `SceneParams::validate` refuses
+//! action each sends: the Controls card's help line and README's table are written from it (a
+//! test holds README to it). A value that `SceneParams::validate` refuses
 //! is not applied, and the HUD's status line says why.
 
 use bevy::ecs::system::SystemParam;
@@ -212,7 +212,7 @@ pub struct Control {
     pub keys: &'static [KeyCode],
     /// The action of each key, in the same order.
     pub actions: &'static [Action],
-    /// The keys as the help line, the title and README write them ("[ ]").
+    /// The keys as the help line and README write them ("[ ]").
     pub label: &'static str,
     /// What it does, in a word (the help line).
     pub name: &'static str,
@@ -397,12 +397,6 @@ pub fn help_line() -> String {
         .map(|control| format!("{}: {}", control.label, control.name).replace(' ', "\u{a0}"))
         .collect();
     format!("drag:\u{a0}pull  {}", keys.join("  "))
-}
-
-/// Returns the window title's reminder of the keys: "Space N R I [ ] ...".
-pub fn key_hint() -> String {
-    let labels: Vec<&str> = CONTROLS.iter().map(|control| control.label).collect();
-    labels.join(" ")
 }
 
 /// Sends the action of every key press since the last frame, in the order pressed.

@@ -131,9 +131,12 @@ pub(crate) fn card_line(text: impl Into<String>, font: TextFont, shade: Color) -
     )
 }
 
-/// The node the scene is rendered into.
+/// The node the scene is rendered into: the canvas a screen reader finds the scene by.
+///
+/// Not Bevy's `bevy::ui::widget::ViewportNode`, which renders a camera's image in a node: the
+/// scene's camera renders into [`SceneViewport`]'s rectangle instead.
 #[derive(Component, Debug)]
-struct ViewportNode;
+pub(crate) struct SceneCanvas;
 
 /// The dock (the side column or the bottom sheet): its cards and their scrollbar.
 #[derive(Component, Debug)]
@@ -187,6 +190,26 @@ fn title_button(card: Card, title: &'static str) -> impl Bundle {
 fn scene_node() -> AccessibilityNode {
     let mut node = accesskit::Node::new(accesskit::Role::Canvas);
     node.set_label("The scene: a box pulled by a rubber band");
+    node.set_live(accesskit::Live::Polite);
+    AccessibilityNode(node)
+}
+
+/// Returns the status line as a screen reader finds it: the window's status bar.
+///
+/// Its text (the HUD's) is read when the listener asks for the status bar; not a live region,
+/// since its clock changes ten times a simulated second.
+fn status_node() -> AccessibilityNode {
+    let mut node = accesskit::Node::new(accesskit::Role::Status);
+    node.set_label("Status");
+    AccessibilityNode(node)
+}
+
+/// Returns the hint line as a screen reader finds it: a polite live region.
+///
+/// Its text (the HUD's: how to play, or the latest news) is said when it changes, as the page's
+/// live region says it in the browser.
+fn news_node() -> AccessibilityNode {
+    let mut node = accesskit::Node::new(accesskit::Role::GenericContainer);
     node.set_live(accesskit::Live::Polite);
     AccessibilityNode(node)
 }
@@ -247,7 +270,10 @@ fn scene_column() -> impl Bundle {
         children![
             status_bar(),
             scene_viewport(),
-            bar("Hint line", Slot::Hint, Overflow::clip_x()),
+            (
+                bar("Hint line", Slot::Hint, Overflow::clip_x()),
+                news_node()
+            ),
         ],
     )
 }
@@ -282,7 +308,10 @@ fn status_bar() -> impl Bundle {
         },
         BackgroundColor(colour::CARD),
         children![
-            bar("Status line", Slot::Status, Overflow::DEFAULT),
+            (
+                bar("Status line", Slot::Status, Overflow::DEFAULT),
+                status_node(),
+            ),
             (
                 Name::new("Status tools"),
                 Slot::StatusTools,
@@ -299,7 +328,7 @@ fn status_bar() -> impl Bundle {
 fn scene_viewport() -> impl Bundle {
     (
         Name::new("Scene viewport"),
-        ViewportNode,
+        SceneCanvas,
         scene_node(),
         Pickable::IGNORE,
         Node {
@@ -567,7 +596,7 @@ fn open_cards_switched_on(
 
 /// Publishes where Bevy's layout put the viewport node.
 fn publish_viewport(
-    nodes: Query<(&ComputedNode, &UiGlobalTransform), With<ViewportNode>>,
+    nodes: Query<(&ComputedNode, &UiGlobalTransform), With<SceneCanvas>>,
     ui_scale: Res<UiScale>,
     mut viewport: ResMut<SceneViewport>,
 ) {
