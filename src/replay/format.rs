@@ -302,17 +302,10 @@ pub struct Replay {
     pub steps: u64,
     /// The hash of the states after each step, as the recorder saw them.
     pub hash: TrajectoryHash,
-    /// The settings after every record so far.
+    /// What a reader has in place after every record so far (the one reader's model).
     ///
-    /// They are kept, not searched for, because the recorder asks at every step.
-    pub(super) in_force: Settings,
-    /// `auto`'s settings after every record so far.
-    pub(super) auto_in_force: AutoRecord,
-    /// The state the next step starts from unless something puts the box elsewhere.
-    ///
-    /// The latest recorded state (after a step, a state record or a check), or the start
-    /// after a reset. None before the first step.
-    pub(super) expected: Option<[f64; 6]>,
+    /// It is kept, not searched for, because the recorder asks at every step.
+    pub(super) in_place: InPlace,
     /// Steps since the latest check record, and whether the next step must be checked.
     ///
     /// A step is checked after a reset, a state or a settings record.
@@ -320,6 +313,20 @@ pub struct Replay {
     pub(super) check_next: bool,
     /// Whether the file read is the one written.
     pub integrity: Integrity,
+}
+
+/// What a reader has in place between records: the settings, `auto`'s, and the box's state.
+///
+/// The writer keeps one, so that it records only what a reader would not have there anyway;
+/// the one reader ([`super::play`]) tells it each record.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InPlace {
+    pub settings: Settings,
+    pub auto: AutoRecord,
+    /// The state the next step starts from unless something puts the box elsewhere.
+    ///
+    /// The start, a state record's or (told by the writer) the latest step's.
+    pub state: [f64; 6],
 }
 
 impl PartialEq for Replay {
@@ -347,9 +354,11 @@ impl Replay {
     /// Returns a replay with this header and no records yet.
     pub(super) fn with_header(header: Header) -> Self {
         Self {
-            in_force: header.settings,
-            auto_in_force: header.auto,
-            expected: Some(header.initial),
+            in_place: InPlace {
+                settings: header.settings,
+                auto: header.auto,
+                state: header.initial,
+            },
             unchecked: 0,
             check_next: false,
             integrity: Integrity::Intact,
@@ -363,92 +372,6 @@ impl Replay {
     /// Tells whether the replay is full, so that no other step fits ([`MAX_STEPS`]).
     pub fn is_full(&self) -> bool {
         self.steps >= MAX_STEPS
-    }
-
-    /// Returns the settings in force after every record so far.
-    pub fn current_settings(&self) -> Settings {
-        self.in_force
-    }
-
-    /// Records that the scene was reset before the next step: the box at the header's start.
-    pub fn push_reset(&mut self) {
-        self.records.push(Record::Reset {
-            step: self.steps + 1,
-        });
-        self.expected = Some(self.header.initial);
-        self.check_next = true;
-    }
-
-    /// Records these settings before the next step, if they differ from those in force.
-    pub fn push_settings(&mut self, settings: Settings) {
-        if settings != self.in_force {
-            self.in_force = settings;
-            self.records.push(Record::Settings {
-                step: self.steps + 1,
-                settings: Box::new(settings),
-            });
-            self.check_next = true;
-        }
-    }
-
-    /// Records `auto`'s settings before the next step, if they differ from those in force.
-    pub fn push_auto(&mut self, auto: AutoSettings) {
-        let auto = AutoRecord::from(auto);
-        if auto != self.auto_in_force {
-            self.auto_in_force = auto;
-            self.records.push(Record::Auto {
-                step: self.steps + 1,
-                auto,
-            });
-        }
-    }
-
-    /// Records the state the next step starts from, unless the replay has it there anyway.
-    ///
-    /// The replay has the previous step's state there, or the start after a reset; compared
-    /// to the bit.
-    pub fn push_state(&mut self, state: &BodyState) {
-        let state = state.to_array();
-        let same = self
-            .expected
-            .is_some_and(|expected| expected.map(f64::to_bits) == state.map(f64::to_bits));
-        if !same {
-            self.records.push(Record::State {
-                step: self.steps + 1,
-                state: Box::new(state),
-            });
-            self.expected = Some(state);
-            self.check_next = true;
-        }
-    }
-
-    /// Records that the next step ran with `band` and left the body in `after`.
-    pub fn push_step(&mut self, band: Option<BandEnds>, after: &BodyState) {
-        self.steps += 1;
-        self.records.push(Record::Step {
-            step: self.steps,
-            band: band.map(BandRecord::from),
-        });
-        self.hash.add(after);
-        self.expected = Some(after.to_array());
-        self.unchecked += 1;
-    }
-
-    /// Records the state after the latest step as a check, if one is due ([`Record::Check`]).
-    pub fn push_check_if_due(&mut self, after: &BodyState) {
-        if self.steps > 0 && (self.check_next || self.unchecked >= CHECK_EVERY) {
-            self.records.push(Record::Check {
-                step: self.steps,
-                state: Box::new(after.to_array()),
-            });
-            self.unchecked = 0;
-            self.check_next = false;
-        }
-    }
-
-    /// Returns the state a replay has before the next step unless a record moves it.
-    pub fn expected_state(&self) -> Option<BodyState> {
-        self.expected.map(BodyState::from_array)
     }
 
     /// Writes the file: the header, the records, the end record.

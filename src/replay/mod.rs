@@ -8,15 +8,18 @@
 //! every line and names the first bad one; nothing in a file can make it panic.
 //!
 //! [`mod@format`] holds the format's types (the header, the records, the hash, a whole replay and
-//! its writing), [`read`] reads and checks a file.
+//! its writing), [`read`] reads and checks a file, and [`play`] is the one reader of its
+//! records, which the core's run, the game's playback and the writer share.
 
 pub mod format;
 pub mod link;
+pub mod play;
 pub mod read;
 pub mod run;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod save;
 pub mod script;
+pub mod write;
 
 pub use format::{
     AUTO_ORDERS, AutoRecord, BandRecord, CHECK_EVERY, FORMAT, Header, Integrity, MAX_LINE_BYTES,

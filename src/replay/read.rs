@@ -170,7 +170,6 @@ impl Reader {
                 settings
                     .validate()
                     .map_err(|error| at(format!("settings: {error}")))?;
-                replay.in_force = **settings;
             }
             Record::State { step, ref state } => {
                 in_order(step, "a state")?;
@@ -233,7 +232,7 @@ impl Reader {
                 return Ok(());
             }
         }
-        replay.records.push(record);
+        replay.push(record);
         Ok(())
     }
 

@@ -7,7 +7,8 @@ use crate::physics::{
     AutoSettings, BandEnds, BodyState, Books, Bound, Integrator, ParamError, StepInfo, Stepper,
 };
 
-use super::{Integrity, Record, Replay, TrajectoryHash, made_by};
+use super::play::{Player, Reader};
+use super::{Integrity, Replay, Settings, TrajectoryHash, made_by};
 
 /// Where a replay first went its own way: the first check record it did not meet.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -26,8 +27,8 @@ pub struct Departure {
 
 pub struct ReplayRun<'a> {
     replay: &'a Replay,
-    /// The next record to play.
-    next: usize,
+    /// How far the records are read.
+    reader: Reader,
     /// Runs the whole replay with this integrator instead of the recorded ones.
     integrator: Option<Integrator>,
     pub stepper: Stepper,
@@ -66,7 +67,7 @@ impl<'a> ReplayRun<'a> {
         }
         Ok(Self {
             replay,
-            next: 0,
+            reader: Reader::default(),
             integrator,
             dt: replay.header.settings.dt,
             stepper,
@@ -106,47 +107,10 @@ impl<'a> ReplayRun<'a> {
 
     /// Plays the records up to and including the next step; `None` after the last.
     pub fn advance(&mut self) -> Option<StepInfo> {
-        loop {
-            let record = self.replay.records.get(self.next)?;
-            self.next += 1;
-            match record {
-                Record::Reset { step } => {
-                    self.stepper.state = BodyState::from_array(self.replay.header.initial);
-                    self.stepper.band = None;
-                    self.books.settled = None;
-                    self.refused = None;
-                    self.fallbacks = 0;
-                    self.latest_change = Some(("a reset", *step));
-                }
-                Record::Settings { settings, step } => {
-                    // Checked when the file was read.
-                    if let Ok(mass) = settings.params().mass_properties() {
-                        self.stepper.mass = mass;
-                    }
-                    self.stepper.params = settings.params();
-                    self.stepper.integrator = self.integrator.unwrap_or(settings.integrator);
-                    self.dt = settings.dt;
-                    self.latest_change = Some(("settings", *step));
-                }
-                Record::State { state, step } => {
-                    self.stepper.state = BodyState::from_array(**state);
-                    self.latest_change = Some(("a state", *step));
-                }
-                Record::Auto { auto, .. } => {
-                    let recorded = AutoSettings::from(*auto);
-                    self.recorded_auto = recorded;
-                    self.stepper.auto = match &self.auto_from {
-                        Some(from) => from(recorded),
-                        None => recorded,
-                    };
-                }
-                Record::Check { step, state } => self.check(*step, state),
-                Record::Step { band, .. } => {
-                    return Some(self.step_under(band.map(BandEnds::from)));
-                }
-                Record::End { .. } => return None,
-            }
-        }
+        let mut reader = self.reader;
+        let band = reader.next_step(self.replay, self);
+        self.reader = reader;
+        Some(self.step_under(band?))
     }
 
     /// Takes one step as the game's fixed step takes it: the core's booked step.
@@ -182,7 +146,7 @@ impl<'a> ReplayRun<'a> {
     /// Compares the state with a check record, and notes the first one it does not meet.
     ///
     /// Only a run as recorded can meet them: another integrator or substeps go their own way.
-    fn check(&mut self, step: u64, recorded: &[f64; 6]) {
+    fn check_against(&mut self, step: u64, recorded: &[f64; 6]) {
         let as_recorded = self.integrator.is_none()
             && self.substeps == 1
             && self.stepper.auto == self.recorded_auto;
@@ -291,5 +255,45 @@ impl<'a> ReplayRun<'a> {
     pub fn finish(&mut self) -> TrajectoryHash {
         while self.advance().is_some() {}
         self.hash
+    }
+}
+
+/// What the records put in place, in the run's stepper.
+impl Player for ReplayRun<'_> {
+    fn reset(&mut self, start: BodyState, step: u64) {
+        self.stepper.state = start;
+        self.stepper.band = None;
+        self.books.settled = None;
+        self.refused = None;
+        self.fallbacks = 0;
+        self.latest_change = Some(("a reset", step));
+    }
+
+    fn settings(&mut self, settings: &Settings, step: u64) {
+        // Checked when the file was read.
+        if let Ok(mass) = settings.params().mass_properties() {
+            self.stepper.mass = mass;
+        }
+        self.stepper.params = settings.params();
+        self.stepper.integrator = self.integrator.unwrap_or(settings.integrator);
+        self.dt = settings.dt;
+        self.latest_change = Some(("settings", step));
+    }
+
+    fn auto(&mut self, auto: AutoSettings, _step: u64) {
+        self.recorded_auto = auto;
+        self.stepper.auto = match &self.auto_from {
+            Some(from) => from(auto),
+            None => auto,
+        };
+    }
+
+    fn state(&mut self, state: BodyState, step: u64) {
+        self.stepper.state = state;
+        self.latest_change = Some(("a state", step));
+    }
+
+    fn check(&mut self, step: u64, state: &[f64; 6]) {
+        self.check_against(step, state);
     }
 }

@@ -1344,3 +1344,50 @@ fn the_bevy_name_check_finds_a_marker_named_as_bevys() {
         ]
     );
 }
+
+/// Returns each line outside the replay's format, its reader and its writer that reads a record
+/// for what it does.
+///
+/// The one reader (`replay::play::cue`) tells every player (the core's run, the game's playback,
+/// the peers' and the writer's model) what each record puts in place.
+fn second_readers(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
+    let own = [
+        "replay/format.rs",
+        "replay/play.rs",
+        "replay/read.rs",
+        "replay/write.rs",
+    ];
+    let mut found = Vec::new();
+    for (path, code) in files {
+        let file = path.to_string_lossy().replace('\\', "/");
+        if own.contains(&file.as_str()) {
+            continue;
+        }
+        for (n, line) in code.lines().enumerate() {
+            let trimmed = line.trim_start();
+            if !trimmed.starts_with("//") && trimmed.contains("Record::") {
+                found.push(format!("{file}:{}: {trimmed}", n + 1));
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn a_replay_is_read_once() {
+    let found = second_readers(&source_files());
+    assert!(
+        found.is_empty(),
+        "records read outside the one reader:\n{}",
+        found.join("\n")
+    );
+}
+
+#[test]
+fn the_reader_check_finds_a_second_reader() {
+    let file = (
+        std::path::PathBuf::from("game/replays/playback.rs"),
+        "match record {\n    Record::Reset { .. } => reset(),\n}\n".to_owned(),
+    );
+    assert_eq!(second_readers(&[file]).len(), 1);
+}

@@ -21,7 +21,8 @@ use crate::game::simulation::{
     Band, Bodies, ResetScene, RigidBox, placed, rigid_box, set_fixed_step,
 };
 use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams};
-use crate::replay::{Record, Replay, TrajectoryHash};
+use crate::replay::play::{Player, Reader};
+use crate::replay::{Replay, Settings, TrajectoryHash};
 
 pub struct PlaybackPlugin;
 
@@ -101,7 +102,8 @@ impl PlaybackEnd {
 #[derive(Resource, Debug, Default)]
 pub struct Playback {
     replay: Option<Replay>,
-    next: usize,
+    /// How far its records are read.
+    reader: Reader,
     /// Steps played so far.
     pub played: u64,
     /// The hash of the states the game had after each step played.
@@ -165,6 +167,52 @@ struct RecordedSettings<'w> {
     time: ResMut<'w, Time<Fixed>>,
 }
 
+/// The game as the one reader's [`Player`]: its box and settings.
+///
+/// It is told what the replay's records put in place before a step.
+struct InTheGame<'a, 'c, 's, 'w> {
+    commands: &'a mut Commands<'c, 's>,
+    body: Entity,
+    settings: &'a mut RecordedSettings<'w>,
+    /// A reset came before this step: its observers remove the old bands.
+    reset: bool,
+}
+
+impl Player for InTheGame<'_, '_, '_, '_> {
+    fn reset(&mut self, start: BodyState, _step: u64) {
+        // Its observers put the box, the books and the bands back before this step; the
+        // replay's reset puts the box at the replay's start, not the game's.
+        self.commands.trigger(ResetScene);
+        self.commands.entity(self.body).insert(placed(start));
+        self.reset = true;
+    }
+
+    fn settings(&mut self, recorded: &Settings, _step: u64) {
+        let next = recorded.params();
+        let params = &mut self.settings.params;
+        if next.mass != params.mass || next.size != params.size {
+            // Checked when the file was read.
+            if let Ok(mass) = next.mass_properties() {
+                self.commands.entity(self.body).insert(mass);
+            }
+        }
+        **params = next;
+        *self.settings.integrator = recorded.integrator;
+        // Checked in the game's ranges when opened.
+        set_fixed_step(&mut self.settings.time, recorded.dt);
+    }
+
+    fn auto(&mut self, auto: AutoSettings, _step: u64) {
+        *self.settings.auto = auto;
+    }
+
+    fn state(&mut self, state: BodyState, _step: u64) {
+        self.commands.entity(self.body).insert(placed(state));
+    }
+
+    // A check is what the game had after a step: the playback's hash says it at the end.
+}
+
 /// Puts the recorded resets and settings up to the next step, and its band, in place.
 ///
 /// This runs before the step's forces. At the replay's end the playback stops, leaving the box
@@ -179,23 +227,31 @@ fn play_step(
     let Ok(body) = boxes.single() else {
         return;
     };
-    if playback.next == 0
-        && let Some(replay) = playback.replay.as_ref()
+    let playback = &mut *playback;
+    let Some(replay) = playback.replay.as_ref() else {
+        return;
+    };
+    if playback.reader.at_start()
         && let Ok(mass) = settings.params.mass_properties()
     {
         // The recorded start (the game's is the box at rest at the centre).
         let start = BodyState::from_array(replay.header.initial);
         commands.entity(body).insert(rigid_box(mass, start));
     }
-    let mut reset = false;
-    while playback.is_playing() {
-        let next = playback.next;
-        let Some(record) = playback
-            .replay
-            .as_ref()
-            .and_then(|replay| replay.records.get(next))
-            .cloned()
-        else {
+    let mut in_the_game = InTheGame {
+        commands: &mut commands,
+        body,
+        settings: &mut settings,
+        reset: false,
+    };
+    let band = playback.reader.next_step(replay, &mut in_the_game);
+    let reset = in_the_game.reset;
+    match band {
+        Some(band) => {
+            playback.played += 1;
+            place_band(&mut commands, body, band, reset, &mut bands);
+        }
+        None => {
             if let Some(replay) = playback.replay.take() {
                 playback.ended = Some(PlaybackEnd::Finished {
                     steps: playback.hashed,
@@ -203,56 +259,6 @@ fn play_step(
                     recorded: replay.hash,
                 });
             }
-            return;
-        };
-        playback.next += 1;
-        match record {
-            Record::Reset { .. } => {
-                // Its observers put the box, the books and the bands back before this step;
-                // the replay's reset puts the box at the replay's start, not the game's.
-                commands.trigger(ResetScene);
-                if let Some(replay) = playback.replay.as_ref() {
-                    let start = BodyState::from_array(replay.header.initial);
-                    commands.entity(body).insert(placed(start));
-                }
-                reset = true;
-            }
-            Record::State { state, .. } => {
-                commands
-                    .entity(body)
-                    .insert(placed(BodyState::from_array(*state)));
-            }
-            Record::Auto { auto, .. } => *settings.auto = auto.into(),
-            // What the game had after a step: the playback's hash says it at the end.
-            Record::Check { .. } => {}
-            Record::Settings {
-                settings: recorded, ..
-            } => {
-                let next = recorded.params();
-                let params = &mut settings.params;
-                if next.mass != params.mass || next.size != params.size {
-                    // Checked when the file was read.
-                    if let Ok(mass) = next.mass_properties() {
-                        commands.entity(body).insert(mass);
-                    }
-                }
-                **params = next;
-                *settings.integrator = recorded.integrator;
-                // Checked in the game's ranges when opened.
-                set_fixed_step(&mut settings.time, recorded.dt);
-            }
-            Record::Step { band, .. } => {
-                playback.played += 1;
-                place_band(
-                    &mut commands,
-                    body,
-                    band.map(BandEnds::from),
-                    reset,
-                    &mut bands,
-                );
-                return;
-            }
-            Record::End { .. } => {}
         }
     }
 }

@@ -12,13 +12,15 @@ use super::ours::Ours;
 use super::rapier::Rapier;
 use crate::measure::references::ReplayReference;
 use crate::measure::timing::median;
-use crate::physics::{BandEnds, BodyState};
-use crate::replay::{Record, Replay, Settings};
+use crate::physics::{AutoSettings, BandEnds, BodyState};
+use crate::replay::play::{Player, Reader};
+use crate::replay::{Replay, Settings};
 
 /// A replay played on contender `C`.
 pub struct PeerReplay<'a, C: Contender> {
     replay: &'a Replay,
-    next: usize,
+    /// How far the records are read.
+    reader: Reader,
     settings: Settings,
     substeps: u32,
     contender: C,
@@ -32,7 +34,7 @@ impl<'a, C: Contender> PeerReplay<'a, C> {
         let substeps = substeps.max(1);
         Self {
             replay,
-            next: 0,
+            reader: Reader::default(),
             settings,
             substeps,
             contender: build(
@@ -46,55 +48,55 @@ impl<'a, C: Contender> PeerReplay<'a, C> {
 
     /// Plays the records up to and including the next step; `None` after the last.
     pub fn advance(&mut self) -> Option<()> {
-        loop {
-            let record = self.replay.records.get(self.next)?;
-            self.next += 1;
-            match record {
-                Record::Reset { .. } => {
-                    let start = BodyState::from_array(self.replay.header.initial);
-                    self.contender = build(&self.settings, self.substeps, start);
-                    self.band = None;
-                }
-                Record::Settings { settings, .. } => {
-                    let integrator = settings.integrator;
-                    let changed = Settings {
-                        integrator,
-                        ..self.settings
-                    } != **settings;
-                    self.settings = **settings;
-                    if changed {
-                        let now = self.contender.state();
-                        self.contender = build(&self.settings, self.substeps, now);
-                        self.contender.set_band(self.band);
-                    }
-                }
-                Record::State { state, .. } => {
-                    let state = BodyState::from_array(**state);
-                    self.contender = build(&self.settings, self.substeps, state);
-                    self.contender.set_band(self.band);
-                }
-                // Our `auto`'s settings, and the recorder's checks: nothing for a peer.
-                Record::Auto { .. } | Record::Check { .. } => {}
-                Record::Step { band, .. } => {
-                    let band = band.map(BandEnds::from);
-                    if band != self.band {
-                        self.band = band;
-                        self.contender.set_band(band);
-                    }
-                    for _ in 0..self.substeps {
-                        self.contender.app().update();
-                    }
-                    // Read after every step: peers that keep (cos, sin) count whole turns.
-                    self.contender.state();
-                    return Some(());
-                }
-                Record::End { .. } => return None,
-            }
+        let mut reader = self.reader;
+        let band = reader.next_step(self.replay, self);
+        self.reader = reader;
+        let band = band?;
+        if band != self.band {
+            self.band = band;
+            self.contender.set_band(band);
         }
+        for _ in 0..self.substeps {
+            self.contender.app().update();
+        }
+        // Read after every step: peers that keep (cos, sin) count whole turns.
+        self.contender.state();
+        Some(())
     }
 
     pub fn state(&mut self) -> BodyState {
         self.contender.state()
+    }
+}
+
+/// What the records put in place, on the contender.
+///
+/// `auto`'s settings and the recorder's checks are nothing for a peer.
+impl<C: Contender> Player for PeerReplay<'_, C> {
+    fn reset(&mut self, start: BodyState, _step: u64) {
+        self.contender = build(&self.settings, self.substeps, start);
+        self.band = None;
+    }
+
+    fn settings(&mut self, settings: &Settings, _step: u64) {
+        let integrator = settings.integrator;
+        let changed = Settings {
+            integrator,
+            ..self.settings
+        } != *settings;
+        self.settings = *settings;
+        if changed {
+            let now = self.contender.state();
+            self.contender = build(&self.settings, self.substeps, now);
+            self.contender.set_band(self.band);
+        }
+    }
+
+    fn auto(&mut self, _auto: AutoSettings, _step: u64) {}
+
+    fn state(&mut self, state: BodyState, _step: u64) {
+        self.contender = build(&self.settings, self.substeps, state);
+        self.contender.set_band(self.band);
     }
 }
 
