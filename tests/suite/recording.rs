@@ -287,3 +287,146 @@ fn only_another_build_or_machine_is_blamed_for_computing_differently() {
     assert!(said.contains("0.0.1 riscv64-linux"), "{said}");
     assert!(said.contains("first differ at step 13"), "{said}");
 }
+
+/// FNV-1a over a recording's file, with the build's own marks (its version and platform) left
+/// out: the same game records these bytes in every build.
+fn digest(replay: &Replay) -> String {
+    let mut replay = replay.clone();
+    replay.header.crate_version = String::new();
+    replay.header.made_by = None;
+    let hash = replay
+        .to_bytes()
+        .iter()
+        .fold(0xcbf2_9ce4_8422_2325_u64, |hash, byte| {
+            (hash ^ u64::from(*byte)).wrapping_mul(0x0100_0000_01b3)
+        });
+    format!("{hash:016x}")
+}
+
+/// A game opened by `link`, then pulled, reset and pulled again.
+fn linked(link: &str) -> Game {
+    use rubber_band_box::game::play::{PlayOptions, prepare};
+    let options = PlayOptions {
+        link: Some(link.to_owned()),
+        ..default()
+    };
+    let mut game = Game::keeping_trajectory(Duration::from_millis(10), |app| {
+        prepare(app, &options).unwrap();
+    });
+    game.update(10);
+    pull(&mut game, 15);
+    send(&mut game, Action::Reset);
+    game.update(5);
+    pull(&mut game, 10);
+    game
+}
+
+/// Several actions in one frame, between pulls.
+fn in_one_frame(actions: &[Action]) -> Game {
+    let mut game = game();
+    pull(&mut game, 15);
+    if actions.contains(&Action::Step) {
+        send(&mut game, Action::TogglePause);
+        game.update(2);
+    }
+    for action in actions {
+        send(&mut game, *action);
+    }
+    game.update(10);
+    pull(&mut game, 15);
+    game
+}
+
+/// Every chapter of learn mode, entered by its number, pulled, the next, then left.
+fn every_chapter() -> Game {
+    use rubber_band_box::game::learn::chapters::CHAPTERS;
+    let mut game = game();
+    pull(&mut game, 10);
+    send(&mut game, Action::Learn);
+    game.update(3);
+    for _ in 0..CHAPTERS.len() {
+        pull(&mut game, 10);
+        send(&mut game, Action::NextChapter);
+        game.update(3);
+    }
+    send(&mut game, Action::PreviousChapter);
+    game.update(3);
+    send(&mut game, Action::Learn);
+    game.update(3);
+    pull(&mut game, 10);
+    game
+}
+
+/// A replay opened mid-game, played, then taken over.
+fn an_opened_replay() -> Game {
+    let mut game = game();
+    pull(&mut game, 10);
+    game.world()
+        .commands()
+        .queue(|world: &mut World| playback::open(world, small_replay()));
+    game.update(20);
+    pull(&mut game, 10);
+    game
+}
+
+/// Every case the golden recordings hold: each action played through, each link key, every
+/// chapter, several actions in one frame and a replay opened.
+fn recorded_cases() -> Vec<(String, Game)> {
+    let mut cases: Vec<(String, Game)> = actions()
+        .into_iter()
+        .map(|action| (format!("{action:?}"), played_through(action)))
+        .collect();
+    let links = [
+        "?scene=spin&integrator=rk4&rate=64",
+        "?v=1&scene=far&integrator=euler&rate=8&dock=off",
+        "?scene=tutorial&k=40&mass=3&size=90&linear-damping=1&angular-damping=3",
+        "?scene=diagonal&time=0.5&ghosts=on&plot=on&vectors=on&trail=on",
+        "?scene=stiff&rate=4096&time=16&ghosts=on&k=1e12",
+        "?learn=3",
+        "?learn=7&integrator=seed",
+    ];
+    cases.extend(links.map(|link| (format!("link {link}"), linked(link))));
+    let frames: [&[Action]; 5] = [
+        &[Action::Scene(2), Action::NextIntegrator],
+        &[Action::Toggle(Overlay::Vectors), Action::Learn],
+        &[Action::Learn, Action::Scene(3)],
+        &[Action::Step, Action::TogglePause],
+        &[Action::Stiffer, Action::Reset],
+    ];
+    cases.extend(frames.map(|frame| (format!("one frame {frame:?}"), in_one_frame(frame))));
+    cases.push(("every chapter".to_owned(), every_chapter()));
+    cases.push(("a replay opened".to_owned(), an_opened_replay()));
+    cases
+}
+
+/// Every case records the bytes it recorded before the game's settings went through their
+/// owners (issue 61), in tests/fixtures/recordings.txt. `RBB_WRITE_RECORDINGS=1` writes the
+/// file from this build.
+#[test]
+fn every_case_records_the_bytes_it_always_recorded() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/recordings.txt");
+    let found: Vec<String> = recorded_cases()
+        .into_iter()
+        .map(|(case, mut game)| {
+            let replay = game.world().resource::<Recorder>().replay.clone().unwrap();
+            format!("{}\t{case}", digest(&replay))
+        })
+        .collect();
+    let found = found.join("\n") + "\n";
+    if std::env::var_os("RBB_WRITE_RECORDINGS").is_some() {
+        std::fs::write(&path, &found).unwrap();
+    }
+    let wanted = std::fs::read_to_string(&path).unwrap();
+    let differ: Vec<String> = found
+        .lines()
+        .zip(wanted.lines())
+        .filter(|(a, b)| a != b)
+        .map(|(a, b)| format!("now {a}\nwas {b}"))
+        .collect();
+    assert!(
+        differ.is_empty() && found.lines().count() == wanted.lines().count(),
+        "recordings differ from tests/fixtures/recordings.txt:\n{}",
+        differ.join("\n")
+    );
+}
