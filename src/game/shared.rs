@@ -22,7 +22,6 @@ impl Plugin for SharedPlugin {
             app.add_plugins(StatesPlugin);
         }
         app.init_resource::<SceneName>()
-            .init_resource::<StatusMessage>()
             .init_resource::<Overlays>()
             .init_resource::<DockHidden>()
             .init_state::<Mode>()
@@ -153,12 +152,18 @@ impl Overlays {
 #[derive(Resource, Debug, Default, Clone, Copy, PartialEq, Eq)]
 pub struct DockHidden(pub bool);
 
-/// The latest thing the game has to tell the player.
+/// The latest thing the game has to tell the player: the HUD's, written only from [`Say`].
 ///
 /// It may be a save, a replay opened or refused, or a value refused; the HUD's replay line shows it
 /// until the next.
 #[derive(Resource, Debug, Default, Clone, PartialEq)]
 pub struct StatusMessage(pub Option<String>);
+
+/// Something to tell the player on the status line, sent by whichever plugin has news.
+///
+/// The HUD owns what the status line says ([`StatusMessage`]); the latest said wins.
+#[derive(Event, Debug, Clone, PartialEq)]
+pub struct Say(pub String);
 
 /// Returns where a UI node lies in the window, in logical pixels.
 ///

@@ -1391,3 +1391,49 @@ fn the_reader_check_finds_a_second_reader() {
     );
     assert_eq!(second_readers(&[file]).len(), 1);
 }
+
+/// Returns each line outside the HUD that writes the status line's text.
+///
+/// Every other plugin sends `Say`; the HUD alone keeps what the status line says.
+fn status_writers(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
+    let mut found = Vec::new();
+    for (path, code) in files {
+        let file = path.to_string_lossy().replace('\\', "/");
+        if file.starts_with("game/hud/") {
+            continue;
+        }
+        for (n, line) in code.lines().enumerate() {
+            let line = line.trim_start();
+            if [
+                "ResMut<StatusMessage>",
+                "ResMut<'w, StatusMessage>",
+                "resource_mut::<StatusMessage>",
+            ]
+            .iter()
+            .any(|write| line.contains(write))
+            {
+                found.push(format!("{file}:{}: {line}", n + 1));
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn only_the_hud_writes_the_status_line() {
+    let found = status_writers(&source_files());
+    assert!(
+        found.is_empty(),
+        "status written outside the HUD:\n{}",
+        found.join("\n")
+    );
+}
+
+#[test]
+fn the_status_check_finds_a_writer() {
+    let file = (
+        std::path::PathBuf::from("game/input/controls.rs"),
+        "fn f(mut status: ResMut<StatusMessage>) {}\n".to_owned(),
+    );
+    assert_eq!(status_writers(&[file]).len(), 1);
+}

@@ -158,9 +158,11 @@ fn a_message_under_the_scene_moves_nothing() {
         game.resize(size);
         game.update(4);
         let before = game.world().resource::<SceneViewport>().0;
-        game.world()
-            .resource_mut::<rubber_band_box::game::shared::StatusMessage>()
-            .0 = Some("replay over: 1234 steps, the recorded states to the bit (hash 0123456789abcdef), and more words to wrap".to_owned());
+        game.world().trigger(rubber_band_box::game::shared::Say(
+            "replay over: 1234 steps, the recorded states to the bit (hash 0123456789abcdef), and \
+             more words to wrap"
+                .to_owned(),
+        ));
         game.update(4);
         assert_eq!(game.world().resource::<SceneViewport>().0, before, "{size}");
         let (texts, _) = shown(&mut game);

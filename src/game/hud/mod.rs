@@ -16,7 +16,7 @@ use bevy::prelude::*;
 
 use crate::game::layout::{Slot, Slots};
 use crate::game::schedule::ScreenSystems;
-use crate::game::shared::{StatusMessage, hertz, readable, times};
+use crate::game::shared::{Say, StatusMessage, hertz, readable, times};
 use crate::game::simulation::{Clocks, StepStats};
 use crate::game::theme::{self, colour, size};
 use crate::physics::{Integrator, SceneParams};
@@ -27,12 +27,19 @@ pub struct HudPlugin;
 impl Plugin for HudPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Pace>()
+            .init_resource::<StatusMessage>()
+            .add_observer(hear)
             .add_systems(Startup, spawn_hud)
             .add_systems(
                 Update,
                 (measure_pace, show_hud).chain().in_set(ScreenSystems::Hud),
             );
     }
+}
+
+/// Keeps what a plugin said as the status line's latest news: the one writer of [`StatusMessage`].
+fn hear(say: On<Say>, mut status: ResMut<StatusMessage>) {
+    status.0 = Some(say.0.clone());
 }
 
 /// One line of the HUD, a `Text` entity named "HUD" and the line.

@@ -18,7 +18,7 @@ use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
 use crate::game::shared::FocusedKeys;
 use crate::game::shared::Learn;
-use crate::game::shared::{DockHidden, Overlay, Overlays, StatusMessage, readable};
+use crate::game::shared::{DockHidden, Overlay, Overlays, Say, readable};
 use crate::game::simulation::ResetScene;
 use crate::physics::{
     Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scene, SceneParams, TIME_SCALE_RANGE,
@@ -434,7 +434,6 @@ struct Controlled<'w> {
     fixed_time: ResMut<'w, Time<Fixed>>,
     overlays: ResMut<'w, Overlays>,
     dock_hidden: ResMut<'w, DockHidden>,
-    status: ResMut<'w, StatusMessage>,
 }
 
 /// Applies every action of this frame, in the order sent.
@@ -492,7 +491,7 @@ fn apply_actions(
             Action::HomeView => commands.trigger(HomeView),
             // The recorder saves and says where ([`crate::game::replays::recording`]).
             Action::Save => commands.trigger(SaveReplay),
-            Action::Open => open_replay(&mut c.status),
+            Action::Open => open_replay(&mut commands),
             Action::Learn => commands.trigger(Learn::Toggle),
             Action::NextChapter => commands.trigger(Learn::Next),
             Action::PreviousChapter => commands.trigger(Learn::Previous),
@@ -510,7 +509,7 @@ fn apply_actions(
             match next.check_playable() {
                 Ok(()) => *c.params = next,
                 Err(error) => {
-                    c.status.0 = Some(format!("refused: {error}; kept the old value"));
+                    commands.trigger(Say(format!("refused: {error}; kept the old value")));
                 }
             }
         }
@@ -521,15 +520,15 @@ fn apply_actions(
 ///
 /// In the browser the playback opens what is chosen; on the desktop, where dropping a file on
 /// the window opens it, the HUD says so.
-fn open_replay(status: &mut StatusMessage) {
+fn open_replay(commands: &mut Commands) {
     #[cfg(target_arch = "wasm32")]
     {
-        let _ = status;
+        let _ = commands;
         crate::game::web::choose_replay_file();
     }
     #[cfg(not(target_arch = "wasm32"))]
     {
-        status.0 = Some("drop a replay file on the window to play it".to_owned());
+        commands.trigger(Say("drop a replay file on the window to play it".to_owned()));
     }
 }
 

@@ -30,7 +30,7 @@ use crate::game::replays::recording::say_it_goes_on;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
 pub use crate::game::shared::Learn;
-use crate::game::shared::{DockHidden, Mode, Overlay, Overlays, StatusMessage};
+use crate::game::shared::{DockHidden, Mode, Overlay, Overlays, Say};
 use crate::game::simulation::{Band, Bodies, EnergyBooks, ResetScene, StepCount, acting_band};
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{AutoSettings, Integrator, SceneParams};
@@ -153,11 +153,11 @@ fn learn(learn: On<Learn>, mut commands: Commands) {
             (Learn::Chapter(index), Some(_)) if index <= last => go_to(world, index),
             (Learn::Chapter(index), None) if index <= last => enter_at(world, index),
             (Learn::Chapter(index), _) => {
-                world.resource_mut::<StatusMessage>().0 = Some(format!(
+                world.trigger(Say(format!(
                     "learn: no chapter {} (there are {})",
                     index + 1,
                     CHAPTERS.len()
-                ));
+                )));
             }
             (Learn::Predict(choice), Some(index))
                 if choice < CHAPTERS[index].prediction.choices.len() =>
@@ -195,7 +195,7 @@ fn share_the_chapter(share: On<ShareLink>, mut commands: Commands) {
             Ok(query) => publish(&query, false),
             Err(error) => format!("no link: {error}"),
         };
-        world.resource_mut::<StatusMessage>().0 = Some(said);
+        world.trigger(Say(said));
     });
 }
 

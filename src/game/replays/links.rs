@@ -11,7 +11,7 @@ use crate::game::replays::playback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::load_scene;
 use crate::game::schedule::GameSystems;
-use crate::game::shared::{DockHidden, Learn, Mode, Overlay, Overlays, SceneName, StatusMessage};
+use crate::game::shared::{DockHidden, Learn, Mode, Overlay, Overlays, Say, SceneName};
 use crate::game::simulation::set_fixed_step;
 use crate::physics::{Integrator, Scene, SceneParams};
 use crate::replay::link::{Link, LinkOverlays};
@@ -52,7 +52,7 @@ fn open_pending_link(mut commands: Commands) {
             if !problems.is_empty() {
                 let said = format!("link: not taken: {}", problems.join("; "));
                 warn!("{said}");
-                world.resource_mut::<StatusMessage>().0 = Some(said);
+                world.trigger(Say(said));
             }
         }
     });
@@ -195,7 +195,7 @@ fn share(share: On<ShareLink>, mut commands: Commands) {
             Ok(query) => publish(&query, game),
             Err(error) => format!("no link: {error}"),
         };
-        world.resource_mut::<StatusMessage>().0 = Some(said);
+        world.trigger(Say(said));
     });
 }
 

@@ -15,8 +15,8 @@ use bevy::prelude::*;
 use crate::game::pointer::PointerAction;
 use crate::game::replays::recording::{Recorder, say_it_goes_on};
 use crate::game::schedule::{AfterStepsSystems, GameSystems, PhysicsSystems};
+use crate::game::shared::Say;
 use crate::game::shared::SceneName;
-use crate::game::shared::StatusMessage;
 use crate::game::simulation::{
     Band, Bodies, ResetScene, RigidBox, placed, rigid_box, set_fixed_step,
 };
@@ -338,13 +338,13 @@ fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, Stri
                     Some(goes_on) => format!("{message}; {goes_on}"),
                     None => message,
                 };
-                world.resource_mut::<StatusMessage>().0 = Some(said);
+                world.trigger(Say(said));
             });
         }
         Err(error) => {
             let message = format!("cannot play {name}: {error}");
             commands.queue(move |world: &mut World| {
-                world.resource_mut::<StatusMessage>().0 = Some(message);
+                world.trigger(Say(message));
             });
         }
     }
@@ -355,7 +355,7 @@ fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, Stri
 /// In the browser it is said to the page too.
 fn report_the_end(
     playback: Res<Playback>,
-    mut status: ResMut<StatusMessage>,
+    mut commands: Commands,
     mut said: Local<Option<PlaybackEnd>>,
 ) {
     let Some(end) = playback.ended else {
@@ -367,7 +367,7 @@ fn report_the_end(
     *said = Some(end);
     let said = end.describe();
     info!("{said}");
-    status.0 = Some(said);
+    commands.trigger(Say(said.clone()));
     #[cfg(target_arch = "wasm32")]
     if let PlaybackEnd::Finished {
         steps,

@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 use bevy::prelude::*;
 
 use crate::game::schedule::PhysicsSystems;
-use crate::game::shared::{SceneName, StatusMessage};
+use crate::game::shared::{Say, SceneName};
 use crate::game::simulation::{Band, Bodies, ResetScene, StepSettings, acting_band};
 use crate::physics::BandEnds;
 use crate::replay::{Replay, Settings};
@@ -104,7 +104,7 @@ impl Recorder {
 pub fn say_it_goes_on(world: &mut World) {
     if let Some(goes_on) = world.resource::<Recorder>().goes_on() {
         info!("{goes_on}");
-        world.resource_mut::<StatusMessage>().0 = Some(goes_on);
+        world.trigger(Say(goes_on));
     }
 }
 
@@ -169,27 +169,23 @@ fn note_step_result(mut recorder: ResMut<Recorder>, boxes: Bodies) {
 /// Saves the game for the save control, to `--record`'s file if there is one.
 ///
 /// Otherwise it saves to a new file named by the time, in the working folder.
-fn save_on_request(
-    _save: On<SaveReplay>,
-    recorder: Res<Recorder>,
-    mut status: ResMut<StatusMessage>,
-) {
+fn save_on_request(_save: On<SaveReplay>, recorder: Res<Recorder>, mut commands: Commands) {
     #[cfg(not(target_arch = "wasm32"))]
     {
         let path = recorder.target.clone().unwrap_or_else(timestamped_name);
-        status.0 = Some(save(&recorder, &path).unwrap_or_else(|message| message));
+        commands.trigger(Say(save(&recorder, &path).unwrap_or_else(|message| message)));
     }
     // In the browser: offered as a download.
     #[cfg(target_arch = "wasm32")]
     {
-        status.0 = Some(match recorder.replay.as_ref() {
+        commands.trigger(Say(match recorder.replay.as_ref() {
             None => "nothing to save yet: no step has run".to_owned(),
             Some(replay) => {
                 let text = String::from_utf8_lossy(&replay.to_bytes()).into_owned();
                 let name = crate::game::web::download_replay(&text);
                 format!("saved {} steps as the download {name}", replay.steps)
             }
-        });
+        }));
     }
 }
 

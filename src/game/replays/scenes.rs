@@ -5,7 +5,7 @@
 use bevy::prelude::*;
 
 use crate::game::replays::playback;
-use crate::game::shared::StatusMessage;
+use crate::game::shared::Say;
 use crate::physics::{AutoSettings, Integrator, Scene, SceneParams};
 use crate::replay::script::scene_replay;
 
@@ -39,8 +39,6 @@ pub(crate) fn load_scene(world: &mut World, name: &str) {
         });
     match loaded {
         Ok(replay) => playback::open(world, replay),
-        Err(error) => {
-            world.resource_mut::<StatusMessage>().0 = Some(format!("cannot load {name}: {error}"))
-        }
+        Err(error) => world.trigger(Say(format!("cannot load {name}: {error}"))),
     }
 }
