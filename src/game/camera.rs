@@ -31,6 +31,7 @@ use bevy::window::PrimaryWindow;
 
 use crate::game::layout::SceneViewport;
 use crate::game::schedule::AfterBevySystems;
+use crate::game::shared::Apply;
 use crate::game::simulation::{Band, RenderSnapshots, ResetScene, interpolated_state};
 use crate::physics::{MassProperties, SCENE_SIZE};
 
@@ -41,6 +42,7 @@ impl Plugin for CameraPlugin {
         app.init_resource::<CameraFrame>()
             .add_observer(go_home)
             .add_observer(go_home_on_reset)
+            .add_observer(set_stage)
             .add_systems(
                 PostUpdate,
                 (zoom_and_pan, follow_the_box)
@@ -324,6 +326,11 @@ fn go_home(_home: On<HomeView>, mut frame: ResMut<CameraFrame>) {
     frame.pan = Vec2::ZERO;
     // At once, not eased.
     frame.shown = None;
+}
+
+/// Frames the stage sent (learn mode's chapter, or the tutorial's screen back).
+fn set_stage(apply: On<Apply<Stage>>, mut frame: ResMut<CameraFrame>) {
+    frame.stage = apply.0;
 }
 
 /// Starts the view over on a reset too.

@@ -5,7 +5,7 @@
 //! - [`play`]: the play command's set-up, the window, and the run;
 //! - [`schedule`]: the frame's order, every system set declared and ordered in one place;
 //! - [`shared`]: the resources several plugins read (the scene's name, the status line, what
-//!   shows);
+//!   shows) and [`shared::Apply`], the message a part of the setup is sent to its owner in;
 //! - [`theme`]: the fonts, the type scale, the palette and the spacing every text reads;
 //! - [`layout`]: the window's regions: the scene's viewport, the status and hint lines, the
 //!   dock of instrument cards;
@@ -14,6 +14,8 @@
 //! - [`mod@pointer`]: the mouse and the finger, which hold the band;
 //! - [`camera`]: what the scene shows (home, following the box, zoomed and panned) and the
 //!   map between the window and the world;
+//! - [`setup`]: what the game is set to, read whole and sent part by part to each part's
+//!   owner (learn mode keeps it across the mode);
 //! - [`replays`]: the game's side of replays and scenes: recording, playback, the scenes on
 //!   the number keys, links opened and shared;
 //! - [`ghosts`]: every integrator and a reference stepping beside the live box;
@@ -45,6 +47,7 @@ pub mod readouts;
 pub mod replays;
 pub mod schedule;
 pub mod screen;
+pub mod setup;
 pub mod shared;
 pub mod simulation;
 pub mod stability;

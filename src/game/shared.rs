@@ -3,6 +3,7 @@
 //! shows, the game's [`Mode`], and which keys a focused control takes ([`FocusedKeys`]). A leaf: it imports no plugin, so none of its readers
 //! imports another for them.
 
+use bevy::ecs::component::Mutable;
 use bevy::ecs::system::SystemParam;
 use bevy::input_focus::InputFocus;
 use bevy::prelude::*;
@@ -25,66 +26,45 @@ impl Plugin for SharedPlugin {
             .init_resource::<Overlays>()
             .init_resource::<DockHidden>()
             .init_state::<Mode>()
-            .keep_across_learn::<SceneName>()
-            .keep_across_learn::<Overlays>()
-            .keep_across_learn::<DockHidden>();
+            .owns::<SceneName>()
+            .owns::<Overlays>()
+            .owns::<DockHidden>();
     }
 }
 
-/// Into learn mode: Bevy runs it after `OnExit(Mode::Play)` and before `OnEnter(Mode::Learn)`.
+/// A part of the game's setup, sent to the plugin that owns it, which alone writes it.
 ///
-/// Each owner keeps its state here, before learn mode shows its chapter.
-pub const INTO_LEARN: OnTransition<Mode> = OnTransition {
-    exited: Mode::Play,
-    entered: Mode::Learn,
-};
+/// A key, the panel, a link, a scene, a replay, a chapter and leaving learn mode all send the
+/// settings they open this way; each owner applies its parts in its own observer (for a
+/// resource held whole, [`Owns::owns`]). Triggered from a system's commands, it is applied at
+/// that system's sync point, in the order sent.
+#[derive(Event, Debug, Clone)]
+pub struct Apply<P: Clone + Send + Sync + 'static>(pub P);
 
-/// Out of learn mode: after `OnExit(Mode::Learn)`, where the chapter stops.
-///
-/// Each owner puts its state back here.
-pub const OUT_OF_LEARN: OnTransition<Mode> = OnTransition {
-    exited: Mode::Learn,
-    entered: Mode::Play,
-};
-
-/// Keeps a plugin's resource across learn mode, which changes it to show its chapters.
-pub trait KeepAcrossLearn {
-    /// Keeps `R` as learn mode is entered and puts it back as the mode is left.
-    ///
-    /// Kept in [`INTO_LEARN`], put back in [`OUT_OF_LEARN`].
-    fn keep_across_learn<R: Resource + Clone>(&mut self) -> &mut Self;
+/// Makes a plugin the owner of a resource: the one writer, from the [`Apply`] sent for it.
+pub trait Owns {
+    /// Applies each `Apply<R>` sent by putting its value in the resource `R`.
+    fn owns<R: Resource + Component<Mutability = Mutable> + Clone>(&mut self) -> &mut Self;
 }
 
-impl KeepAcrossLearn for App {
-    fn keep_across_learn<R: Resource + Clone>(&mut self) -> &mut Self {
-        self.add_systems(INTO_LEARN, keep::<R>)
-            .add_systems(OUT_OF_LEARN, put_back::<R>)
+impl Owns for App {
+    fn owns<R: Resource + Component<Mutability = Mutable> + Clone>(&mut self) -> &mut Self {
+        self.add_observer(replace::<R>)
     }
 }
 
-/// A resource as learn mode found it.
-#[derive(Resource)]
-struct KeptAcrossLearn<R>(R);
-
-/// Keeps a copy of `R`.
-fn keep<R: Resource + Clone>(mut commands: Commands, resource: Option<Res<R>>) {
-    if let Some(resource) = resource {
-        commands.insert_resource(KeptAcrossLearn(resource.clone()));
-    }
-}
-
-/// Puts the copy of `R` back.
-fn put_back<R: Resource + Clone>(mut commands: Commands, kept: Option<Res<KeptAcrossLearn<R>>>) {
-    if let Some(kept) = kept {
-        commands.insert_resource(kept.0.clone());
-        commands.remove_resource::<KeptAcrossLearn<R>>();
-    }
+/// Puts the value sent in the resource (marked changed, as an insert marks it).
+fn replace<R: Resource + Component<Mutability = Mutable> + Clone>(
+    apply: On<Apply<R>>,
+    mut held: ResMut<R>,
+) {
+    *held = apply.0.clone();
 }
 
 /// What the game is doing: played freely, or walking the tutorial's chapters.
 ///
-/// Each plugin whose state learn mode changes keeps it across the mode ([`KeepAcrossLearn`]); a
-/// system that runs in one mode asks `in_state(Mode::Learn)`.
+/// Learn mode keeps the game's setup as it enters and sends it back as it leaves; a system that
+/// runs in one mode asks `in_state(Mode::Learn)`.
 #[derive(States, Debug, Default, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Mode {
     #[default]

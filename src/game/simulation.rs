@@ -18,7 +18,7 @@ use bevy::math::DVec2;
 use bevy::prelude::*;
 
 use crate::game::schedule::{self, GameSystems, PhysicsSystems};
-use crate::game::shared::{INTO_LEARN, KeepAcrossLearn, OUT_OF_LEARN};
+use crate::game::shared::{Apply, Owns};
 use crate::physics::{
     AngularState, AutoSettings, BandEnds, BodyState, Books, Bound, Energies, Forces, Integrator,
     LinearState, MassProperties, SceneParams, Stepper, damping_wrench,
@@ -34,11 +34,12 @@ impl Plugin for SimulationPlugin {
         app.init_resource::<SceneParams>()
             .init_resource::<Integrator>()
             .init_resource::<AutoSettings>()
-            .keep_across_learn::<SceneParams>()
-            .keep_across_learn::<Integrator>()
-            .keep_across_learn::<AutoSettings>()
-            .add_systems(INTO_LEARN, keep_the_box)
-            .add_systems(OUT_OF_LEARN, put_the_box_back)
+            .owns::<Integrator>()
+            .owns::<AutoSettings>()
+            .add_observer(set_params)
+            .add_observer(set_clock)
+            .add_observer(step_once)
+            .add_observer(place_the_box)
             .init_resource::<StepStats>()
             .init_resource::<ResetAt>()
             .init_resource::<StepCount>()
@@ -285,24 +286,18 @@ pub fn body_state(linear: &LinearState, angular: &AngularState) -> BodyState {
     }
 }
 
-/// Sets the fixed clock's step to `seconds` if the clock can keep it; tells whether it did.
-///
-/// The clock counts whole nanoseconds and panics on a zero step.
-pub(crate) fn set_fixed_step(time: &mut Time<Fixed>, seconds: f64) -> bool {
-    match Duration::try_from_secs_f64(seconds) {
-        Ok(step) if !step.is_zero() => {
-            time.set_timestep(step);
-            true
-        }
-        _ => false,
-    }
-}
-
 /// Applies the scene's step rate to the fixed clock, or refuses it with a message.
 ///
 /// Bevy's fixed clock counts whole nanoseconds and panics on a zero step: a rate it cannot
 /// represent is refused with a message, and the clock keeps its step.
 fn apply_step_rate(params: Res<SceneParams>, mut time: ResMut<Time<Fixed>>) {
+    set_step_rate(&params, &mut time);
+}
+
+/// Sets the fixed clock's step to the rate of `params`: the one place the step is written.
+///
+/// A rate the clock cannot keep is refused with a message, and the clock keeps its step.
+fn set_step_rate(params: &SceneParams, time: &mut Time<Fixed>) {
     let step = params
         .validate()
         .map_err(|error| error.to_string())
@@ -334,45 +329,73 @@ fn apply_mass(params: Res<SceneParams>, mut boxes: Query<&mut MassProperties, Wi
     }
 }
 
-/// The box and the clock's pace as learn mode found them.
-#[derive(Resource, Debug, Clone, Copy)]
-struct KeptBox {
-    body: Option<(BodyState, MassProperties)>,
-    speed: f64,
-    paused: bool,
+/// The game clock's pace: the time scale and whether it is paused (`Time<Virtual>`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Clock {
+    pub speed: f64,
+    pub paused: bool,
 }
 
-/// Keeps the box and the clock's pace as learn mode is entered.
-fn keep_the_box(mut commands: Commands, boxes: Bodies, time: Res<Time<Virtual>>) {
-    commands.insert_resource(KeptBox {
-        body: boxes.iter().next().map(|body| (body.state(), *body.mass)),
-        speed: time.relative_speed_f64(),
-        paused: time.is_paused(),
-    });
+impl Clock {
+    /// Returns the pace of `time`.
+    pub fn of(time: &Time<Virtual>) -> Self {
+        Self {
+            speed: time.relative_speed_f64(),
+            paused: time.is_paused(),
+        }
+    }
 }
 
-/// Puts the box and the clock's pace back as learn mode is left.
-fn put_the_box_back(
-    mut commands: Commands,
-    kept: Option<Res<KeptBox>>,
-    boxes: Query<Entity, With<RigidBox>>,
-    mut time: ResMut<Time<Virtual>>,
+/// The box put at a state with a mass, as learn mode found it (sent back as it leaves).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlacedBox {
+    pub state: BodyState,
+    pub mass: MassProperties,
+}
+
+/// Feed the fixed clock exactly one step of time (the single step, while paused).
+#[derive(Event, Debug, Clone, Copy, Default)]
+pub struct StepOnce;
+
+/// Takes the scene's parameters, and the fixed clock's step at their rate, at once.
+///
+/// At once, so that the steps still to come in this frame (a replay's settings record) take it.
+fn set_params(
+    apply: On<Apply<SceneParams>>,
+    mut params: ResMut<SceneParams>,
+    mut time: ResMut<Time<Fixed>>,
 ) {
-    let Some(kept) = kept else {
-        return;
-    };
-    time.set_relative_speed_f64(kept.speed);
-    if kept.paused {
+    *params = apply.0;
+    set_step_rate(&params, &mut time);
+}
+
+/// Sets the clock's pace.
+fn set_clock(apply: On<Apply<Clock>>, mut time: ResMut<Time<Virtual>>) {
+    let Clock { speed, paused } = apply.0;
+    time.set_relative_speed_f64(speed);
+    if paused {
         time.pause();
     } else {
         time.unpause();
     }
-    if let Some((state, mass)) = kept.body {
-        for body in &boxes {
-            commands.entity(body).insert(rigid_box(mass, state));
-        }
+}
+
+/// Feeds the fixed clock one step of time, so that one step runs while paused.
+fn step_once(_step: On<StepOnce>, mut time: ResMut<Time<Fixed>>) {
+    let step = time.timestep();
+    time.accumulate_overstep(step);
+}
+
+/// Puts every box at the state and mass sent.
+fn place_the_box(
+    apply: On<Apply<PlacedBox>>,
+    mut commands: Commands,
+    boxes: Query<Entity, With<RigidBox>>,
+) {
+    let PlacedBox { state, mass } = apply.0;
+    for body in &boxes {
+        commands.entity(body).insert(rigid_box(mass, state));
     }
-    commands.remove_resource::<KeptBox>();
 }
 
 /// Returns the box as components, in `state`, with nothing acting on it yet.

@@ -275,10 +275,11 @@ fn each_room_imports_only_the_rooms_under_it() {
 ///
 /// A room listed nowhere is a leaf ([`LEAF`]): a card such as the Readouts card, which only the
 /// wiring imports. So a new card is its folder and its lines in `game/mod.rs`, and nothing here.
-const GAME_LAYERS: [&[&str]; 9] = [
+const GAME_LAYERS: [&[&str]; 10] = [
     &["schedule", "shared", "theme", "web"],
     &["simulation", "budget"],
     &["ghosts", "layout", "pointer", "camera", "stability"],
+    &["setup"],
     &["replays"],
     &["learn"],
     &["input"],
@@ -1436,4 +1437,140 @@ fn the_status_check_finds_a_writer() {
         "fn f(mut status: ResMut<StatusMessage>) {}\n".to_owned(),
     );
     assert_eq!(status_writers(&[file]).len(), 1);
+}
+
+// --- Every setting written by its owner (issue 61). ---
+
+/// The exclusive functions and queued closures the game keeps, each with why.
+const EXCLUSIVE: [(&str, &str); 1] = [(
+    "game/schedule.rs: fn change_the_mode(world: &mut World) {",
+    "runs Bevy's StateTransition again, so a mode a control asked for this frame is in place \
+     for its steps; it writes State<Mode>, learn mode's, through Bevy",
+)];
+
+/// Returns each line of the game that takes the whole world or queues a closure over it.
+fn exclusive_lines(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
+    let mut found = Vec::new();
+    for (path, code) in files {
+        let file = path.to_string_lossy().replace('\\', "/");
+        if !file.starts_with("game/") {
+            continue;
+        }
+        for line in code.lines().map(str::trim) {
+            if !line.starts_with("//") && (line.contains("&mut World") || line.contains(".queue("))
+            {
+                found.push(format!("{file}: {line}"));
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn the_game_keeps_one_exclusive_system_and_says_why() {
+    let found = exclusive_lines(&source_files());
+    let kept: Vec<String> = EXCLUSIVE
+        .iter()
+        .map(|(line, _)| (*line).to_owned())
+        .collect();
+    assert_eq!(
+        found, kept,
+        "exclusive functions or queued closures in src/game"
+    );
+}
+
+/// Who may write each resource the game's settings are kept in: its owner's files.
+///
+/// `Time<Fixed>` has a second writer, the frame's budget, which drops the time a slow frame
+/// still owes (a message a step would cost a system a step: docs/peers.md).
+const OWNERS: [(&str, &[&str]); 14] = [
+    ("SceneParams", &["game/simulation.rs"]),
+    ("Integrator", &["game/simulation.rs"]),
+    ("AutoSettings", &["game/simulation.rs"]),
+    ("Time<Fixed>", &["game/simulation.rs", "game/budget.rs"]),
+    ("Time<Virtual>", &["game/simulation.rs"]),
+    ("Overlays", &["game/shared.rs"]),
+    ("DockHidden", &["game/shared.rs"]),
+    ("SceneName", &["game/shared.rs"]),
+    ("Cards", &["game/layout/"]),
+    ("CameraFrame", &["game/camera.rs"]),
+    ("Playback", &["game/replays/playback.rs"]),
+    ("StatusMessage", &["game/hud/"]),
+    ("InputFocus", &["game/input/focus.rs"]),
+    ("NextState<Mode>", &["game/learn/"]),
+];
+
+/// Returns each write of a setting's resource outside its owner's files.
+///
+/// A write is a `ResMut` of it, a `resource_mut` of it, or an `insert_resource` in a system
+/// (the play command's set-up, before the plugins, puts the first values in).
+fn foreign_writes(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
+    let mut found = Vec::new();
+    for (path, code) in files {
+        let file = path.to_string_lossy().replace('\\', "/");
+        if !file.starts_with("game/") {
+            continue;
+        }
+        for (n, line) in code.lines().enumerate() {
+            let line = line.trim();
+            if line.starts_with("//") {
+                continue;
+            }
+            if line.contains("insert_resource(") && file != "game/play.rs" {
+                found.push(format!("{file}:{}: {line}", n + 1));
+            }
+            for (resource, owners) in OWNERS {
+                let writes = [
+                    format!("ResMut<{resource}>"),
+                    format!("ResMut<'w, {resource}>"),
+                    format!("::{resource}>"),
+                    format!("resource_mut::<{resource}>"),
+                ];
+                let written = writes.iter().any(|write| {
+                    line.contains(write.as_str())
+                        && (write.starts_with("ResMut")
+                            || write.starts_with("resource_mut")
+                            || line.contains("ResMut<"))
+                });
+                if written && !owners.iter().any(|owner| file.starts_with(owner)) {
+                    found.push(format!("{file}:{}: {resource}: {line}", n + 1));
+                }
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn every_setting_is_written_by_its_owner() {
+    let found = foreign_writes(&source_files());
+    assert!(
+        found.is_empty(),
+        "settings written outside their owners:\n{}",
+        found.join("\n")
+    );
+}
+
+#[test]
+fn the_owner_check_finds_a_foreign_writer() {
+    let files = [
+        (
+            std::path::PathBuf::from("game/learn/mod.rs"),
+            "fn go_to(mut frame: ResMut<CameraFrame>) {}\n".to_owned(),
+        ),
+        (
+            std::path::PathBuf::from("game/access/mod.rs"),
+            "    mut focus: ResMut<bevy::input_focus::InputFocus>,\n".to_owned(),
+        ),
+        (
+            std::path::PathBuf::from("game/replays/links.rs"),
+            "    commands.insert_resource(params);\n".to_owned(),
+        ),
+    ];
+    assert_eq!(foreign_writes(&files).len(), 3);
+    let exclusive = (
+        std::path::PathBuf::from("game/learn/mod.rs"),
+        "fn go_to(world: &mut World, index: usize) {\n".to_owned(),
+    );
+    assert_eq!(exclusive_lines(&[exclusive]).len(), 1);
 }

@@ -436,6 +436,12 @@ pub fn audit_accumulators(bodies: Query<&ForceAccumulator>, mut audit: ResMut<Ac
     }
 }
 
+/// Opens `replay` in the running game, as a file dropped on it opens it.
+pub fn open_replay(world: &mut World, replay: Replay) {
+    world.trigger(rubber_band_box::game::replays::playback::OpenReplay(replay));
+    world.flush();
+}
+
 /// A small valid replay: a pull, a release, a reset, a change of settings.
 pub fn small_replay() -> Replay {
     let params = SceneParams::tutorial();

@@ -13,8 +13,8 @@ use std::time::Duration;
 use proptest::prelude::*;
 use serde_json::Value;
 
+use crate::common::open_replay;
 use common::{Game, small_replay};
-use rubber_band_box::game::replays::playback;
 use rubber_band_box::game::simulation::RigidBox;
 use rubber_band_box::physics::{AngularState, LinearState, MassProperties, SceneParams};
 use rubber_band_box::replay::Replay;
@@ -50,7 +50,7 @@ fn in_range(link: &Link) -> bool {
 /// Opens `replay` in a headless game and steps it: the box stays finite and the scene valid.
 fn played_in_a_game(replay: Replay) -> Result<(), TestCaseError> {
     let mut game = Game::new(Duration::from_millis(16));
-    playback::open(game.world(), replay);
+    open_replay(game.world(), replay);
     game.update(20);
     let world = game.world();
     prop_assert!(world.resource::<SceneParams>().check_playable().is_ok());

@@ -29,7 +29,6 @@ use rubber_band_box::game::input::controls::{Action, CONTROLS, Parameter};
 use rubber_band_box::game::input::panel::{PanelButton, PanelSlider};
 use rubber_band_box::game::layout::{CardButton, SceneViewport};
 use rubber_band_box::game::play::{PlayOptions, prepare};
-use rubber_band_box::game::replays::playback;
 use rubber_band_box::game::replays::recording::Recorder;
 use rubber_band_box::physics::MassProperties;
 
@@ -297,7 +296,7 @@ impl Monkey {
                     .unwrap_or_else(small_replay);
                 game.world()
                     .commands()
-                    .queue(move |world: &mut World| playback::open(world, replay));
+                    .queue(move |world: &mut World| open_replay(world, replay));
                 self.note(frame, format!("replay opened (own: {own})"));
             }
             78..81 => {

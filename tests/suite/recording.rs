@@ -9,7 +9,6 @@ use crate::common;
 
 use common::*;
 use rubber_band_box::game::input::controls::{Action, Parameter};
-use rubber_band_box::game::replays::playback;
 use rubber_band_box::game::replays::recording::Recorder;
 use rubber_band_box::game::shared::{Overlay, StatusMessage};
 use rubber_band_box::physics::{AutoSettings, BodyState, Scene};
@@ -170,7 +169,7 @@ fn learn_mode_and_an_opened_replay_keep_the_game_before_them() {
     pull(&mut game, 10);
     game.world()
         .commands()
-        .queue(|world: &mut World| playback::open(world, small_replay()));
+        .queue(|world: &mut World| open_replay(world, small_replay()));
     game.update(30);
     pull(&mut game, 10);
     let recorder = game.world().resource::<Recorder>();
@@ -363,7 +362,7 @@ fn an_opened_replay() -> Game {
     pull(&mut game, 10);
     game.world()
         .commands()
-        .queue(|world: &mut World| playback::open(world, small_replay()));
+        .queue(|world: &mut World| open_replay(world, small_replay()));
     game.update(20);
     pull(&mut game, 10);
     game

@@ -10,7 +10,7 @@ use proptest::prelude::*;
 
 use common::*;
 
-use rubber_band_box::game::replays::playback::{self, Playback, PlaybackEnd};
+use rubber_band_box::game::replays::playback::{Playback, PlaybackEnd};
 use rubber_band_box::game::replays::recording::Recorder;
 use rubber_band_box::game::shared::StatusMessage;
 use rubber_band_box::physics::BodyState;
@@ -475,7 +475,7 @@ fn a_replay_opened_mid_game_plays_from_its_start_and_says_whether_it_matched() {
     );
     game.update(30);
     let before = game.world().resource::<Trajectory>().0.len();
-    playback::open(game.world(), replay.clone());
+    open_replay(game.world(), replay.clone());
     until_the_playback_ends(&mut game);
     let states = game.world().resource::<Trajectory>().0[before..].to_vec();
     assert_eq!(bits(&states[..played.len()]), bits(&played));
@@ -490,7 +490,7 @@ fn a_replay_opened_mid_game_plays_from_its_start_and_says_whether_it_matched() {
 
     let mut tampered = replay.clone();
     tampered.hash = TrajectoryHash(1);
-    playback::open(game.world(), tampered);
+    open_replay(game.world(), tampered);
     until_the_playback_ends(&mut game);
     let Some(PlaybackEnd::Finished { hash, recorded, .. }) =
         game.world().resource::<Playback>().ended
@@ -730,7 +730,7 @@ fn a_replay_starting_away_from_the_centre_is_drawn_from_its_start() {
         replay.push_step(None, &stepper.state);
     }
     let mut game = Game::stepping();
-    playback::open(game.world(), replay);
+    open_replay(game.world(), replay);
     game.update(1);
     let world = game.world();
     let snapshots = *world

@@ -17,6 +17,7 @@ use bevy::input_focus::tab_navigation::{NavAction, TabNavigation};
 use bevy::prelude::*;
 use bevy::ui_widgets::{Activate, Button, SetSliderValue, Slider, SliderValueChange};
 
+use crate::game::input::focus::FocusControl;
 use crate::game::layout::{CardButton, Cards, SceneCanvas};
 use crate::game::schedule::ScreenSystems;
 use crate::game::shared::{Displayed, StatusMessage};
@@ -287,8 +288,6 @@ fn answer_requests(
     mut commands: Commands,
     buttons: Query<(), With<Button>>,
     sliders: Query<(), With<Slider>>,
-    mut focus: ResMut<bevy::input_focus::InputFocus>,
-    mut visible: ResMut<bevy::input_focus::InputFocusVisible>,
 ) {
     for ActionRequest(request) in requests.read() {
         let Some(entity) = Entity::try_from_bits(request.target_node.0) else {
@@ -310,8 +309,7 @@ fn answer_requests(
                 });
             }
             Action::Focus if buttons.contains(entity) || sliders.contains(entity) => {
-                focus.set(entity, bevy::input_focus::FocusCause::Navigated);
-                visible.0 = true;
+                commands.trigger(FocusControl(entity));
             }
             _ => {}
         }

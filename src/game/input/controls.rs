@@ -18,8 +18,8 @@ use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
 use crate::game::shared::FocusedKeys;
 use crate::game::shared::Learn;
-use crate::game::shared::{DockHidden, Overlay, Overlays, Say, readable};
-use crate::game::simulation::ResetScene;
+use crate::game::shared::{Apply, DockHidden, Overlay, Overlays, Say, readable};
+use crate::game::simulation::{Clock, ResetScene, StepOnce};
 use crate::physics::{
     Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scene, SceneParams, TIME_SCALE_RANGE,
 };
@@ -425,45 +425,66 @@ fn keys_to_actions(
     }
 }
 
-/// What the actions write.
+/// The settings the actions change, as their owners hold them.
 #[derive(SystemParam)]
 struct Controlled<'w> {
-    integrator: ResMut<'w, Integrator>,
-    params: ResMut<'w, SceneParams>,
-    virtual_time: ResMut<'w, Time<Virtual>>,
-    fixed_time: ResMut<'w, Time<Fixed>>,
-    overlays: ResMut<'w, Overlays>,
-    dock_hidden: ResMut<'w, DockHidden>,
+    integrator: Res<'w, Integrator>,
+    params: Res<'w, SceneParams>,
+    virtual_time: Res<'w, Time<Virtual>>,
+    overlays: Res<'w, Overlays>,
+    dock_hidden: Res<'w, DockHidden>,
+}
+
+/// The settings as this frame's actions leave them, sent to their owners once.
+#[derive(Clone, Copy, PartialEq)]
+struct Settings {
+    integrator: Integrator,
+    params: SceneParams,
+    clock: Clock,
+    overlays: Overlays,
+    dock_hidden: DockHidden,
+}
+
+impl Controlled<'_> {
+    fn now(&self) -> Settings {
+        Settings {
+            integrator: *self.integrator,
+            params: *self.params,
+            clock: Clock::of(&self.virtual_time),
+            overlays: *self.overlays,
+            dock_hidden: *self.dock_hidden,
+        }
+    }
 }
 
 /// Applies every action of this frame, in the order sent.
 ///
-/// k, the time scale and the step rate move by factors, so that a player reaches the hard cases
-/// in a few presses; each stays inside its range, and a scene parameter changes only if the
-/// whole scene stays valid.
+/// The settings the actions change are changed on a copy, and each part changed is sent to its
+/// owner once; the single steps, then the parts, then what the actions have to say, then the
+/// actions' other messages (a reset, a scene, learn mode...) go out in that order, so that a
+/// scene loaded or a reset in the same frame takes the settings sent before it. k, the time
+/// scale and the step rate move by factors, so that a player reaches the hard cases in a few
+/// presses; each stays inside its range, and a scene parameter changes only if the whole scene
+/// stays valid.
 fn apply_actions(
     mut actions: MessageReader<Action>,
     mut commands: Commands,
-    mut controlled: Controlled,
+    controlled: Controlled,
 ) {
+    let actions: Vec<Action> = actions.read().copied().collect();
+    let before = controlled.now();
+    let mut set = before;
+    let mut steps = 0;
+    let mut said = Vec::new();
     let scaled = |value: f64, factor: f64, range: Range| range.clamp(value * factor);
-    for &action in actions.read() {
-        let c = &mut controlled;
-        let mut next = *c.params;
+    for &action in &actions {
+        let mut next = set.params;
         match action {
-            Action::TogglePause if c.virtual_time.is_paused() => c.virtual_time.unpause(),
-            Action::TogglePause => c.virtual_time.pause(),
+            Action::TogglePause => set.clock.paused = !set.clock.paused,
             // While paused, the fixed clock is fed exactly one step of time.
-            Action::Step => {
-                if c.virtual_time.is_paused() {
-                    let step = c.fixed_time.timestep();
-                    c.fixed_time.accumulate_overstep(step);
-                }
-            }
-            // Each plugin puts back what it owns (see [`ResetScene`]).
-            Action::Reset => commands.trigger(ResetScene),
-            Action::NextIntegrator => *c.integrator = c.integrator.next(),
-            Action::Integrator(integrator) => *c.integrator = integrator,
+            Action::Step if set.clock.paused => steps += 1,
+            Action::NextIntegrator => set.integrator = set.integrator.next(),
+            Action::Integrator(integrator) => set.integrator = integrator,
             Action::Softer => next.stiffness = scaled(next.stiffness, 0.1, STIFFNESS_RANGE),
             Action::Stiffer => {
                 next.stiffness = scaled(
@@ -481,54 +502,90 @@ fn apply_actions(
             Action::Set(parameter, value) => parameter.set(&mut next, value),
             Action::Slower | Action::Faster => {
                 let factor = if action == Action::Slower { 0.5 } else { 2.0 };
-                let speed = c.virtual_time.relative_speed_f64();
-                c.virtual_time
-                    .set_relative_speed_f64(scaled(speed, factor, TIME_SCALE_RANGE));
+                set.clock.speed = scaled(set.clock.speed, factor, TIME_SCALE_RANGE);
             }
-            Action::Toggle(overlay) => c.overlays.toggle(overlay),
-            Action::ToggleDock => c.dock_hidden.0 = !c.dock_hidden.0,
-            // The view puts its camera back ([`HomeView`]).
-            Action::HomeView => commands.trigger(HomeView),
-            // The recorder saves and says where ([`crate::game::replays::recording`]).
-            Action::Save => commands.trigger(SaveReplay),
-            Action::Open => open_replay(&mut commands),
-            Action::Learn => commands.trigger(Learn::Toggle),
-            Action::NextChapter => commands.trigger(Learn::Next),
-            Action::PreviousChapter => commands.trigger(Learn::Previous),
-            Action::Predict(choice) => commands.trigger(Learn::Predict(choice)),
-            Action::PointMasses(by) => commands.trigger(Learn::PointMasses(by)),
-            Action::ShareLink => commands.trigger(ShareLink { game: false }),
-            Action::ShareGame => commands.trigger(ShareLink { game: true }),
-            Action::Scene(index) => {
-                if let Some(&name) = Scene::NAMES.get(index) {
-                    commands.trigger(LoadScene(name));
-                }
-            }
+            Action::Toggle(overlay) => set.overlays.toggle(overlay),
+            Action::ToggleDock => set.dock_hidden.0 = !set.dock_hidden.0,
+            Action::Open => said.extend(open_replay()),
+            _ => {}
         }
-        if next != *c.params {
+        if next != set.params {
             match next.check_playable() {
-                Ok(()) => *c.params = next,
-                Err(error) => {
-                    commands.trigger(Say(format!("refused: {error}; kept the old value")));
-                }
+                Ok(()) => set.params = next,
+                Err(error) => said.push(format!("refused: {error}; kept the old value")),
             }
         }
+    }
+    // Fed at the step in force, before a new rate's step is.
+    for _ in 0..steps {
+        commands.trigger(StepOnce);
+    }
+    send_changed(&mut commands, &before, &set);
+    for said in said {
+        commands.trigger(Say(said));
+    }
+    for action in actions {
+        send_message(&mut commands, action);
     }
 }
 
-/// Opens the file chooser in the browser, or on the desktop says how to open a replay.
+/// Sends each part of the settings that the actions changed to its owner.
+fn send_changed(commands: &mut Commands, before: &Settings, set: &Settings) {
+    if set.integrator != before.integrator {
+        commands.trigger(Apply(set.integrator));
+    }
+    if set.params != before.params {
+        commands.trigger(Apply(set.params));
+    }
+    if set.clock != before.clock {
+        commands.trigger(Apply(set.clock));
+    }
+    if set.overlays != before.overlays {
+        commands.trigger(Apply(set.overlays));
+    }
+    if set.dock_hidden != before.dock_hidden {
+        commands.trigger(Apply(set.dock_hidden));
+    }
+}
+
+/// Sends what an action asks of another plugin, which acts on it.
+fn send_message(commands: &mut Commands, action: Action) {
+    match action {
+        // Each plugin puts back what it owns (see [`ResetScene`]).
+        Action::Reset => commands.trigger(ResetScene),
+        // The view puts its camera back ([`HomeView`]).
+        Action::HomeView => commands.trigger(HomeView),
+        // The recorder saves and says where ([`crate::game::replays::recording`]).
+        Action::Save => commands.trigger(SaveReplay),
+        Action::Learn => commands.trigger(Learn::Toggle),
+        Action::NextChapter => commands.trigger(Learn::Next),
+        Action::PreviousChapter => commands.trigger(Learn::Previous),
+        Action::Predict(choice) => commands.trigger(Learn::Predict(choice)),
+        Action::PointMasses(by) => commands.trigger(Learn::PointMasses(by)),
+        Action::ShareLink => commands.trigger(ShareLink { game: false }),
+        Action::ShareGame => commands.trigger(ShareLink { game: true }),
+        Action::Scene(index) => {
+            if let Some(&name) = Scene::NAMES.get(index) {
+                commands.trigger(LoadScene(name));
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Opens the file chooser in the browser, or on the desktop returns how to open a replay.
 ///
-/// In the browser the playback opens what is chosen; on the desktop, where dropping a file on
-/// the window opens it, the HUD says so.
-fn open_replay(commands: &mut Commands) {
+/// In the browser the playback opens what is chosen; on the desktop dropping a file on the
+/// window opens it, which the HUD says.
+fn open_replay() -> Option<String> {
     #[cfg(target_arch = "wasm32")]
     {
-        let _ = commands;
         crate::game::web::choose_replay_file();
+        None
     }
     #[cfg(not(target_arch = "wasm32"))]
     {
-        commands.trigger(Say("drop a replay file on the window to play it".to_owned()));
+        Some("drop a replay file on the window to play it".to_owned())
     }
 }
 

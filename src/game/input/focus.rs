@@ -9,7 +9,9 @@
 use bevy::input::ButtonState;
 use bevy::input::keyboard::KeyboardInput;
 use bevy::input_focus::tab_navigation::{TabGroup, TabIndex, TabNavigationPlugin};
-use bevy::input_focus::{InputDispatchPlugin, InputFocus, InputFocusPlugin, InputFocusVisible};
+use bevy::input_focus::{
+    FocusCause, InputDispatchPlugin, InputFocus, InputFocusPlugin, InputFocusVisible,
+};
 use bevy::prelude::*;
 use bevy::ui_widgets::{Button, Slider};
 use bevy::window::PrimaryWindow;
@@ -30,6 +32,7 @@ impl Plugin for FocusPlugin {
             app.add_plugins(InputDispatchPlugin);
         }
         app.add_plugins(TabNavigationPlugin)
+            .add_observer(focus_control)
             .add_systems(Startup, group_the_ui_roots)
             .add_systems(
                 RunFixedMainLoop,
@@ -127,4 +130,18 @@ fn return_focus_to_the_scene(
         focus.clear();
         visible.0 = false;
     }
+}
+
+/// Focus a control, its ring shown as Tab shows it (a screen reader's request).
+#[derive(Event, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FocusControl(pub Entity);
+
+/// Focuses the control asked, as Tab would reach it.
+fn focus_control(
+    asked: On<FocusControl>,
+    mut focus: ResMut<InputFocus>,
+    mut visible: ResMut<InputFocusVisible>,
+) {
+    focus.set(asked.0, FocusCause::Navigated);
+    visible.0 = true;
 }

@@ -32,7 +32,7 @@ use bevy::ui_widgets::{
 use bevy::window::PrimaryWindow;
 
 use crate::game::schedule::{AfterBevySystems, ScreenSystems};
-use crate::game::shared::{DockHidden, KeepAcrossLearn, window_rect};
+use crate::game::shared::{DockHidden, Owns, window_rect};
 use crate::game::theme::{self, colour, size, space};
 use cards::Offered;
 pub use cards::{Card, CardButton, CardRegistry, CardSpec, Cards, RegisterCard};
@@ -54,7 +54,8 @@ impl Plugin for LayoutPlugin {
         app.init_resource::<UiScale>()
             .init_resource::<CardRegistry>()
             .init_resource::<Cards>()
-            .keep_across_learn::<Cards>()
+            .owns::<Cards>()
+            .add_observer(fold_card)
             .init_resource::<SceneViewport>()
             .add_systems(PreStartup, spawn_regions)
             .add_systems(
@@ -592,6 +593,26 @@ fn open_cards_switched_on(
         }
     }
     *before = now;
+}
+
+/// Fold a card, or open it (a click on its title).
+///
+/// On a tall window, where one card shows at a time, an open card folds and a folded one opens
+/// alone.
+#[derive(Event, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FoldCard(pub Card);
+
+/// Folds or opens the card asked, as the window's shape has it.
+fn fold_card(
+    fold: On<FoldCard>,
+    windows: Query<&Window, With<PrimaryWindow>>,
+    mut cards: ResMut<Cards>,
+) {
+    let shape = windows
+        .iter()
+        .next()
+        .map_or(Shape::Wide, |window| Shape::of(window.size()));
+    cards.toggle(fold.0, shape);
 }
 
 /// Publishes where Bevy's layout put the viewport node.

@@ -1,9 +1,11 @@
 //! Learn mode (`L`, the panel's `learn`): the tutorial's chapters ([`chapters::CHAPTERS`]),
 //! each on a scene of the core's table, its equations written with this frame's numbers
 //! ([`equations`]) in the dock's *Learn* card, and a task the game checks. The mode is the
-//! state [`Mode::Learn`]: each plugin the chapters change keeps its own state across the mode
-//! (`shared::KeepAcrossLearn`: the scene, the settings, the overlays, the dock, the cards, the
-//! clock and the box), and learn mode shows its chapter on `OnEnter` and stops it on `OnExit`.
+//! state [`Mode::Learn`]: on `OnEnter` learn mode keeps the game's setup
+//! (`crate::game::setup::Setup`: the scene, the settings, the overlays, the dock, the cards, the
+//! frame, the clock and the box) and shows its chapter; on `OnExit` it stops the chapter and
+//! sends the setup back. It writes nothing of another plugin's: each chapter's settings go to
+//! their owners as `shared::Apply`.
 
 pub mod chapters;
 pub mod draw;
@@ -20,17 +22,18 @@ use bevy::prelude::*;
 use self::chapters::{CHAPTERS, Equation};
 use self::equations::{GhostBooks, Quantities};
 use self::twin::{CentreTwin, TWIN_OFFSET};
-use crate::game::camera::{CameraFrame, Stage};
+use crate::game::camera::Stage;
 use crate::game::ghosts::{GhostKind, Ghosts};
-use crate::game::layout::{Card, CardSpec, Cards, RegisterCard, Slots, show_node};
+use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, show_node};
 use crate::game::pointer::Grip;
 use crate::game::replays::links::{ShareLink, publish};
-use crate::game::replays::playback::Playback;
-use crate::game::replays::recording::say_it_goes_on;
-use crate::game::replays::scenes::load_scene;
+use crate::game::replays::playback::StopPlayback;
+use crate::game::replays::recording::Recorder;
+use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
+use crate::game::setup::{CurrentSetup, Setup};
 pub use crate::game::shared::Learn;
-use crate::game::shared::{DockHidden, Mode, Overlay, Overlays, Say};
+use crate::game::shared::{Apply, DockHidden, Mode, Overlay, Say};
 use crate::game::simulation::{Band, Bodies, EnergyBooks, ResetScene, StepCount, acting_band};
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{AutoSettings, Integrator, SceneParams};
@@ -88,6 +91,8 @@ pub struct Learning {
     /// The point masses across the box (the moment of inertia's sum is over n × n).
     pub point_masses: u32,
     progress: Progress,
+    /// The game's setup as learn mode found it, sent back as the mode is left.
+    kept: Option<Setup>,
 }
 
 impl Default for Learning {
@@ -97,6 +102,7 @@ impl Default for Learning {
             done: [false; CHAPTERS.len()],
             point_masses: 4,
             progress: Progress::default(),
+            kept: None,
         }
     }
 }
@@ -132,8 +138,24 @@ fn keep_the_twin(
 
 /// Returns the chapter learn mode shows, or None out of learn mode.
 pub fn chapter_shown(world: &World) -> Option<usize> {
-    let learning = *world.resource::<State<Mode>>().get() == Mode::Learn;
-    learning.then(|| world.resource::<Learning>().chapter)
+    shown(
+        world.resource::<State<Mode>>(),
+        world.resource::<Learning>(),
+    )
+}
+
+/// Returns the chapter shown in `mode`, or None out of learn mode.
+fn shown(mode: &State<Mode>, learning: &Learning) -> Option<usize> {
+    (*mode.get() == Mode::Learn).then_some(learning.chapter)
+}
+
+/// What a learn control reads and writes: learn mode's own state, and the setup it changes.
+#[derive(SystemParam)]
+struct Teaching<'w, 's> {
+    mode: Res<'w, State<Mode>>,
+    next_mode: ResMut<'w, NextState<Mode>>,
+    learning: ResMut<'w, Learning>,
+    setup: CurrentSetup<'w, 's>,
 }
 
 /// Acts on a learn control at once, within the frame that sent it.
@@ -141,138 +163,156 @@ pub fn chapter_shown(world: &World) -> Option<usize> {
 /// Entering and leaving ask for a [`Mode`]; the frame's `GameSystems::ModeChange`, after the
 /// controls, runs Bevy's transition, so the chapter is in place before the frame's steps, as
 /// every other control is.
-fn learn(learn: On<Learn>, mut commands: Commands) {
-    let asked = *learn;
-    commands.queue(move |world: &mut World| {
-        let last = CHAPTERS.len() - 1;
-        match (asked, chapter_shown(world)) {
-            (Learn::Toggle, Some(_)) => switch_to(world, Mode::Play),
-            (Learn::Toggle, None) => enter_at(world, 0),
-            (Learn::Next, Some(index)) => go_to(world, (index + 1).min(last)),
-            (Learn::Previous, Some(index)) => go_to(world, index.saturating_sub(1)),
-            (Learn::Chapter(index), Some(_)) if index <= last => go_to(world, index),
-            (Learn::Chapter(index), None) if index <= last => enter_at(world, index),
-            (Learn::Chapter(index), _) => {
-                world.trigger(Say(format!(
-                    "learn: no chapter {} (there are {})",
-                    index + 1,
-                    CHAPTERS.len()
-                )));
-            }
-            (Learn::Predict(choice), Some(index))
-                if choice < CHAPTERS[index].prediction.choices.len() =>
-            {
-                let mut learning = world.resource_mut::<Learning>();
-                learning.progress.predicted = Some(choice);
-                learning.progress.verdict = None;
-            }
-            (Learn::PointMasses(by), Some(_)) => {
-                let mut learning = world.resource_mut::<Learning>();
-                let n = learning.point_masses.saturating_add_signed(by);
-                learning.point_masses = n.clamp(1, MOST_POINT_MASSES);
-            }
-            _ => {}
+fn learn(learn: On<Learn>, mut teaching: Teaching, mut commands: Commands) {
+    let last = CHAPTERS.len() - 1;
+    let learning = &mut *teaching.learning;
+    match (*learn, shown(&teaching.mode, learning)) {
+        (Learn::Toggle, Some(_)) => teaching.next_mode.set(Mode::Play),
+        (Learn::Toggle, None) => enter_at(&mut teaching, 0),
+        (Learn::Next, Some(index)) => {
+            go_to(
+                &mut commands,
+                &teaching.setup.get(),
+                learning,
+                (index + 1).min(last),
+            );
         }
-    });
+        (Learn::Previous, Some(index)) => {
+            go_to(
+                &mut commands,
+                &teaching.setup.get(),
+                learning,
+                index.saturating_sub(1),
+            );
+        }
+        (Learn::Chapter(index), Some(_)) if index <= last => {
+            go_to(&mut commands, &teaching.setup.get(), learning, index);
+        }
+        (Learn::Chapter(index), None) if index <= last => enter_at(&mut teaching, index),
+        (Learn::Chapter(index), _) => {
+            commands.trigger(Say(format!(
+                "learn: no chapter {} (there are {})",
+                index + 1,
+                CHAPTERS.len()
+            )));
+        }
+        (Learn::Predict(choice), Some(index))
+            if choice < CHAPTERS[index].prediction.choices.len() =>
+        {
+            learning.progress.predicted = Some(choice);
+            learning.progress.verdict = None;
+        }
+        (Learn::PointMasses(by), Some(_)) => {
+            let n = learning.point_masses.saturating_add_signed(by);
+            learning.point_masses = n.clamp(1, MOST_POINT_MASSES);
+        }
+        _ => {}
+    }
 }
 
 /// Writes the link of the chapter shown (`?v=1&learn=N`), as the share control asks in learn mode.
 ///
 /// Everything else of the game is the chapter's own, so the link needs nothing more.
-fn share_the_chapter(share: On<ShareLink>, mut commands: Commands) {
+fn share_the_chapter(
+    share: On<ShareLink>,
+    mode: Res<State<Mode>>,
+    learning: Res<Learning>,
+    mut commands: Commands,
+) {
     if share.game {
         return;
     }
-    commands.queue(|world: &mut World| {
-        let Some(index) = chapter_shown(world) else {
-            return;
-        };
-        let link = Link {
-            learn: Some(index as u32 + 1),
-            ..default()
-        };
-        let said = match link.to_query() {
-            Ok(query) => publish(&query, false),
-            Err(error) => format!("no link: {error}"),
-        };
-        world.trigger(Say(said));
-    });
+    let Some(index) = shown(&mode, &learning) else {
+        return;
+    };
+    let link = Link {
+        learn: Some(index as u32 + 1),
+        ..default()
+    };
+    let said = match link.to_query() {
+        Ok(query) => publish(&query, false),
+        Err(error) => format!("no link: {error}"),
+    };
+    commands.trigger(Say(said));
 }
 
 /// Enters learn mode at chapter `index`.
-fn enter_at(world: &mut World, index: usize) {
-    world.resource_mut::<Learning>().chapter = index;
-    switch_to(world, Mode::Learn);
+///
+/// Bevy's transition puts the mode in place, `OnExit` and `OnEnter` included; the frame runs it
+/// after the controls (`GameSystems::ModeChange`), so the chapter is in place for this frame's
+/// steps.
+fn enter_at(teaching: &mut Teaching, index: usize) {
+    teaching.learning.chapter = index;
+    teaching.next_mode.set(Mode::Learn);
 }
 
-/// Asks for the mode: Bevy's transition puts it in place, `OnExit` and `OnEnter` included.
-///
-/// The frame runs the transition after the controls (`GameSystems::ModeChange`), so the
-/// chapter is in place for this frame's steps.
-fn switch_to(world: &mut World, mode: Mode) {
-    world.resource_mut::<NextState<Mode>>().set(mode);
+/// Keeps the game's setup as learn mode is entered, then shows the chapter asked.
+fn show_the_chapter(mut learning: ResMut<Learning>, setup: CurrentSetup, mut commands: Commands) {
+    let now = setup.get();
+    let index = learning.chapter;
+    go_to(&mut commands, &now, &mut learning, index);
+    learning.kept = Some(now);
 }
 
-/// Shows the chapter asked as learn mode is entered.
+/// Shows chapter `index` in learn mode, the game being set as `now` says.
 ///
-/// Each plugin whose state the chapter changes has kept it already ([`INTO_LEARN`]).
-fn show_the_chapter(world: &mut World) {
-    let index = world.resource::<Learning>().chapter;
-    go_to(world, index);
-}
-
-/// Shows chapter `index` in learn mode.
-///
-/// The chapter's scene is loaded (its scripted pull plays until the player presses), its
-/// integrator put in place, its prediction and experiment started over, the *Learn* card open.
-fn go_to(world: &mut World, index: usize) {
+/// Its integrator is sent, then its scene loaded with it (its scripted pull plays until the
+/// player presses), its overlays, dock, card and frame sent; its prediction and experiment
+/// start over.
+fn go_to(commands: &mut Commands, now: &Setup, learning: &mut Learning, index: usize) {
     let Some(chapter) = CHAPTERS.get(index) else {
         return;
     };
-    if let Some(integrator) = chapter.integrator.and_then(|name| name.parse().ok()) {
-        world.insert_resource::<Integrator>(integrator);
+    if let Some(integrator) = chapter
+        .integrator
+        .and_then(|name| name.parse::<Integrator>().ok())
+    {
+        commands.trigger(Apply(integrator));
     }
-    load_scene(world, chapter.scene);
-    let mut overlays = world.resource_mut::<Overlays>();
+    commands.trigger(LoadScene(chapter.scene));
+    let mut overlays = now.overlays;
     // The arrows of force and velocity are the chapters' pictures.
     overlays.set(Overlay::Vectors, true);
     // The update loop's seed and explicit Euler step beside the box as ghosts.
     if chapter.ghosts {
         overlays.set(Overlay::Ghosts, true);
     }
+    commands.trigger(Apply(overlays));
     // The chapter is in the dock: it shows.
-    world.resource_mut::<DockHidden>().0 = false;
-    world.resource_mut::<Cards>().set(Card::LEARN, true);
+    commands.trigger(Apply(DockHidden(false)));
+    let mut cards = now.cards.clone();
+    cards.set(Card::LEARN, true);
+    commands.trigger(Apply(cards));
     let [left, bottom, right, top] = chapter.frame;
-    world.resource_mut::<CameraFrame>().stage = Stage {
+    commands.trigger(Apply(Stage {
         close: Some(Rect::new(left, bottom, right, top)),
         copy_at: chapter.centre_twin.then_some(TWIN_OFFSET.as_vec2()),
-    };
-    let mut learning = world.resource_mut::<Learning>();
+    }));
     learning.chapter = index;
     learning.progress = Progress::default();
 }
 
-/// Stops the chapter as learn mode is left: its script, its bands, its books and its frame.
+/// Stops the chapter as learn mode is left, and sends back the setup kept as it was entered.
 ///
-/// Each plugin then puts back what it kept ([`OUT_OF_LEARN`]): the scene, the settings, the
-/// overlays, the dock, the clock and the box.
-fn stop_the_chapter(world: &mut World) {
-    world.resource_mut::<CameraFrame>().stage = Stage::default();
-    // The chapter's script stops, its bands go, the books start over (as a reset does).
-    world.insert_resource(Playback::default());
-    world.trigger(ResetScene);
-    world.flush();
-    let bands: Vec<Entity> = world
-        .query_filtered::<Entity, With<Band>>()
-        .iter(world)
-        .collect();
-    for band in bands {
-        world.despawn(band);
+/// The chapter's script stops, its bands go and the books start over (as a reset does); then
+/// the scene, the settings, the overlays, the dock, the cards, the frame, the clock and the box
+/// go back to their owners. The recorder notes the box put back as it notes any other change,
+/// and the player is told the recording goes on.
+fn stop_the_chapter(
+    mut learning: ResMut<Learning>,
+    recorder: Res<Recorder>,
+    mut commands: Commands,
+) {
+    commands.trigger(Apply(Stage::default()));
+    commands.trigger(StopPlayback);
+    commands.trigger(ResetScene);
+    if let Some(goes_on) = recorder.goes_on() {
+        info!("{goes_on}");
+        commands.trigger(Say(goes_on));
     }
-    // The recorder notes the box put back (in `OUT_OF_LEARN`, next) as it notes any other
-    // change, and says it goes on.
-    say_it_goes_on(world);
+    if let Some(kept) = learning.kept.take() {
+        kept.send(&mut commands);
+    }
 }
 
 /// Checks the chapter's experiment, after the frame's steps, against what the steps did.

@@ -4,16 +4,18 @@
 //! the address bar, the clipboard and the status line. A link the game cannot take whole is
 //! taken in part, and what was left is named on the status line.
 
+use bevy::ecs::system::SystemParam;
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
-use crate::game::replays::playback;
+use crate::game::replays::playback::OpenReplay;
 use crate::game::replays::recording::Recorder;
-use crate::game::replays::scenes::load_scene;
+use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
-use crate::game::shared::{DockHidden, Learn, Mode, Overlay, Overlays, Say, SceneName};
-use crate::game::simulation::set_fixed_step;
+use crate::game::shared::{Apply, DockHidden, Learn, Mode, Overlay, Overlays, Say, SceneName};
+use crate::game::simulation::Clock;
 use crate::physics::{Integrator, Scene, SceneParams};
+use crate::replay::Replay;
 use crate::replay::link::{Link, LinkOverlays};
 
 pub struct LinksPlugin;
@@ -45,17 +47,53 @@ pub struct ShareLink {
     pub game: bool,
 }
 
-fn open_pending_link(mut commands: Commands) {
-    commands.queue(|world: &mut World| {
-        if let Some(PendingLink { link, mut problems }) = world.remove_resource::<PendingLink>() {
-            problems.extend(open_link(world, link));
-            if !problems.is_empty() {
-                let said = format!("link: not taken: {}", problems.join("; "));
-                warn!("{said}");
-                world.trigger(Say(said));
-            }
+/// What is on screen, as the link of it says it.
+#[derive(SystemParam)]
+pub(crate) struct OnScreen<'w> {
+    params: Res<'w, SceneParams>,
+    scene: Res<'w, SceneName>,
+    overlays: Res<'w, Overlays>,
+    dock_hidden: Res<'w, DockHidden>,
+    virtual_time: Res<'w, Time<Virtual>>,
+    integrator: Res<'w, Integrator>,
+    recorder: Res<'w, Recorder>,
+}
+
+impl OnScreen<'_> {
+    fn shown(&self) -> Shown<'_> {
+        Shown {
+            params: *self.params,
+            scene: &self.scene.0,
+            overlays: *self.overlays,
+            dock_hidden: self.dock_hidden.0,
+            speed: self.virtual_time.relative_speed_f64(),
+            integrator: *self.integrator,
+            recording: self.recorder.replay.as_ref(),
         }
-    });
+    }
+}
+
+/// What a link writes of the game on screen.
+struct Shown<'a> {
+    params: SceneParams,
+    scene: &'a str,
+    overlays: Overlays,
+    dock_hidden: bool,
+    speed: f64,
+    integrator: Integrator,
+    recording: Option<&'a Replay>,
+}
+
+/// Opens the link `play --link` or the page's address gave, before the first step.
+fn open_pending_link(mut commands: Commands, pending: Res<PendingLink>, on_screen: OnScreen) {
+    commands.remove_resource::<PendingLink>();
+    let PendingLink { link, mut problems } = pending.clone();
+    problems.extend(open_link(&mut commands, link, &on_screen));
+    if !problems.is_empty() {
+        let said = format!("link: not taken: {}", problems.join("; "));
+        warn!("{said}");
+        commands.trigger(Say(said));
+    }
 }
 
 /// Puts `link` in place and returns what was not taken, and why.
@@ -63,8 +101,9 @@ fn open_pending_link(mut commands: Commands) {
 /// With a replay, the replay is played from its start (its scene and settings are the
 /// replay's, so the link's own settings keys are left, and named); else the integrator and the
 /// step rate, then the scene (loaded with them, as its number key does), then the scene's
-/// parameters the link overrides. Then the time scale and the overlays.
-fn open_link(world: &mut World, link: Link) -> Vec<String> {
+/// parameters the link overrides. Then the time scale and the overlays. Each is sent to its
+/// owner, in that order.
+fn open_link(commands: &mut Commands, link: Link, now: &OnScreen) -> Vec<String> {
     let mut problems = Vec::new();
     let settings_keys = link.settings_keys();
     if let Some(chapter) = link.learn {
@@ -79,8 +118,7 @@ fn open_link(world: &mut World, link: Link) -> Vec<String> {
                 left.join(", ")
             ));
         }
-        world.trigger(Learn::Chapter(chapter.saturating_sub(1) as usize));
-        world.flush();
+        commands.trigger(Learn::Chapter(chapter.saturating_sub(1) as usize));
     } else if let Some(replay) = link.replay {
         if !settings_keys.is_empty() {
             problems.push(format!(
@@ -88,20 +126,30 @@ fn open_link(world: &mut World, link: Link) -> Vec<String> {
                 settings_keys.join(", ")
             ));
         }
-        playback::open(world, replay);
+        commands.trigger(OpenReplay(replay));
     } else {
         if let Some(integrator) = link.integrator {
-            world.insert_resource(integrator);
+            commands.trigger(Apply(integrator));
         }
+        let mut params = *now.params;
         if let Some(rate) = link.step_rate_hz {
-            world.resource_mut::<SceneParams>().step_rate_hz = rate;
             // The scene below is loaded at this step (in range: the clock can keep it).
-            set_fixed_step(&mut world.resource_mut::<Time<Fixed>>(), 1.0 / rate);
+            params.step_rate_hz = rate;
+            commands.trigger(Apply(params));
         }
-        if let Some(scene) = &link.scene {
-            load_scene(world, scene);
+        if let Some(name) = &link.scene {
+            match Scene::named(name) {
+                Ok(scene) => {
+                    // Loaded as its key loads it: its parameters at the rate in force.
+                    commands.trigger(LoadScene(scene.name));
+                    params = SceneParams {
+                        step_rate_hz: params.step_rate_hz,
+                        ..scene.params
+                    };
+                }
+                Err(error) => commands.trigger(Say(format!("cannot load {name}: {error}"))),
+            }
         }
-        let mut params = *world.resource::<SceneParams>();
         let overrides = [
             (link.stiffness, &mut params.stiffness),
             (link.mass, &mut params.mass),
@@ -117,24 +165,26 @@ fn open_link(world: &mut World, link: Link) -> Vec<String> {
             params.size = DVec2::splat(side);
         }
         match params.check_playable() {
-            Ok(()) => world.insert_resource(params),
+            Ok(()) => commands.trigger(Apply(params)),
             Err(error) => problems.push(format!("{error}")),
         }
     }
-    if let Some(scale) = link.time_scale {
-        world
-            .resource_mut::<Time<Virtual>>()
-            .set_relative_speed_f64(scale);
+    if let Some(speed) = link.time_scale {
+        let paused = now.virtual_time.is_paused();
+        commands.trigger(Apply(Clock { speed, paused }));
     }
     let shown = link.overlays;
-    let mut overlays = world.resource_mut::<Overlays>();
+    let mut overlays = *now.overlays;
     for overlay in Overlay::ALL {
         if let Some(on) = shown.get(overlay) {
             overlays.set(overlay, on);
         }
     }
+    if overlays != *now.overlays {
+        commands.trigger(Apply(overlays));
+    }
     if let Some(on) = shown.dock {
-        world.resource_mut::<DockHidden>().0 = !on;
+        commands.trigger(Apply(DockHidden(!on)));
     }
     problems
 }
@@ -144,59 +194,81 @@ fn open_link(world: &mut World, link: Link) -> Vec<String> {
 /// The link has the keys that differ from what a fresh game starts with, so it holds only what
 /// the player changed.
 pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
-    let params = *world.resource::<SceneParams>();
-    let scene = &world.resource::<SceneName>().0;
-    // The tutorial's is the scene a fresh game shows (without its scripted pull).
-    let named = Scene::named(scene).ok().filter(|s| s.name != "tutorial");
-    let base = named.as_ref().map_or(SceneParams::tutorial(), |s| s.params);
-    let differs = |value: f64, base: f64| (value != base).then_some(value);
-    let overlays = *world.resource::<Overlays>();
-    let on = |on: bool| on.then_some(true);
-    let speed = world.resource::<Time<Virtual>>().relative_speed_f64();
-    let integrator = *world.resource::<Integrator>();
-    let mut link = Link {
-        time_scale: differs(speed, 1.0),
-        overlays: LinkOverlays {
-            // The ghosts are left out where the plot turns them on.
-            shown: Overlay::ALL.map(|overlay| {
-                let implied = overlay == Overlay::Ghosts && overlays.on(Overlay::Plot);
-                on(overlays.on(overlay) && !implied)
-            }),
-            dock: world.resource::<DockHidden>().0.then_some(false),
-        },
-        ..default()
-    };
-    if game {
-        let replay = world.resource::<Recorder>().replay.clone();
-        link.replay = Some(replay.ok_or("nothing recorded yet: pull the box first")?);
-    } else {
-        link.scene = named.map(|s| s.name.to_owned());
-        link.integrator = (integrator != Integrator::default()).then_some(integrator);
-        link.stiffness = differs(params.stiffness, base.stiffness);
-        link.mass = differs(params.mass, base.mass);
-        // A square box's side (every scene's box is square).
-        link.size = (params.size != base.size).then_some(params.size.x);
-        link.linear_damping = differs(params.linear_damping, base.linear_damping);
-        link.angular_damping = differs(params.angular_damping, base.angular_damping);
-        link.step_rate_hz = differs(params.step_rate_hz, base.step_rate_hz);
+    Shown {
+        params: *world.resource::<SceneParams>(),
+        scene: &world.resource::<SceneName>().0,
+        overlays: *world.resource::<Overlays>(),
+        dock_hidden: world.resource::<DockHidden>().0,
+        speed: world.resource::<Time<Virtual>>().relative_speed_f64(),
+        integrator: *world.resource::<Integrator>(),
+        recording: world.resource::<Recorder>().replay.as_ref(),
     }
-    Ok(link)
+    .link(game)
+}
+
+impl Shown<'_> {
+    /// Returns the link of what is shown, and with `game` the recording so far.
+    fn link(&self, game: bool) -> Result<Link, String> {
+        let params = self.params;
+        // The tutorial's is the scene a fresh game shows (without its scripted pull).
+        let named = Scene::named(self.scene)
+            .ok()
+            .filter(|s| s.name != "tutorial");
+        let base = named.as_ref().map_or(SceneParams::tutorial(), |s| s.params);
+        let differs = |value: f64, base: f64| (value != base).then_some(value);
+        let overlays = self.overlays;
+        let on = |on: bool| on.then_some(true);
+        let mut link = Link {
+            time_scale: differs(self.speed, 1.0),
+            overlays: LinkOverlays {
+                // The ghosts are left out where the plot turns them on.
+                shown: Overlay::ALL.map(|overlay| {
+                    let implied = overlay == Overlay::Ghosts && overlays.on(Overlay::Plot);
+                    on(overlays.on(overlay) && !implied)
+                }),
+                dock: self.dock_hidden.then_some(false),
+            },
+            ..default()
+        };
+        if game {
+            let replay = self.recording.cloned();
+            link.replay = Some(replay.ok_or("nothing recorded yet: pull the box first")?);
+        } else {
+            link.scene = named.map(|s| s.name.to_owned());
+            let integrator = self.integrator;
+            link.integrator = (integrator != Integrator::default()).then_some(integrator);
+            link.stiffness = differs(params.stiffness, base.stiffness);
+            link.mass = differs(params.mass, base.mass);
+            // A square box's side (every scene's box is square).
+            link.size = (params.size != base.size).then_some(params.size.x);
+            link.linear_damping = differs(params.linear_damping, base.linear_damping);
+            link.angular_damping = differs(params.angular_damping, base.angular_damping);
+            link.step_rate_hz = differs(params.step_rate_hz, base.step_rate_hz);
+        }
+        Ok(link)
+    }
 }
 
 /// Answers the share controls, writing the link where the player can take it.
-fn share(share: On<ShareLink>, mut commands: Commands) {
-    let game = share.game;
-    commands.queue(move |world: &mut World| {
-        // In learn mode the link is the chapter's, which learn mode writes.
-        if !game && *world.resource::<State<Mode>>().get() == Mode::Learn {
-            return;
-        }
-        let said = match current_link(world, game).and_then(|link| link.to_query()) {
-            Ok(query) => publish(&query, game),
-            Err(error) => format!("no link: {error}"),
-        };
-        world.trigger(Say(said));
-    });
+fn share(
+    share: On<ShareLink>,
+    mode: Res<State<Mode>>,
+    on_screen: OnScreen,
+    mut commands: Commands,
+) {
+    // In learn mode the link is the chapter's, which learn mode writes.
+    if !share.game && *mode.get() == Mode::Learn {
+        return;
+    }
+    let said = match on_screen
+        .shown()
+        .link(share.game)
+        .and_then(|link| link.to_query())
+    {
+        Ok(query) => publish(&query, share.game),
+        Err(error) => format!("no link: {error}"),
+    };
+    commands.trigger(Say(said));
 }
 
 /// Publishes the link and returns what the status line says.

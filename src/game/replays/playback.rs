@@ -9,17 +9,13 @@
 //! states the game has from there, so that at the replay's end the two hashes say whether the
 //! game stepped to the recorded bits.
 
-use bevy::ecs::system::SystemParam;
 use bevy::prelude::*;
 
 use crate::game::pointer::PointerAction;
-use crate::game::replays::recording::{Recorder, say_it_goes_on};
+use crate::game::replays::recording::Recorder;
 use crate::game::schedule::{AfterStepsSystems, GameSystems, PhysicsSystems};
-use crate::game::shared::Say;
-use crate::game::shared::SceneName;
-use crate::game::simulation::{
-    Band, Bodies, ResetScene, RigidBox, placed, rigid_box, set_fixed_step,
-};
+use crate::game::shared::{Apply, Say, SceneName};
+use crate::game::simulation::{Band, Bodies, ResetScene, RigidBox, placed, rigid_box};
 use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams};
 use crate::replay::play::{Player, Reader};
 use crate::replay::{Replay, Settings, TrajectoryHash};
@@ -29,6 +25,8 @@ pub struct PlaybackPlugin;
 impl Plugin for PlaybackPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Playback>()
+            .add_observer(open)
+            .add_observer(stop)
             .add_systems(
                 RunFixedMainLoop,
                 (
@@ -158,27 +156,19 @@ fn take_over_on_press(mut actions: MessageReader<PointerAction>, mut playback: R
     }
 }
 
-/// What a settings record puts in place.
-#[derive(SystemParam)]
-struct RecordedSettings<'w> {
-    params: ResMut<'w, SceneParams>,
-    integrator: ResMut<'w, Integrator>,
-    auto: ResMut<'w, AutoSettings>,
-    time: ResMut<'w, Time<Fixed>>,
-}
-
 /// The game as the one reader's [`Player`]: its box and settings.
 ///
 /// It is told what the replay's records put in place before a step.
-struct InTheGame<'a, 'c, 's, 'w> {
+struct InTheGame<'a, 'c, 's> {
     commands: &'a mut Commands<'c, 's>,
     body: Entity,
-    settings: &'a mut RecordedSettings<'w>,
+    /// The scene's parameters in force, as the records have put them.
+    params: SceneParams,
     /// A reset came before this step: its observers remove the old bands.
     reset: bool,
 }
 
-impl Player for InTheGame<'_, '_, '_, '_> {
+impl Player for InTheGame<'_, '_, '_> {
     fn reset(&mut self, start: BodyState, _step: u64) {
         // Its observers put the box, the books and the bands back before this step; the
         // replay's reset puts the box at the replay's start, not the game's.
@@ -189,21 +179,21 @@ impl Player for InTheGame<'_, '_, '_, '_> {
 
     fn settings(&mut self, recorded: &Settings, _step: u64) {
         let next = recorded.params();
-        let params = &mut self.settings.params;
-        if next.mass != params.mass || next.size != params.size {
+        if next.mass != self.params.mass || next.size != self.params.size {
             // Checked when the file was read.
             if let Ok(mass) = next.mass_properties() {
                 self.commands.entity(self.body).insert(mass);
             }
         }
-        **params = next;
-        *self.settings.integrator = recorded.integrator;
-        // Checked in the game's ranges when opened.
-        set_fixed_step(&mut self.settings.time, recorded.dt);
+        self.params = next;
+        // Their owner puts them in place before this step, the fixed clock's step at their
+        // rate with them (checked in the game's ranges when opened).
+        self.commands.trigger(Apply(next));
+        self.commands.trigger(Apply(recorded.integrator));
     }
 
     fn auto(&mut self, auto: AutoSettings, _step: u64) {
-        *self.settings.auto = auto;
+        self.commands.trigger(Apply(auto));
     }
 
     fn state(&mut self, state: BodyState, _step: u64) {
@@ -220,7 +210,7 @@ impl Player for InTheGame<'_, '_, '_, '_> {
 fn play_step(
     mut commands: Commands,
     mut playback: ResMut<Playback>,
-    mut settings: RecordedSettings,
+    params: Res<SceneParams>,
     boxes: Query<Entity, With<RigidBox>>,
     mut bands: Query<(Entity, &mut Band)>,
 ) {
@@ -232,7 +222,7 @@ fn play_step(
         return;
     };
     if playback.reader.at_start()
-        && let Ok(mass) = settings.params.mass_properties()
+        && let Ok(mass) = params.mass_properties()
     {
         // The recorded start (the game's is the box at rest at the centre).
         let start = BodyState::from_array(replay.header.initial);
@@ -241,7 +231,7 @@ fn play_step(
     let mut in_the_game = InTheGame {
         commands: &mut commands,
         body,
-        settings: &mut settings,
+        params: *params,
         reset: false,
     };
     let band = playback.reader.next_step(replay, &mut in_the_game);
@@ -301,29 +291,52 @@ fn place_band(
     }
 }
 
-/// Opens `replay` in the running game and plays it from its first step.
+/// Open a replay in the running game and play it from its first step.
 ///
-/// The scene is reset and the replay's settings put in place; the recorder goes on, and the
-/// player is told so. The caller has held the replay to the game's ranges
-/// (`Replay::check_playable`; a scene's script is made in them).
-pub fn open(world: &mut World, replay: Replay) {
+/// The caller has held the replay to the game's ranges (`Replay::check_playable`; a scene's
+/// script is made in them).
+#[derive(Event, Debug, Clone)]
+pub struct OpenReplay(pub Replay);
+
+/// Stop the playback, leaving the box where it is (learn mode left).
+#[derive(Event, Debug, Clone, Copy, Default)]
+pub struct StopPlayback;
+
+/// Opens a replay: the scene reset, its settings sent to their owners, its playback started.
+///
+/// The recorder goes on, and the player is told so.
+fn open(
+    open: On<OpenReplay>,
+    mut commands: Commands,
+    mut playback: ResMut<Playback>,
+    recorder: Res<Recorder>,
+) {
+    let replay = open.0.clone();
     let header = &replay.header;
-    let params = header.settings.params();
-    let integrator = header.settings.integrator;
-    let auto = AutoSettings::from(header.auto);
-    let dt = header.settings.dt;
-    world.trigger(ResetScene);
-    world.insert_resource(params);
-    world.insert_resource(integrator);
-    world.insert_resource(auto);
-    set_fixed_step(&mut world.resource_mut::<Time<Fixed>>(), dt);
-    world.insert_resource(SceneName(replay.header.scene.clone()));
-    world.insert_resource(Playback::of(replay));
-    say_it_goes_on(world);
+    commands.trigger(ResetScene);
+    commands.trigger(Apply(header.settings.params()));
+    commands.trigger(Apply(header.settings.integrator));
+    commands.trigger(Apply(AutoSettings::from(header.auto)));
+    commands.trigger(Apply(SceneName(header.scene.clone())));
+    *playback = Playback::of(replay);
+    if let Some(goes_on) = recorder.goes_on() {
+        info!("{goes_on}");
+        commands.trigger(Say(goes_on));
+    }
+}
+
+/// Stops the playback.
+fn stop(_stop: On<StopPlayback>, mut playback: ResMut<Playback>) {
+    *playback = Playback::default();
 }
 
 /// Plays a replay file's text the player opened, or says why it cannot be played.
-fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, String>) {
+fn open_or_refuse(
+    commands: &mut Commands,
+    recorder: &Recorder,
+    name: &str,
+    read: Result<Replay, String>,
+) {
     let read = read.and_then(|replay| {
         replay.check_playable().map_err(|error| error.to_string())?;
         Ok(replay)
@@ -331,22 +344,14 @@ fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, Stri
     match read {
         Ok(replay) => {
             let message = format!("playing {name} ({} steps)", replay.steps);
-            commands.queue(move |world: &mut World| {
-                open(world, replay);
-                let goes_on = world.resource::<Recorder>().goes_on();
-                let said = match goes_on {
-                    Some(goes_on) => format!("{message}; {goes_on}"),
-                    None => message,
-                };
-                world.trigger(Say(said));
-            });
+            let said = match recorder.goes_on() {
+                Some(goes_on) => format!("{message}; {goes_on}"),
+                None => message,
+            };
+            commands.trigger(OpenReplay(replay));
+            commands.trigger(Say(said));
         }
-        Err(error) => {
-            let message = format!("cannot play {name}: {error}");
-            commands.queue(move |world: &mut World| {
-                world.trigger(Say(message));
-            });
-        }
+        Err(error) => commands.trigger(Say(format!("cannot play {name}: {error}"))),
     }
 }
 
@@ -388,12 +393,13 @@ fn report_the_end(
 #[cfg(not(target_arch = "wasm32"))]
 fn open_dropped_files(
     mut commands: Commands,
+    recorder: Res<Recorder>,
     mut drops: MessageReader<bevy::window::FileDragAndDrop>,
 ) {
     for drop in drops.read() {
         if let bevy::window::FileDragAndDrop::DroppedFile { path_buf, .. } = drop {
             let name = path_buf.display().to_string();
-            open_or_refuse(&mut commands, &name, Replay::read_file(path_buf));
+            open_or_refuse(&mut commands, &recorder, &name, Replay::read_file(path_buf));
         }
     }
 }
@@ -404,15 +410,16 @@ mod page {
     use bevy::prelude::*;
     use wasm_bindgen::closure::Closure;
 
+    use crate::game::replays::recording::Recorder;
     use crate::game::web;
     use crate::replay::Replay;
     use crate::replay::run::ReplayRun;
 
-    pub fn open_chosen_files(mut commands: Commands) {
+    pub fn open_chosen_files(mut commands: Commands, recorder: Res<Recorder>) {
         let name = web::take_opened_name().unwrap_or_else(|| "the file".to_owned());
         if let Some(text) = web::take_opened_text() {
             let read = Replay::from_bytes(text.as_bytes()).map_err(|error| error.to_string());
-            super::open_or_refuse(&mut commands, &name, read);
+            super::open_or_refuse(&mut commands, &recorder, &name, read);
         }
     }
 

@@ -97,17 +97,6 @@ impl Recorder {
     }
 }
 
-/// Tells the player, on the status line and in the log, that the recording goes on.
-///
-/// Called where the game changes under it (a replay opened, learn mode left); nothing while it
-/// holds no step.
-pub fn say_it_goes_on(world: &mut World) {
-    if let Some(goes_on) = world.resource::<Recorder>().goes_on() {
-        info!("{goes_on}");
-        world.trigger(Say(goes_on));
-    }
-}
-
 /// Save the game so far (the save control).
 #[derive(Event, Debug, Clone, Copy, Default)]
 pub struct SaveReplay;

@@ -4,7 +4,7 @@
 
 use bevy::prelude::*;
 
-use crate::game::replays::playback;
+use crate::game::replays::playback::OpenReplay;
 use crate::game::shared::Say;
 use crate::physics::{AutoSettings, Integrator, Scene, SceneParams};
 use crate::replay::script::scene_replay;
@@ -21,24 +21,27 @@ impl Plugin for ScenesPlugin {
 #[derive(Event, Debug, Clone, Copy)]
 pub struct LoadScene(pub &'static str);
 
-fn load(load: On<LoadScene>, mut commands: Commands) {
-    let name = load.0;
-    commands.queue(move |world: &mut World| load_scene(world, name));
-}
-
 /// Loads a scene: its parameters at the player's step rate, its start, and its script playing.
-pub(crate) fn load_scene(world: &mut World, name: &str) {
+///
+/// The integrator, `auto`'s settings and the step rate are the player's, as sent before it.
+fn load(
+    load: On<LoadScene>,
+    mut commands: Commands,
+    params: Res<SceneParams>,
+    time: Res<Time<Fixed>>,
+    integrator: Res<Integrator>,
+    auto: Res<AutoSettings>,
+) {
+    let name = load.0;
     let loaded = Scene::named(name)
         .map_err(|unknown| unknown.to_string())
         .and_then(|mut scene| {
-            scene.params.step_rate_hz = world.resource::<SceneParams>().step_rate_hz;
-            let dt = world.resource::<Time<Fixed>>().timestep().as_secs_f64();
-            let integrator = *world.resource::<Integrator>();
-            let auto = *world.resource::<AutoSettings>();
-            scene_replay(&scene, dt, integrator, auto).map_err(|error| error.to_string())
+            scene.params.step_rate_hz = params.step_rate_hz;
+            let dt = time.timestep().as_secs_f64();
+            scene_replay(&scene, dt, *integrator, *auto).map_err(|error| error.to_string())
         });
     match loaded {
-        Ok(replay) => playback::open(world, replay),
-        Err(error) => world.trigger(Say(format!("cannot load {name}: {error}"))),
+        Ok(replay) => commands.trigger(OpenReplay(replay)),
+        Err(error) => commands.trigger(Say(format!("cannot load {name}: {error}"))),
     }
 }

@@ -7,7 +7,7 @@ use bevy::ui::UiGlobalTransform;
 use bevy::ui_widgets::{Activate, ActivateOnPress, Button};
 
 use crate::game::input::controls::Action;
-use crate::game::layout::{Card, CardButton, Cards, Shape};
+use crate::game::layout::{Card, CardButton, FoldCard};
 use crate::game::shared::window_rect;
 use crate::game::theme::{self, colour, size};
 
@@ -75,21 +75,14 @@ pub(super) fn spawn_button(
         .id()
 }
 
-fn press(does: PanelButton, cards: &mut Cards, shape: Shape, actions: &mut MessageWriter<Action>) {
+fn press(does: PanelButton, commands: &mut Commands, actions: &mut MessageWriter<Action>) {
     match does {
-        PanelButton::Fold(card) => cards.toggle(card, shape),
+        // The layout folds it, as the window's shape has it.
+        PanelButton::Fold(card) => commands.trigger(FoldCard(card)),
         PanelButton::Send(action) => {
             actions.write(action);
         }
     }
-}
-
-/// Returns the window's shape, for a card's title to fold as the dock is laid out.
-fn shape(windows: &Query<&Window, With<bevy::window::PrimaryWindow>>) -> Shape {
-    windows
-        .iter()
-        .next()
-        .map_or(Shape::Wide, |window| Shape::of(window.size()))
 }
 
 /// Returns what a button does: a panel button's own, or a card title's fold.
@@ -106,8 +99,7 @@ pub(super) fn press_button(
     activate: On<Activate>,
     buttons: Query<(Option<&PanelButton>, Option<&CardButton>)>,
     touches: Res<Touches>,
-    windows: Query<&Window, With<bevy::window::PrimaryWindow>>,
-    mut cards: ResMut<Cards>,
+    mut commands: Commands,
     mut actions: MessageWriter<Action>,
 ) {
     let fingers = touches.iter().next().is_some() || touches.any_just_released();
@@ -115,7 +107,7 @@ pub(super) fn press_button(
         && let Some(what) = does(panel, card)
         && !fingers
     {
-        press(what, &mut cards, shape(&windows), &mut actions);
+        press(what, &mut commands, &mut actions);
     }
 }
 
@@ -132,8 +124,7 @@ pub(super) fn tap_buttons(
         &ComputedNode,
         &UiGlobalTransform,
     )>,
-    windows: Query<&Window, With<bevy::window::PrimaryWindow>>,
-    mut cards: ResMut<Cards>,
+    mut commands: Commands,
     mut actions: MessageWriter<Action>,
 ) {
     for touch in touches.iter_just_pressed() {
@@ -147,7 +138,7 @@ pub(super) fn tap_buttons(
         if let Some((panel, card, ..)) = tapped
             && let Some(what) = does(panel, card)
         {
-            press(what, &mut cards, shape(&windows), &mut actions);
+            press(what, &mut commands, &mut actions);
         }
     }
 }
