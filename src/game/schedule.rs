@@ -15,9 +15,10 @@
 //! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
 //!    interpolated between the last two steps, the end of a playback said, learn mode's task
 //!    checked;
-//! 4. `Update`, [`ScreenSystems`]: the regions arranged for the window, the status line, the
-//!    hint and the window title, the cards' lines, learn mode's card, the panel, the drawing
-//!    and the energy graph, then the plot;
+//! 4. `Update`, [`ScreenSystems`]: the regions arranged for the window, every text written
+//!    (the status line and the hint, the cards' lines, learn mode's card, the panel's values),
+//!    what Tab offers, the drawing and the energy graph, then the plot, then what a screen
+//!    reader hears;
 //! 5. `PostUpdate` and `Last`, [`AfterBevySystems`]: after Bevy's UI layout the layout says
 //!    where the scene's viewport lies, then the view is chosen for it and the scene camera
 //!    placed (before transforms propagate, so the frame drawn is the frame laid out); after
@@ -87,24 +88,24 @@ pub enum AfterStepsSystems {
     Conclude,
 }
 
-/// The screen's work in `Update`, in this order (the HUD, the cards and the panel write `Text`).
+/// The screen's work in `Update`: its phases, in this order.
+///
+/// Two features have a set of their own, because another must follow them: the plot (its
+/// chart's gizmos after the energy graph's) and the screen reader (after every text written).
 #[derive(SystemSet, Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum ScreenSystems {
     /// The regions arranged for the window's shape and the cards open, the UI's scale.
-    Scale,
-    /// The status line and the hint.
-    Hud,
-    /// The cards that write their own text (Readouts, Energy, Ghosts, Stability).
-    Cards,
-    /// Learn mode's card: the chapter and its equations with this frame's numbers.
-    Learn,
-    /// The panel's values and thumbs, read back from the resources.
-    Panel,
-    /// The box, the band and the overlays drawn, and the energy graph.
+    Arrange,
+    /// Every text the screen shows written from this frame's state.
     ///
-    /// The charts' gizmos are the graph's, then the plot's.
+    /// The status line and the hint, the cards' lines, learn mode's card, the panel's values
+    /// and thumbs. Each writer writes only its own texts, so they run in any order.
+    Write,
+    /// What Tab offers and the focus ring, for the nodes as this frame shows them.
+    Offer,
+    /// The box, the band and the overlays drawn, and the energy graph.
     Draw,
-    /// The ghosts' speed against error, in its card.
+    /// The ghosts' speed against error, in its card, over the energy graph's gizmos.
     Plot,
     /// What a screen reader hears: the names, the labels, the scene described (`access`).
     Access,
@@ -183,11 +184,9 @@ pub fn order_the_frame(app: &mut App) {
     .configure_sets(
         Update,
         (
-            ScreenSystems::Scale,
-            ScreenSystems::Hud,
-            ScreenSystems::Cards,
-            ScreenSystems::Learn,
-            ScreenSystems::Panel,
+            ScreenSystems::Arrange,
+            ScreenSystems::Write,
+            ScreenSystems::Offer,
             ScreenSystems::Draw,
             ScreenSystems::Plot,
             ScreenSystems::Access,

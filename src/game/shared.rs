@@ -1,7 +1,9 @@
-//! The resources several plugins of the game read, each initialised once, here
-//! ([`SharedPlugin`], added first by the game): the scene's name, the status line, what
-//! shows, the game's [`Mode`], and which keys a focused control takes ([`FocusedKeys`]). A leaf: it imports no plugin, so none of its readers
-//! imports another for them.
+//! What plugins at several levels of the game share, so that none imports another for it: the
+//! settings several read (the scene's name, what shows, the dock hidden, the game's [`Mode`]),
+//! initialised once here ([`SharedPlugin`], added first by the game), which own them; the
+//! messages several send ([`Apply`], a part of the setup to its owner; [`Say`], news for the
+//! status line the HUD owns; [`Learn`], a learn control); and which keys a focused control
+//! takes ([`FocusedKeys`]). It imports no plugin.
 
 use bevy::ecs::component::Mutable;
 use bevy::ecs::system::SystemParam;
@@ -145,49 +147,6 @@ pub struct StatusMessage(pub Option<String>);
 #[derive(Event, Debug, Clone, PartialEq)]
 pub struct Say(pub String);
 
-/// Returns where a UI node lies in the window, in logical pixels.
-///
-/// Logical pixels are what the pointer and the page use. It is the node's physical rectangle over
-/// the window's scale factor; `ComputedNode`'s inverse scale factor also divides by the UI scale,
-/// which is put back.
-pub fn window_rect(node: &ComputedNode, transform: &UiGlobalTransform, ui_scale: &UiScale) -> Rect {
-    let scale = node.inverse_scale_factor() * ui_scale.0;
-    Rect::from_center_size(transform.translation * scale, node.size() * scale)
-}
-
-/// Writes a value as a person reads it, the one format the HUD and the panel share.
-///
-/// The value is written whole or to three significant digits in the usual range (20, 5, 2.02,
-/// 0.05), in powers of ten beyond it (1.0e5, 3.2e-9).
-pub fn readable(value: f64) -> String {
-    let magnitude = value.abs();
-    if value == 0.0 {
-        "0".to_owned()
-    } else if !value.is_finite() || !(1e-2..1e4).contains(&magnitude) {
-        format!("{value:.1e}")
-    } else {
-        let decimals = (2 - magnitude.log10().floor() as i32).max(0) as usize;
-        let text = format!("{value:.decimals$}");
-        if text.contains('.') {
-            text.trim_end_matches('0').trim_end_matches('.').to_owned()
-        } else {
-            text
-        }
-    }
-}
-
-/// Writes a rate in hertz as every readout shows it: `100 Hz`, `62.5 Hz`.
-///
-/// The HUD's clock, the status line and the panel all write it so.
-pub fn hertz(rate: f64) -> String {
-    format!("{} Hz", readable(rate))
-}
-
-/// Writes the time scale as every readout shows it: `×1`, `×0.25`.
-pub fn times(scale: f64) -> String {
-    format!("×{}", readable(scale))
-}
-
 /// The keys every focused control takes: they move the focus.
 const FOCUS_KEYS: [KeyCode; 2] = [KeyCode::Tab, KeyCode::Escape];
 
@@ -217,26 +176,6 @@ pub struct FocusedKeys<'w, 's> {
 /// Returns the control that has the keyboard's focus, if one has (the window's is the scene's).
 pub fn focused_control(focus: &InputFocus, window: Option<Entity>) -> Option<Entity> {
     focus.get().filter(|&entity| Some(entity) != window)
-}
-
-/// Whether a UI node is displayed: it and every node above it (a folded card's are not).
-#[derive(SystemParam)]
-pub struct Displayed<'w, 's> {
-    nodes: Query<'w, 's, &'static Node>,
-    parents: Query<'w, 's, &'static ChildOf>,
-}
-
-impl Displayed<'_, '_> {
-    /// Tells whether `entity` and every node above it are displayed.
-    pub fn shown(&self, entity: Entity) -> bool {
-        std::iter::once(entity)
-            .chain(self.parents.iter_ancestors(entity))
-            .all(|node| {
-                self.nodes
-                    .get(node)
-                    .is_ok_and(|node| node.display != Display::None)
-            })
-    }
 }
 
 impl FocusedKeys<'_, '_> {

@@ -144,3 +144,36 @@ pub(crate) fn figures_font(size: f32) -> TextFont {
         ..TextFont::from_font_size(size)
     }
 }
+
+/// Writes a value as a person reads it, the one format the HUD and the panel share.
+///
+/// The value is written whole or to three significant digits in the usual range (20, 5, 2.02,
+/// 0.05), in powers of ten beyond it (1.0e5, 3.2e-9).
+pub fn readable(value: f64) -> String {
+    let magnitude = value.abs();
+    if value == 0.0 {
+        "0".to_owned()
+    } else if !value.is_finite() || !(1e-2..1e4).contains(&magnitude) {
+        format!("{value:.1e}")
+    } else {
+        let decimals = (2 - magnitude.log10().floor() as i32).max(0) as usize;
+        let text = format!("{value:.decimals$}");
+        if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_owned()
+        } else {
+            text
+        }
+    }
+}
+
+/// Writes a rate in hertz as every readout shows it: `100 Hz`, `62.5 Hz`.
+///
+/// The HUD's clock, the status line and the panel all write it so.
+pub fn hertz(rate: f64) -> String {
+    format!("{} Hz", readable(rate))
+}
+
+/// Writes the time scale as every readout shows it: `×1`, `×0.25`.
+pub fn times(scale: f64) -> String {
+    format!("×{}", readable(scale))
+}

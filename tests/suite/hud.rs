@@ -211,7 +211,7 @@ fn the_stability_line_says_how_close_the_band_is_to_blowing_the_integrator_up() 
 /// One format for the key(Action::ToggleDock) and the panel: numbers as a person reads them.
 #[test]
 fn numbers_are_shown_as_a_person_reads_them() {
-    use rubber_band_box::game::shared::readable;
+    use rubber_band_box::game::theme::readable;
     for (value, shown) in [
         (20.0, "20"),
         (5.0, "5"),
@@ -450,8 +450,8 @@ fn the_status_line_says_when_the_game_falls_behind_the_wall_clock() {
 }
 
 /// The step rate and the time scale read the same wherever they are written: the key(Action::ToggleDock)'s clock,
-/// the status line and the panel's values (one formatter, `shared::hertz`
-/// and `shared::times`; the panel once wrote 12.5 Hz as "12 Hz" and the clock "time x0.25").
+/// the status line and the panel's values (one formatter, `theme::hertz`
+/// and `theme::times`; the panel once wrote 12.5 Hz as "12 Hz" and the clock "time x0.25").
 #[test]
 fn the_rate_and_the_time_scale_read_the_same_everywhere() {
     let mut game = Game::stepping();

@@ -218,7 +218,7 @@ fn learn_modes_card_lays_out_at_six_sizes() {
 fn dock_scrollbar(game: &mut Game) -> ((Rect, bool), (Rect, bool)) {
     use bevy::ui_widgets::ScrollbarThumb;
     use rubber_band_box::game::layout::DockScrollbar;
-    use rubber_band_box::game::shared::window_rect;
+    use rubber_band_box::game::layout::window_rect;
     let world = game.world();
     let scale = UiScale(world.resource::<UiScale>().0);
     let track = world

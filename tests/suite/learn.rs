@@ -15,8 +15,9 @@ use rubber_band_box::game::input::controls::Parameter;
 use rubber_band_box::game::learn::chapters::{CHAPTERS, Task};
 use rubber_band_box::game::learn::twin::{CentreTwin, TWIN_OFFSET};
 use rubber_band_box::game::learn::{LINES, Learn, LearnText, Learning, chapter_shown};
-use rubber_band_box::game::shared::{Mode, Overlays, SceneName, readable};
+use rubber_band_box::game::shared::{Mode, Overlays, SceneName};
 use rubber_band_box::game::simulation::{Band, EnergyBooks, RigidBox};
+use rubber_band_box::game::theme::readable;
 use rubber_band_box::physics::{
     AngularState, BandEnds, BodyState, Integrator, LinearState, MassProperties, SceneParams,
 };

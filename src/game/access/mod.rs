@@ -17,10 +17,11 @@ use bevy::input_focus::tab_navigation::{NavAction, TabNavigation};
 use bevy::prelude::*;
 use bevy::ui_widgets::{Activate, Button, SetSliderValue, Slider, SliderValueChange};
 
+use crate::game::input::focus::Displayed;
 use crate::game::input::focus::FocusControl;
 use crate::game::layout::{CardButton, Cards, SceneCanvas};
 use crate::game::schedule::ScreenSystems;
-use crate::game::shared::{Displayed, StatusMessage};
+use crate::game::shared::StatusMessage;
 use crate::game::simulation::{Band, Bodies};
 use describe::{Seen, describe};
 

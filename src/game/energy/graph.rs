@@ -11,7 +11,7 @@ use super::lines::spawn_lines;
 use crate::game::layout::{Card, Slots};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::chart::{Canvas, ChartGizmos};
-use crate::game::shared::readable;
+use crate::game::theme::readable;
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::Energies;
 

@@ -16,9 +16,10 @@ use bevy::prelude::*;
 
 use crate::game::layout::{Slot, Slots};
 use crate::game::schedule::ScreenSystems;
-use crate::game::shared::{Say, StatusMessage, hertz, readable, times};
+use crate::game::shared::{Say, StatusMessage};
 use crate::game::simulation::{Clocks, StepStats};
 use crate::game::theme::{self, colour, size};
+use crate::game::theme::{hertz, readable, times};
 use crate::physics::{Integrator, SceneParams};
 use pace::{Pace, behind, measure_pace};
 
@@ -32,7 +33,10 @@ impl Plugin for HudPlugin {
             .add_systems(Startup, spawn_hud)
             .add_systems(
                 Update,
-                (measure_pace, show_hud).chain().in_set(ScreenSystems::Hud),
+                (measure_pace, show_hud)
+                    .chain()
+                    .in_set(ScreenSystems::Write)
+                    .ambiguous_with(ScreenSystems::Write),
             );
     }
 }

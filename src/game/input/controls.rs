@@ -18,8 +18,9 @@ use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
 use crate::game::shared::FocusedKeys;
 use crate::game::shared::Learn;
-use crate::game::shared::{Apply, DockHidden, Overlay, Overlays, Say, readable};
+use crate::game::shared::{Apply, DockHidden, Overlay, Overlays, Say};
 use crate::game::simulation::{Clock, ResetScene, StepOnce};
+use crate::game::theme::readable;
 use crate::physics::{
     Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scene, SceneParams, TIME_SCALE_RANGE,
 };

@@ -6,6 +6,7 @@
 //! the game's global keys do not fire for them ([`FocusedKeys`](crate::game::shared::FocusedKeys)). A click keeps no keyboard
 //! focus.
 
+use bevy::ecs::system::SystemParam;
 use bevy::input::ButtonState;
 use bevy::input::keyboard::KeyboardInput;
 use bevy::input_focus::tab_navigation::{TabGroup, TabIndex, TabNavigationPlugin};
@@ -17,7 +18,7 @@ use bevy::ui_widgets::{Button, Slider};
 use bevy::window::PrimaryWindow;
 
 use crate::game::schedule::{GameSystems, ScreenSystems};
-use crate::game::shared::{Displayed, focused_control};
+use crate::game::shared::focused_control;
 use crate::game::theme::colour;
 
 pub struct FocusPlugin;
@@ -42,7 +43,7 @@ impl Plugin for FocusPlugin {
                 Update,
                 (offer_what_is_shown, ring_the_focused)
                     .chain()
-                    .in_set(ScreenSystems::Panel),
+                    .in_set(ScreenSystems::Offer),
             );
     }
 }
@@ -144,4 +145,24 @@ fn focus_control(
 ) {
     focus.set(asked.0, FocusCause::Navigated);
     visible.0 = true;
+}
+
+/// Whether a UI node is displayed: it and every node above it (a folded card's are not).
+#[derive(SystemParam)]
+pub struct Displayed<'w, 's> {
+    nodes: Query<'w, 's, &'static Node>,
+    parents: Query<'w, 's, &'static ChildOf>,
+}
+
+impl Displayed<'_, '_> {
+    /// Tells whether `entity` and every node above it are displayed.
+    pub fn shown(&self, entity: Entity) -> bool {
+        std::iter::once(entity)
+            .chain(self.parents.iter_ancestors(entity))
+            .all(|node| {
+                self.nodes
+                    .get(node)
+                    .is_ok_and(|node| node.display != Display::None)
+            })
+    }
 }

@@ -68,7 +68,7 @@ pub trait RegisterCard {
     /// Registers a card that writes its own text, and its two systems.
     ///
     /// `spawn` fills its body at start-up, `write` writes it every frame, in
-    /// `ScreenSystems::Cards`. The cards' writers run in any order among themselves: each writes only its own texts.
+    /// `ScreenSystems::Write`. The texts' writers run in any order among themselves: each writes only its own texts.
     fn add_text_card<S, W>(
         &mut self,
         spec: CardSpec,
@@ -103,8 +103,8 @@ impl RegisterCard for App {
             .add_systems(
                 Update,
                 write
-                    .in_set(ScreenSystems::Cards)
-                    .ambiguous_with(ScreenSystems::Cards),
+                    .in_set(ScreenSystems::Write)
+                    .ambiguous_with(ScreenSystems::Write),
             )
     }
 }

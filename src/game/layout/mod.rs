@@ -32,7 +32,7 @@ use bevy::ui_widgets::{
 use bevy::window::PrimaryWindow;
 
 use crate::game::schedule::{AfterBevySystems, ScreenSystems};
-use crate::game::shared::{DockHidden, Owns, window_rect};
+use crate::game::shared::{DockHidden, Owns};
 use crate::game::theme::{self, colour, size, space};
 use cards::Offered;
 pub use cards::{Card, CardButton, CardRegistry, CardSpec, Cards, RegisterCard};
@@ -40,7 +40,7 @@ pub use scroll::{DockCards, DockScrollbar};
 use scroll::{scroll_the_dock, show_the_dock_scrollbar};
 use shape::{SHEET_SHARE, dock_width};
 pub use shape::{Shape, WINDOW_SIZE, ui_scale_for};
-pub use visible::{shown_texts, visible_rect};
+pub use visible::{shown_texts, visible_rect, window_rect};
 
 pub struct LayoutPlugin;
 
@@ -67,7 +67,7 @@ impl Plugin for LayoutPlugin {
                     scroll_the_dock,
                 )
                     .chain()
-                    .in_set(ScreenSystems::Scale),
+                    .in_set(ScreenSystems::Arrange),
             )
             .add_systems(
                 PostUpdate,

@@ -4,7 +4,7 @@
 use bevy::prelude::*;
 use bevy::window::PrimaryWindow;
 
-use crate::game::shared::window_rect;
+use super::visible::window_rect;
 use crate::game::theme::colour;
 
 /// The dock's cards, in a column that scrolls when they are taller than the dock.

@@ -5,7 +5,6 @@
 use bevy::prelude::*;
 use bevy::ui::{CalculatedClip, UiGlobalTransform};
 
-use crate::game::shared::window_rect;
 
 /// Returns the part of a node the window shows: its rectangle, in logical pixels, cut to its clip.
 ///
@@ -72,4 +71,14 @@ pub fn shown_texts(
             visible_text_rect(node, transform, clip, ui_scale).map(|rect| (text.0.clone(), rect))
         })
         .collect()
+}
+
+/// Returns where a UI node lies in the window, in logical pixels.
+///
+/// Logical pixels are what the pointer and the page use. It is the node's physical rectangle over
+/// the window's scale factor; `ComputedNode`'s inverse scale factor also divides by the UI scale,
+/// which is put back.
+pub fn window_rect(node: &ComputedNode, transform: &UiGlobalTransform, ui_scale: &UiScale) -> Rect {
+    let scale = node.inverse_scale_factor() * ui_scale.0;
+    Rect::from_center_size(transform.translation * scale, node.size() * scale)
 }

@@ -6,7 +6,7 @@ use bevy::math::DVec2;
 
 use super::chapters::Equation;
 use super::twin::Twin;
-use crate::game::shared::readable;
+use crate::game::theme::readable;
 use crate::physics::forces::ForceModel;
 use crate::physics::integrators::seed::{SeedStages, tutorial_stages};
 use crate::physics::{

@@ -5,7 +5,7 @@
 use bevy::math::DVec2;
 
 use super::chapters::Task;
-use crate::game::shared::readable;
+use crate::game::theme::readable;
 use crate::physics::{BandEnds, BodyState, kinetic_energy};
 use crate::physics::{MassProperties, SceneParams};
 

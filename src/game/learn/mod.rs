@@ -69,7 +69,8 @@ impl Plugin for LearnPlugin {
             Update,
             show_chapter
                 .run_if(in_state(Mode::Learn))
-                .in_set(ScreenSystems::Learn),
+                .in_set(ScreenSystems::Write)
+                .ambiguous_with(ScreenSystems::Write),
         );
     }
 }

@@ -11,9 +11,10 @@ use crate::game::input::controls::Parameter;
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, card_line};
 use crate::game::replays::playback::Playback;
 use crate::game::replays::recording::Recorder;
-use crate::game::shared::{SceneName, StatusMessage, hertz, times};
+use crate::game::shared::{SceneName, StatusMessage};
 use crate::game::simulation::{Bodies, Clocks, StepStats};
 use crate::game::theme::{self, colour, size};
+use crate::game::theme::{hertz, times};
 use crate::physics::{Integrator, Scene, SceneParams};
 
 impl Card {

@@ -7,8 +7,8 @@ use bevy::gizmos::config::{GizmoConfig, GizmoConfigGroup, GizmoLineConfig};
 use bevy::prelude::*;
 use bevy::ui::UiGlobalTransform;
 
+use crate::game::layout::window_rect;
 use crate::game::screen::view::CHART_LAYER;
-use crate::game::shared::window_rect;
 
 pub struct ChartPlugin;
 

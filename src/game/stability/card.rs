@@ -6,7 +6,7 @@ use bevy::prelude::*;
 
 use super::margins::StabilityMargins;
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, card_line};
-use crate::game::shared::readable;
+use crate::game::theme::readable;
 use crate::game::theme::{self, colour, size};
 use crate::physics::Integrator;
 use crate::physics::stability::{Limit, Margin};

@@ -7,8 +7,8 @@ use bevy::ui::UiGlobalTransform;
 use bevy::ui_widgets::{Activate, ActivateOnPress, Button};
 
 use crate::game::input::controls::Action;
+use crate::game::layout::window_rect;
 use crate::game::layout::{Card, CardButton, FoldCard};
-use crate::game::shared::window_rect;
 use crate::game::theme::{self, colour, size};
 
 /// What a panel button does.

@@ -25,9 +25,10 @@ use crate::game::learn::{
 #[cfg(target_arch = "wasm32")]
 use crate::game::schedule::AfterBevySystems;
 use crate::game::schedule::{GameSystems, ScreenSystems};
-use crate::game::shared::{DockHidden, Mode, Overlay, Overlays, SceneName, hertz, times};
+use crate::game::shared::{DockHidden, Mode, Overlay, Overlays, SceneName};
 use crate::game::simulation::Clocks;
 use crate::game::theme::{self, colour, size, space};
+use crate::game::theme::{hertz, times};
 use crate::physics::{Integrator, Scene, SceneParams};
 pub use buttons::PanelButton;
 #[cfg(target_arch = "wasm32")]
@@ -71,7 +72,8 @@ impl Plugin for PanelPlugin {
                 Update,
                 (show_state, show_values, place_thumbs)
                     .chain()
-                    .in_set(ScreenSystems::Panel),
+                    .in_set(ScreenSystems::Write)
+                    .ambiguous_with(ScreenSystems::Write),
             );
         #[cfg(target_arch = "wasm32")]
         app.add_systems(
