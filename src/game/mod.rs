@@ -72,17 +72,15 @@ impl Plugin for GameLogicPlugin {
             (simulation::SimulationPlugin, budget::BudgetPlugin),
             (pointer::PointerPlugin, camera::CameraPlugin),
             input::controls::ControlsPlugin,
-            replays::recording::RecordingPlugin,
-            replays::playback::PlaybackPlugin,
-            replays::scenes::ScenesPlugin,
-            replays::links::LinksPlugin,
+            replays::ReplaysPlugin,
             learn::LearnPlugin,
             ghosts::GhostsPlugin,
             stability::StabilityPlugin,
             (input::panel::PanelPlugin, input::focus::FocusPlugin),
             (
-                readouts::plugin,
+                readouts::ReadoutsPlugin,
                 energy::EnergyPlugin,
+                plot::PlotPlugin,
                 hud::HudPlugin,
                 access::AccessPlugin,
             ),
@@ -106,12 +104,8 @@ pub struct GameScreenPlugin;
 
 impl Plugin for GameScreenPlugin {
     fn build(&self, app: &mut App) {
-        app.add_plugins((
-            screen::ScreenPlugin,
-            ghosts::draw::GhostsDrawPlugin,
-            learn::draw::LearnDrawPlugin,
-            energy::EnergyGraphPlugin,
-            plot::WorkPrecisionPlotPlugin,
-        ));
+        // Each feature that draws adds its drawing when it finds the screen (`shared::Screen`).
+        app.init_resource::<shared::Screen>()
+            .add_plugins(screen::ScreenPlugin);
     }
 }

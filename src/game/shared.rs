@@ -63,6 +63,18 @@ fn replace<R: Resource + Component<Mutability = Mutable> + Clone>(
     *held = apply.0.clone();
 }
 
+/// The game has a screen: `GameScreenPlugin` puts it in.
+///
+/// Each feature that draws adds its drawing in its plugin's `finish` when it finds it, so that
+/// the headless game runs without.
+#[derive(Resource, Debug, Default)]
+pub struct Screen;
+
+/// Tells whether the app has a screen to draw on.
+pub fn has_screen(app: &App) -> bool {
+    app.world().contains_resource::<Screen>()
+}
+
 /// What the game is doing: played freely, or walking the tutorial's chapters.
 ///
 /// Learn mode keeps the game's setup as it enters and sends it back as it leaves; a system that

@@ -10,22 +10,22 @@ pub mod lines;
 
 use bevy::prelude::*;
 
+use crate::game::shared::has_screen;
+
 pub use history::EnergyHistory;
 
-/// The card, its lines and the history (headless too).
+/// The card, its lines and the history (headless too), and its graph with a screen.
 pub struct EnergyPlugin;
 
 impl Plugin for EnergyPlugin {
     fn build(&self, app: &mut App) {
         app.add_plugins((lines::plugin, history::plugin));
     }
-}
 
-/// The card's graph, which needs the screen's chart camera.
-pub struct EnergyGraphPlugin;
-
-impl Plugin for EnergyGraphPlugin {
-    fn build(&self, app: &mut App) {
-        app.add_plugins(graph::plugin);
+    /// Adds the card's graph, which needs the screen's chart camera.
+    fn finish(&self, app: &mut App) {
+        if has_screen(app) {
+            graph::plugin(app);
+        }
     }
 }

@@ -1,22 +1,18 @@
 //! The ghosts drawn over the scene: each a thin outline in its colour with its band, and their
-//! names in a column beside the reference that stays in view. It needs a window: the game's
-//! screen adds [`GhostsDrawPlugin`], as it does the other cards' drawing.
+//! names in a column beside the reference that stays in view. It needs a window: the ghosts'
+//! plugin adds it when the game has a screen.
 
 use bevy::prelude::*;
 
-use super::{Ghost, GhostKind, Ghosts};
+use super::steppers::{Ghost, GhostKind, Ghosts};
 use crate::game::camera::{SceneView, shown_area, world_per_pixel};
 use crate::game::schedule::ScreenSystems;
 use crate::game::simulation::RenderSnapshots;
 use crate::physics::{BodyState, Integrator, SCENE_SIZE};
 
 /// Draws the ghosts and their names.
-pub struct GhostsDrawPlugin;
-
-impl Plugin for GhostsDrawPlugin {
-    fn build(&self, app: &mut App) {
-        app.add_systems(Update, draw_ghosts.in_set(ScreenSystems::Draw));
-    }
+pub(super) fn plugin(app: &mut App) {
+    app.add_systems(Update, draw_ghosts.in_set(ScreenSystems::Draw));
 }
 
 /// A ghost's name, drawn beside its outline.

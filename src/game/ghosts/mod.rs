@@ -8,6 +8,8 @@ pub mod table;
 
 use bevy::prelude::*;
 
+use crate::game::shared::has_screen;
+
 pub use steppers::{Ghost, GhostKind, Ghosts};
 
 pub struct GhostsPlugin;
@@ -15,5 +17,11 @@ pub struct GhostsPlugin;
 impl Plugin for GhostsPlugin {
     fn build(&self, app: &mut App) {
         app.add_plugins((steppers::plugin, table::plugin));
+    }
+
+    fn finish(&self, app: &mut App) {
+        if has_screen(app) {
+            draw::plugin(app);
+        }
     }
 }

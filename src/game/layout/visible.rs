@@ -5,7 +5,6 @@
 use bevy::prelude::*;
 use bevy::ui::{CalculatedClip, UiGlobalTransform};
 
-
 /// Returns the part of a node the window shows: its rectangle, in logical pixels, cut to its clip.
 ///
 /// The clip is that of a node above, such as the scrolled dock. `None` when the node has no

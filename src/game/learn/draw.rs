@@ -1,14 +1,14 @@
 //! Learn mode's pictures of its equations, drawn over the scene in their colours: the arm and
 //! the torque's arc, the corner a press would take, the centre twin, the corner's velocity, the
-//! point masses and the axes' marker of positive θ. It needs a window: the game's screen adds
-//! [`LearnDrawPlugin`], as it does the other cards' drawing.
+//! point masses and the axes' marker of positive θ. It needs a window: learn mode's plugin adds
+//! it when the game has a screen.
 
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
-use super::Learning;
 use super::chapters::{CHAPTERS, Equation};
 use super::equations::point_mass_arms;
+use super::learning::Learning;
 use super::twin::CentreTwin;
 use crate::game::camera::{SceneView, viewport_rect};
 use crate::game::schedule::ScreenSystems;
@@ -18,17 +18,13 @@ use crate::game::theme::{VELOCITY_ARROW_SECONDS, colour, force_arrow};
 use crate::physics::{BodyState, MassProperties, SceneParams};
 
 /// Draws learn mode's pictures while the mode is on.
-pub struct LearnDrawPlugin;
-
-impl Plugin for LearnDrawPlugin {
-    fn build(&self, app: &mut App) {
-        app.add_systems(
-            Update,
-            draw_learning
-                .run_if(in_state(Mode::Learn))
-                .in_set(ScreenSystems::Draw),
-        );
-    }
+pub(super) fn plugin(app: &mut App) {
+    app.add_systems(
+        Update,
+        draw_learning
+            .run_if(in_state(Mode::Learn))
+            .in_set(ScreenSystems::Draw),
+    );
 }
 
 /// How far the torque's arc sweeps about the centre, in its sense, and its radius (world px).

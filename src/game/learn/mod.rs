@@ -11,9 +11,11 @@ pub mod chapters;
 pub mod draw;
 pub mod equations;
 mod experiments;
+mod learning;
 
 pub use self::experiments::Verdict;
 use self::experiments::{Look, Progress};
+pub use self::learning::{Learning, MOST_POINT_MASSES};
 pub mod twin;
 
 use bevy::ecs::system::SystemParam;
@@ -33,7 +35,7 @@ use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
 use crate::game::setup::{CurrentSetup, Setup};
 pub use crate::game::shared::Learn;
-use crate::game::shared::{Apply, DockHidden, Mode, Overlay, Say};
+use crate::game::shared::{Apply, DockHidden, Mode, Overlay, Say, has_screen};
 use crate::game::simulation::{Band, Bodies, EnergyBooks, ResetScene, StepCount, acting_band};
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{AutoSettings, Integrator, SceneParams};
@@ -73,54 +75,17 @@ impl Plugin for LearnPlugin {
                 .ambiguous_with(ScreenSystems::Write),
         );
     }
+
+    fn finish(&self, app: &mut App) {
+        if has_screen(app) {
+            draw::plugin(app);
+        }
+    }
 }
 
 impl Card {
     /// Learn mode's chapter (while in learn mode).
     pub const LEARN: Card = Card("learn");
-}
-
-/// Learn mode's chapters: the one shown, its prediction and experiment, what each chapter taught.
-///
-/// Whether the mode is on is the state [`Mode`], asked nowhere else.
-#[derive(Resource, Debug)]
-pub struct Learning {
-    /// The chapter shown in learn mode (the one it shows next when entered).
-    pub chapter: usize,
-    /// Each chapter's prediction found right by its experiment.
-    pub done: [bool; CHAPTERS.len()],
-    /// The point masses across the box (the moment of inertia's sum is over n × n).
-    pub point_masses: u32,
-    progress: Progress,
-    /// The game's setup as learn mode found it, sent back as the mode is left.
-    kept: Option<Setup>,
-}
-
-impl Default for Learning {
-    fn default() -> Self {
-        Self {
-            chapter: 0,
-            done: [false; CHAPTERS.len()],
-            point_masses: 4,
-            progress: Progress::default(),
-            kept: None,
-        }
-    }
-}
-
-/// The most point masses across the box.
-pub const MOST_POINT_MASSES: u32 = 64;
-
-impl Learning {
-    /// Returns the answer chosen for this chapter's prediction.
-    pub fn predicted(&self) -> Option<usize> {
-        self.progress.predicted
-    }
-
-    /// Returns what the chapter's experiment found last, against the answer held then.
-    pub fn verdict(&self) -> Option<&Verdict> {
-        self.progress.verdict.as_ref()
-    }
 }
 
 /// Places the twin while learn mode shows a chapter that has one, and drops it otherwise.

@@ -20,21 +20,27 @@ use crate::game::ghosts::{GhostKind, Ghosts};
 use crate::game::layout::{Card, CardSpec, RegisterCard, Slots, show_node};
 use crate::game::schedule::ScreenSystems;
 use crate::game::screen::chart::{Canvas, ChartGizmos, text_box};
-use crate::game::shared::{Overlay, Overlays};
+use crate::game::shared::{Overlay, Overlays, has_screen};
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{Integrator, SceneParams};
 use axes::{COST_DECADES, ERROR_DECADES, MARK, along, decade_label, label_every, place_labels};
 pub use axes::{PlotPoint, place, plot_frame, plot_points};
 
-pub struct WorkPrecisionPlotPlugin;
+/// The Speed against error card, with a screen (its canvas is the screen's chart camera's).
+pub struct PlotPlugin;
 
 impl Card {
     /// Speed against error (with the plot on).
     pub const PLOT: Card = Card("plot");
 }
 
-impl Plugin for WorkPrecisionPlotPlugin {
-    fn build(&self, app: &mut App) {
+impl Plugin for PlotPlugin {
+    fn build(&self, _app: &mut App) {}
+
+    fn finish(&self, app: &mut App) {
+        if !has_screen(app) {
+            return;
+        }
         app.register_card(CardSpec {
             card: Card::PLOT,
             title: "Speed against error",

@@ -22,16 +22,20 @@ impl Card {
     pub const READOUTS: Card = Card("readouts");
 }
 
-/// Registers the card and fills it.
-pub fn plugin(app: &mut App) {
-    if !app.is_plugin_added::<FrameTimeDiagnosticsPlugin>() {
-        app.add_plugins(FrameTimeDiagnosticsPlugin::default());
+/// The Readouts card: registered with the dock and filled each frame.
+pub struct ReadoutsPlugin;
+
+impl Plugin for ReadoutsPlugin {
+    fn build(&self, app: &mut App) {
+        if !app.is_plugin_added::<FrameTimeDiagnosticsPlugin>() {
+            app.add_plugins(FrameTimeDiagnosticsPlugin::default());
+        }
+        app.add_text_card(
+            CardSpec::always(Card::READOUTS, "Readouts", 30),
+            spawn_lines,
+            show_lines,
+        );
     }
-    app.add_text_card(
-        CardSpec::always(Card::READOUTS, "Readouts", 30),
-        spawn_lines,
-        show_lines,
-    );
 }
 
 /// One line of the card, a `Text` entity named "Readouts" and the line.

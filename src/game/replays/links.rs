@@ -18,17 +18,14 @@ use crate::physics::{Integrator, Scene, SceneParams};
 use crate::replay::Replay;
 use crate::replay::link::{Link, LinkOverlays};
 
-pub struct LinksPlugin;
-
-impl Plugin for LinksPlugin {
-    fn build(&self, app: &mut App) {
-        app.add_observer(share).add_systems(
-            RunFixedMainLoop,
-            open_pending_link
-                .run_if(resource_exists::<PendingLink>)
-                .in_set(GameSystems::Input),
-        );
-    }
+/// Opens the link the game started with, and answers the share controls.
+pub(super) fn plugin(app: &mut App) {
+    app.add_observer(share).add_systems(
+        RunFixedMainLoop,
+        open_pending_link
+            .run_if(resource_exists::<PendingLink>)
+            .in_set(GameSystems::Input),
+    );
 }
 
 /// A link to open before the first step, and what was wrong with it.

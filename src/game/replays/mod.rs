@@ -6,3 +6,19 @@ pub mod links;
 pub mod playback;
 pub mod recording;
 pub mod scenes;
+
+use bevy::prelude::*;
+
+/// The game's side of replays: the recorder, the playback, the scenes and the links.
+pub struct ReplaysPlugin;
+
+impl Plugin for ReplaysPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_plugins((
+            recording::plugin,
+            playback::plugin,
+            scenes::plugin,
+            links::plugin,
+        ));
+    }
+}

@@ -20,43 +20,40 @@ use crate::physics::{AutoSettings, BandEnds, BodyState, Integrator, SceneParams}
 use crate::replay::play::{Player, Reader};
 use crate::replay::{Replay, Settings, TrajectoryHash};
 
-pub struct PlaybackPlugin;
-
-impl Plugin for PlaybackPlugin {
-    fn build(&self, app: &mut App) {
-        app.init_resource::<Playback>()
-            .add_observer(open)
-            .add_observer(stop)
-            .add_systems(
-                RunFixedMainLoop,
-                (
-                    take_over_on_press.in_set(GameSystems::Input),
-                    // What this frame's steps did, before the HUD shows it.
-                    report_the_end
-                        .run_if(resource_changed::<Playback>)
-                        .in_set(AfterStepsSystems::Conclude),
-                ),
-            )
-            .add_systems(
-                FixedUpdate,
-                (
-                    play_step.in_set(PhysicsSystems::Playback),
-                    hash_the_played_state.in_set(PhysicsSystems::AfterStep),
-                ),
-            );
-        // A replay file opened is input: it acts on the very next step.
-        #[cfg(not(target_arch = "wasm32"))]
-        app.add_systems(
+/// Plays a replay opened, step by step, until it ends or a press takes over.
+pub(super) fn plugin(app: &mut App) {
+    app.init_resource::<Playback>()
+        .add_observer(open)
+        .add_observer(stop)
+        .add_systems(
             RunFixedMainLoop,
-            open_dropped_files.in_set(GameSystems::Input),
+            (
+                take_over_on_press.in_set(GameSystems::Input),
+                // What this frame's steps did, before the HUD shows it.
+                report_the_end
+                    .run_if(resource_changed::<Playback>)
+                    .in_set(AfterStepsSystems::Conclude),
+            ),
+        )
+        .add_systems(
+            FixedUpdate,
+            (
+                play_step.in_set(PhysicsSystems::Playback),
+                hash_the_played_state.in_set(PhysicsSystems::AfterStep),
+            ),
         );
-        #[cfg(target_arch = "wasm32")]
-        app.add_systems(Startup, page::expose_replay_hash)
-            .add_systems(
-                RunFixedMainLoop,
-                page::open_chosen_files.in_set(GameSystems::Input),
-            );
-    }
+    // A replay file opened is input: it acts on the very next step.
+    #[cfg(not(target_arch = "wasm32"))]
+    app.add_systems(
+        RunFixedMainLoop,
+        open_dropped_files.in_set(GameSystems::Input),
+    );
+    #[cfg(target_arch = "wasm32")]
+    app.add_systems(Startup, page::expose_replay_hash)
+        .add_systems(
+            RunFixedMainLoop,
+            page::open_chosen_files.in_set(GameSystems::Input),
+        );
 }
 
 /// How the latest playback ended.
@@ -419,7 +416,7 @@ mod page {
         let name = web::take_opened_name().unwrap_or_else(|| "the file".to_owned());
         if let Some(text) = web::take_opened_text() {
             let read = Replay::from_bytes(text.as_bytes()).map_err(|error| error.to_string());
-            super::open_or_refuse(&mut commands, &recorder, &name, read);
+            crate::game::replays::playback::open_or_refuse(&mut commands, &recorder, &name, read);
         }
     }
 

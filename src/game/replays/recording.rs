@@ -21,27 +21,24 @@ use crate::game::simulation::{Band, Bodies, ResetScene, StepSettings, acting_ban
 use crate::physics::BandEnds;
 use crate::replay::{Replay, Settings};
 
-pub struct RecordingPlugin;
-
-impl Plugin for RecordingPlugin {
-    fn build(&self, app: &mut App) {
-        app.init_resource::<Recorder>()
-            .add_observer(note_reset)
-            .add_observer(save_on_request)
-            .add_systems(
-                FixedUpdate,
-                (
-                    note_step_inputs.in_set(PhysicsSystems::Observe),
-                    note_step_result.in_set(PhysicsSystems::AfterStep),
-                ),
-            );
-        // After the window plugin's exit systems: closing the last window asks to exit there.
-        #[cfg(not(target_arch = "wasm32"))]
-        app.add_systems(
-            Last,
-            save_on_exit.in_set(crate::game::schedule::AfterBevySystems::AfterExit),
+/// Keeps the recording: the step's inputs before it, its state after, a save asked or due.
+pub(super) fn plugin(app: &mut App) {
+    app.init_resource::<Recorder>()
+        .add_observer(note_reset)
+        .add_observer(save_on_request)
+        .add_systems(
+            FixedUpdate,
+            (
+                note_step_inputs.in_set(PhysicsSystems::Observe),
+                note_step_result.in_set(PhysicsSystems::AfterStep),
+            ),
         );
-    }
+    // After the window plugin's exit systems: closing the last window asks to exit there.
+    #[cfg(not(target_arch = "wasm32"))]
+    app.add_systems(
+        Last,
+        save_on_exit.in_set(crate::game::schedule::AfterBevySystems::AfterExit),
+    );
 }
 
 /// The game so far, and where `play --record` saves it.

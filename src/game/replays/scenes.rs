@@ -9,12 +9,9 @@ use crate::game::shared::Say;
 use crate::physics::{AutoSettings, Integrator, Scene, SceneParams};
 use crate::replay::script::scene_replay;
 
-pub struct ScenesPlugin;
-
-impl Plugin for ScenesPlugin {
-    fn build(&self, app: &mut App) {
-        app.add_observer(load);
-    }
+/// Loads the scene asked.
+pub(super) fn plugin(app: &mut App) {
+    app.add_observer(load);
 }
 
 /// Load the named scene (one of [`Scene::NAMES`]).

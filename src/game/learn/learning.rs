@@ -1,0 +1,51 @@
+//! Learn mode's own state: the chapter shown, the answers, the point masses, what each chapter
+//! taught, and the game's setup as the mode found it.
+
+use bevy::prelude::*;
+
+use super::chapters::CHAPTERS;
+use super::experiments::{Progress, Verdict};
+use crate::game::setup::Setup;
+
+/// Learn mode's chapters: the one shown, its prediction and experiment, what each chapter taught.
+///
+/// Whether the mode is on is the state [`Mode`], asked nowhere else.
+#[derive(Resource, Debug)]
+pub struct Learning {
+    /// The chapter shown in learn mode (the one it shows next when entered).
+    pub chapter: usize,
+    /// Each chapter's prediction found right by its experiment.
+    pub done: [bool; CHAPTERS.len()],
+    /// The point masses across the box (the moment of inertia's sum is over n × n).
+    pub point_masses: u32,
+    pub(super) progress: Progress,
+    /// The game's setup as learn mode found it, sent back as the mode is left.
+    pub(super) kept: Option<Setup>,
+}
+
+impl Default for Learning {
+    fn default() -> Self {
+        Self {
+            chapter: 0,
+            done: [false; CHAPTERS.len()],
+            point_masses: 4,
+            progress: Progress::default(),
+            kept: None,
+        }
+    }
+}
+
+/// The most point masses across the box.
+pub const MOST_POINT_MASSES: u32 = 64;
+
+impl Learning {
+    /// Returns the answer chosen for this chapter's prediction.
+    pub fn predicted(&self) -> Option<usize> {
+        self.progress.predicted
+    }
+
+    /// Returns what the chapter's experiment found last, against the answer held then.
+    pub fn verdict(&self) -> Option<&Verdict> {
+        self.progress.verdict.as_ref()
+    }
+}
