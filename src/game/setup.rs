@@ -37,16 +37,47 @@ impl Setup {
     ///
     /// Last, so that a reset sent before it (which puts the box at rest) does not undo it.
     pub fn send(&self, commands: &mut Commands) {
-        commands.trigger(Apply(self.scene.clone()));
-        commands.trigger(Apply(self.params));
-        commands.trigger(Apply(self.integrator));
-        commands.trigger(Apply(self.auto));
-        commands.trigger(Apply(self.clock));
-        commands.trigger(Apply(self.overlays));
-        commands.trigger(Apply(self.dock_hidden));
-        commands.trigger(Apply(self.cards.clone()));
-        commands.trigger(Apply(self.stage));
-        if let Some(body) = self.body {
+        self.send_against(None, commands);
+    }
+
+    /// Sends each part that differs from `before` to its owner, in order, the box last.
+    pub fn send_changed(&self, before: &Setup, commands: &mut Commands) {
+        self.send_against(Some(before), commands);
+    }
+
+    /// Sends every part, or with `before` each part that differs from it.
+    fn send_against(&self, before: Option<&Setup>, commands: &mut Commands) {
+        let differs = |same: fn(&Setup, &Setup) -> bool| before.is_none_or(|b| !same(self, b));
+        if differs(|a, b| a.scene == b.scene) {
+            commands.trigger(Apply(self.scene.clone()));
+        }
+        if differs(|a, b| a.params == b.params) {
+            commands.trigger(Apply(self.params));
+        }
+        if differs(|a, b| a.integrator == b.integrator) {
+            commands.trigger(Apply(self.integrator));
+        }
+        if differs(|a, b| a.auto == b.auto) {
+            commands.trigger(Apply(self.auto));
+        }
+        if differs(|a, b| a.clock == b.clock) {
+            commands.trigger(Apply(self.clock));
+        }
+        if differs(|a, b| a.overlays == b.overlays) {
+            commands.trigger(Apply(self.overlays));
+        }
+        if differs(|a, b| a.dock_hidden == b.dock_hidden) {
+            commands.trigger(Apply(self.dock_hidden));
+        }
+        if differs(|a, b| a.cards == b.cards) {
+            commands.trigger(Apply(self.cards.clone()));
+        }
+        if differs(|a, b| a.stage == b.stage) {
+            commands.trigger(Apply(self.stage));
+        }
+        if let Some(body) = self.body
+            && differs(|a, b| a.body == b.body)
+        {
             commands.trigger(Apply(body));
         }
     }

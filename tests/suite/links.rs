@@ -12,12 +12,14 @@ use bevy::input::ButtonState;
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
+use bevy::ecs::system::SystemState;
 use common::{Game, small_replay, world_to_screen};
 use rubber_band_box::game::hud::{HINT, NEWS_SECONDS};
 use rubber_band_box::game::play::{PlayOptions, prepare};
-use rubber_band_box::game::replays::links::current_link;
+use rubber_band_box::game::replays::links::link_of;
 use rubber_band_box::game::replays::playback::{Playback, PlaybackEnd};
 use rubber_band_box::game::replays::recording::Recorder;
+use rubber_band_box::game::setup::CurrentSetup;
 use rubber_band_box::game::shared::{Overlay, Overlays, SceneName, StatusMessage};
 use rubber_band_box::physics::{Integrator, SceneParams, TIME_SCALE_RANGE};
 use rubber_band_box::replay::link::{Key, Link, MAX_FRAGMENT_BYTES, decode_replay, encode_replay};
@@ -42,8 +44,12 @@ fn status(game: &mut Game) -> String {
         .unwrap_or_default()
 }
 
+/// Returns the link the share control writes of the game now.
 fn shared(game: &mut Game, with_game: bool) -> String {
-    current_link(game.world(), with_game)
+    let world = game.world();
+    let mut state = SystemState::<(CurrentSetup, Res<Recorder>)>::new(world);
+    let (setup, recorder) = state.get(world).expect("the game is set up");
+    link_of(&setup.get(), recorder.replay.as_ref(), with_game)
         .and_then(|link| link.to_query())
         .expect("a link of the game")
 }

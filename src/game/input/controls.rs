@@ -5,7 +5,6 @@
 //! test holds README to it). A value that `SceneParams::validate` refuses
 //! is not applied, and the HUD's status line says why.
 
-use bevy::ecs::system::SystemParam;
 use bevy::input::ButtonState;
 use bevy::input::keyboard::KeyboardInput;
 use bevy::prelude::*;
@@ -16,10 +15,11 @@ use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
 use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
+use crate::game::setup::CurrentSetup;
 use crate::game::shared::FocusedKeys;
 use crate::game::shared::Learn;
-use crate::game::shared::{Apply, DockHidden, Overlay, Overlays, Say};
-use crate::game::simulation::{Clock, ResetScene, StepOnce};
+use crate::game::shared::{Overlay, Say};
+use crate::game::simulation::{ResetScene, StepOnce};
 use crate::game::theme::readable;
 use crate::physics::{
     Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scene, SceneParams, TIME_SCALE_RANGE,
@@ -426,38 +426,6 @@ fn keys_to_actions(
     }
 }
 
-/// The settings the actions change, as their owners hold them.
-#[derive(SystemParam)]
-struct Controlled<'w> {
-    integrator: Res<'w, Integrator>,
-    params: Res<'w, SceneParams>,
-    virtual_time: Res<'w, Time<Virtual>>,
-    overlays: Res<'w, Overlays>,
-    dock_hidden: Res<'w, DockHidden>,
-}
-
-/// The settings as this frame's actions leave them, sent to their owners once.
-#[derive(Clone, Copy, PartialEq)]
-struct Settings {
-    integrator: Integrator,
-    params: SceneParams,
-    clock: Clock,
-    overlays: Overlays,
-    dock_hidden: DockHidden,
-}
-
-impl Controlled<'_> {
-    fn now(&self) -> Settings {
-        Settings {
-            integrator: *self.integrator,
-            params: *self.params,
-            clock: Clock::of(&self.virtual_time),
-            overlays: *self.overlays,
-            dock_hidden: *self.dock_hidden,
-        }
-    }
-}
-
 /// Applies every action of this frame, in the order sent.
 ///
 /// The settings the actions change are changed on a copy, and each part changed is sent to its
@@ -467,14 +435,10 @@ impl Controlled<'_> {
 /// scale and the step rate move by factors, so that a player reaches the hard cases in a few
 /// presses; each stays inside its range, and a scene parameter changes only if the whole scene
 /// stays valid.
-fn apply_actions(
-    mut actions: MessageReader<Action>,
-    mut commands: Commands,
-    controlled: Controlled,
-) {
+fn apply_actions(mut actions: MessageReader<Action>, mut commands: Commands, setup: CurrentSetup) {
     let actions: Vec<Action> = actions.read().copied().collect();
-    let before = controlled.now();
-    let mut set = before;
+    let before = setup.get();
+    let mut set = before.clone();
     let mut steps = 0;
     let mut said = Vec::new();
     let scaled = |value: f64, factor: f64, range: Range| range.clamp(value * factor);
@@ -521,31 +485,12 @@ fn apply_actions(
     for _ in 0..steps {
         commands.trigger(StepOnce);
     }
-    send_changed(&mut commands, &before, &set);
+    set.send_changed(&before, &mut commands);
     for said in said {
         commands.trigger(Say(said));
     }
     for action in actions {
         send_message(&mut commands, action);
-    }
-}
-
-/// Sends each part of the settings that the actions changed to its owner.
-fn send_changed(commands: &mut Commands, before: &Settings, set: &Settings) {
-    if set.integrator != before.integrator {
-        commands.trigger(Apply(set.integrator));
-    }
-    if set.params != before.params {
-        commands.trigger(Apply(set.params));
-    }
-    if set.clock != before.clock {
-        commands.trigger(Apply(set.clock));
-    }
-    if set.overlays != before.overlays {
-        commands.trigger(Apply(set.overlays));
-    }
-    if set.dock_hidden != before.dock_hidden {
-        commands.trigger(Apply(set.dock_hidden));
     }
 }
 

@@ -222,38 +222,33 @@ fn show_the_chapter(mut learning: ResMut<Learning>, setup: CurrentSetup, mut com
 
 /// Shows chapter `index` in learn mode, the game being set as `now` says.
 ///
-/// Its integrator is sent, then its scene loaded with it (its scripted pull plays until the
-/// player presses), its overlays, dock, card and frame sent; its prediction and experiment
-/// start over.
+/// Its integrator, overlays, dock, card and frame are sent, then its scene loaded with them
+/// (its scripted pull plays until the player presses); its prediction and experiment start
+/// over.
 fn go_to(commands: &mut Commands, now: &Setup, learning: &mut Learning, index: usize) {
     let Some(chapter) = CHAPTERS.get(index) else {
         return;
     };
-    if let Some(integrator) = chapter
-        .integrator
-        .and_then(|name| name.parse::<Integrator>().ok())
-    {
-        commands.trigger(Apply(integrator));
+    let mut next = now.clone();
+    if let Some(integrator) = chapter.integrator.and_then(|name| name.parse().ok()) {
+        next.integrator = integrator;
     }
-    commands.trigger(LoadScene(chapter.scene));
-    let mut overlays = now.overlays;
     // The arrows of force and velocity are the chapters' pictures.
-    overlays.set(Overlay::Vectors, true);
+    next.overlays.set(Overlay::Vectors, true);
     // The update loop's seed and explicit Euler step beside the box as ghosts.
     if chapter.ghosts {
-        overlays.set(Overlay::Ghosts, true);
+        next.overlays.set(Overlay::Ghosts, true);
     }
-    commands.trigger(Apply(overlays));
     // The chapter is in the dock: it shows.
-    commands.trigger(Apply(DockHidden(false)));
-    let mut cards = now.cards.clone();
-    cards.set(Card::LEARN, true);
-    commands.trigger(Apply(cards));
+    next.dock_hidden = DockHidden(false);
+    next.cards.set(Card::LEARN, true);
     let [left, bottom, right, top] = chapter.frame;
-    commands.trigger(Apply(Stage {
+    next.stage = Stage {
         close: Some(Rect::new(left, bottom, right, top)),
         copy_at: chapter.centre_twin.then_some(TWIN_OFFSET.as_vec2()),
-    }));
+    };
+    next.send_changed(now, commands);
+    commands.trigger(LoadScene(chapter.scene));
     learning.chapter = index;
     learning.progress = Progress::default();
 }

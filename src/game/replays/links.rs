@@ -4,7 +4,6 @@
 //! the address bar, the clipboard and the status line. A link the game cannot take whole is
 //! taken in part, and what was left is named on the status line.
 
-use bevy::ecs::system::SystemParam;
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
@@ -12,8 +11,8 @@ use crate::game::replays::playback::OpenReplay;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::LoadScene;
 use crate::game::schedule::GameSystems;
-use crate::game::shared::{Apply, DockHidden, Learn, Mode, Overlay, Overlays, Say, SceneName};
-use crate::game::simulation::Clock;
+use crate::game::setup::{CurrentSetup, Setup};
+use crate::game::shared::{Apply, DockHidden, Learn, Mode, Overlay, Say};
 use crate::physics::{Integrator, Scene, SceneParams};
 use crate::replay::Replay;
 use crate::replay::link::{Link, LinkOverlays};
@@ -44,48 +43,11 @@ pub struct ShareLink {
     pub game: bool,
 }
 
-/// What is on screen, as the link of it says it.
-#[derive(SystemParam)]
-pub(crate) struct OnScreen<'w> {
-    params: Res<'w, SceneParams>,
-    scene: Res<'w, SceneName>,
-    overlays: Res<'w, Overlays>,
-    dock_hidden: Res<'w, DockHidden>,
-    virtual_time: Res<'w, Time<Virtual>>,
-    integrator: Res<'w, Integrator>,
-    recorder: Res<'w, Recorder>,
-}
-
-impl OnScreen<'_> {
-    fn shown(&self) -> Shown<'_> {
-        Shown {
-            params: *self.params,
-            scene: &self.scene.0,
-            overlays: *self.overlays,
-            dock_hidden: self.dock_hidden.0,
-            speed: self.virtual_time.relative_speed_f64(),
-            integrator: *self.integrator,
-            recording: self.recorder.replay.as_ref(),
-        }
-    }
-}
-
-/// What a link writes of the game on screen.
-struct Shown<'a> {
-    params: SceneParams,
-    scene: &'a str,
-    overlays: Overlays,
-    dock_hidden: bool,
-    speed: f64,
-    integrator: Integrator,
-    recording: Option<&'a Replay>,
-}
-
 /// Opens the link `play --link` or the page's address gave, before the first step.
-fn open_pending_link(mut commands: Commands, pending: Res<PendingLink>, on_screen: OnScreen) {
+fn open_pending_link(mut commands: Commands, pending: Res<PendingLink>, setup: CurrentSetup) {
     commands.remove_resource::<PendingLink>();
     let PendingLink { link, mut problems } = pending.clone();
-    problems.extend(open_link(&mut commands, link, &on_screen));
+    problems.extend(open_link(&mut commands, link, &setup.get()));
     if !problems.is_empty() {
         let said = format!("link: not taken: {}", problems.join("; "));
         warn!("{said}");
@@ -100,7 +62,7 @@ fn open_pending_link(mut commands: Commands, pending: Res<PendingLink>, on_scree
 /// step rate, then the scene (loaded with them, as its number key does), then the scene's
 /// parameters the link overrides. Then the time scale and the overlays. Each is sent to its
 /// owner, in that order.
-fn open_link(commands: &mut Commands, link: Link, now: &OnScreen) -> Vec<String> {
+fn open_link(commands: &mut Commands, link: Link, now: &Setup) -> Vec<String> {
     let mut problems = Vec::new();
     let settings_keys = link.settings_keys();
     if let Some(chapter) = link.learn {
@@ -125,15 +87,16 @@ fn open_link(commands: &mut Commands, link: Link, now: &OnScreen) -> Vec<String>
         }
         commands.trigger(OpenReplay(replay));
     } else {
+        let mut next = now.clone();
         if let Some(integrator) = link.integrator {
-            commands.trigger(Apply(integrator));
+            next.integrator = integrator;
         }
-        let mut params = *now.params;
         if let Some(rate) = link.step_rate_hz {
             // The scene below is loaded at this step (in range: the clock can keep it).
-            params.step_rate_hz = rate;
-            commands.trigger(Apply(params));
+            next.params.step_rate_hz = rate;
         }
+        next.send_changed(now, commands);
+        let mut params = next.params;
         if let Some(name) = &link.scene {
             match Scene::named(name) {
                 Ok(scene) => {
@@ -166,102 +129,80 @@ fn open_link(commands: &mut Commands, link: Link, now: &OnScreen) -> Vec<String>
             Err(error) => problems.push(format!("{error}")),
         }
     }
+    let mut shown = now.clone();
     if let Some(speed) = link.time_scale {
-        let paused = now.virtual_time.is_paused();
-        commands.trigger(Apply(Clock { speed, paused }));
+        shown.clock.speed = speed;
     }
-    let shown = link.overlays;
-    let mut overlays = *now.overlays;
     for overlay in Overlay::ALL {
-        if let Some(on) = shown.get(overlay) {
-            overlays.set(overlay, on);
+        if let Some(on) = link.overlays.get(overlay) {
+            shown.overlays.set(overlay, on);
         }
     }
-    if overlays != *now.overlays {
-        commands.trigger(Apply(overlays));
+    if let Some(on) = link.overlays.dock {
+        shown.dock_hidden = DockHidden(!on);
     }
-    if let Some(on) = shown.dock {
-        commands.trigger(Apply(DockHidden(!on)));
-    }
+    // Only the time scale, the overlays and the dock differ from `now` here.
+    shown.send_changed(now, commands);
     problems
 }
 
-/// Returns the link of what is on screen, and with `game` the recording so far.
+/// Returns the link of the game set as `now`, and with `game` its `recording`.
 ///
 /// The link has the keys that differ from what a fresh game starts with, so it holds only what
 /// the player changed.
-pub fn current_link(world: &World, game: bool) -> Result<Link, String> {
-    Shown {
-        params: *world.resource::<SceneParams>(),
-        scene: &world.resource::<SceneName>().0,
-        overlays: *world.resource::<Overlays>(),
-        dock_hidden: world.resource::<DockHidden>().0,
-        speed: world.resource::<Time<Virtual>>().relative_speed_f64(),
-        integrator: *world.resource::<Integrator>(),
-        recording: world.resource::<Recorder>().replay.as_ref(),
+pub fn link_of(now: &Setup, recording: Option<&Replay>, game: bool) -> Result<Link, String> {
+    let params = now.params;
+    // The tutorial's is the scene a fresh game shows (without its scripted pull).
+    let named = Scene::named(&now.scene.0)
+        .ok()
+        .filter(|s| s.name != "tutorial");
+    let base = named.as_ref().map_or(SceneParams::tutorial(), |s| s.params);
+    let differs = |value: f64, base: f64| (value != base).then_some(value);
+    let overlays = now.overlays;
+    let on = |on: bool| on.then_some(true);
+    let mut link = Link {
+        time_scale: differs(now.clock.speed, 1.0),
+        overlays: LinkOverlays {
+            // The ghosts are left out where the plot turns them on.
+            shown: Overlay::ALL.map(|overlay| {
+                let implied = overlay == Overlay::Ghosts && overlays.on(Overlay::Plot);
+                on(overlays.on(overlay) && !implied)
+            }),
+            dock: now.dock_hidden.0.then_some(false),
+        },
+        ..default()
+    };
+    if game {
+        let replay = recording.cloned();
+        link.replay = Some(replay.ok_or("nothing recorded yet: pull the box first")?);
+    } else {
+        link.scene = named.map(|s| s.name.to_owned());
+        let integrator = now.integrator;
+        link.integrator = (integrator != Integrator::default()).then_some(integrator);
+        link.stiffness = differs(params.stiffness, base.stiffness);
+        link.mass = differs(params.mass, base.mass);
+        // A square box's side (every scene's box is square).
+        link.size = (params.size != base.size).then_some(params.size.x);
+        link.linear_damping = differs(params.linear_damping, base.linear_damping);
+        link.angular_damping = differs(params.angular_damping, base.angular_damping);
+        link.step_rate_hz = differs(params.step_rate_hz, base.step_rate_hz);
     }
-    .link(game)
-}
-
-impl Shown<'_> {
-    /// Returns the link of what is shown, and with `game` the recording so far.
-    fn link(&self, game: bool) -> Result<Link, String> {
-        let params = self.params;
-        // The tutorial's is the scene a fresh game shows (without its scripted pull).
-        let named = Scene::named(self.scene)
-            .ok()
-            .filter(|s| s.name != "tutorial");
-        let base = named.as_ref().map_or(SceneParams::tutorial(), |s| s.params);
-        let differs = |value: f64, base: f64| (value != base).then_some(value);
-        let overlays = self.overlays;
-        let on = |on: bool| on.then_some(true);
-        let mut link = Link {
-            time_scale: differs(self.speed, 1.0),
-            overlays: LinkOverlays {
-                // The ghosts are left out where the plot turns them on.
-                shown: Overlay::ALL.map(|overlay| {
-                    let implied = overlay == Overlay::Ghosts && overlays.on(Overlay::Plot);
-                    on(overlays.on(overlay) && !implied)
-                }),
-                dock: self.dock_hidden.then_some(false),
-            },
-            ..default()
-        };
-        if game {
-            let replay = self.recording.cloned();
-            link.replay = Some(replay.ok_or("nothing recorded yet: pull the box first")?);
-        } else {
-            link.scene = named.map(|s| s.name.to_owned());
-            let integrator = self.integrator;
-            link.integrator = (integrator != Integrator::default()).then_some(integrator);
-            link.stiffness = differs(params.stiffness, base.stiffness);
-            link.mass = differs(params.mass, base.mass);
-            // A square box's side (every scene's box is square).
-            link.size = (params.size != base.size).then_some(params.size.x);
-            link.linear_damping = differs(params.linear_damping, base.linear_damping);
-            link.angular_damping = differs(params.angular_damping, base.angular_damping);
-            link.step_rate_hz = differs(params.step_rate_hz, base.step_rate_hz);
-        }
-        Ok(link)
-    }
+    Ok(link)
 }
 
 /// Answers the share controls, writing the link where the player can take it.
 fn share(
     share: On<ShareLink>,
     mode: Res<State<Mode>>,
-    on_screen: OnScreen,
+    (setup, recorder): (CurrentSetup, Res<Recorder>),
     mut commands: Commands,
 ) {
     // In learn mode the link is the chapter's, which learn mode writes.
     if !share.game && *mode.get() == Mode::Learn {
         return;
     }
-    let said = match on_screen
-        .shown()
-        .link(share.game)
-        .and_then(|link| link.to_query())
-    {
+    let link = link_of(&setup.get(), recorder.replay.as_ref(), share.game);
+    let said = match link.and_then(|link| link.to_query()) {
         Ok(query) => publish(&query, share.game),
         Err(error) => format!("no link: {error}"),
     };
