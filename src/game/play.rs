@@ -160,6 +160,9 @@ pub fn play(options: &PlayOptions) -> Result<(), String> {
         // A process-wide signal handler: installed by the game that plays, not by `prepare`.
         super::replays::recording::sigterm::exit_on_sigterm(&mut app);
     }
+    // Before Bevy's window plugin, whose build opens the display.
+    #[cfg(all(unix, not(target_os = "macos"), not(target_arch = "wasm32")))]
+    say_an_unopenable_display();
     app.insert_resource(ClearColor(super::theme::colour::BACKGROUND))
         .add_plugins(DefaultPlugins.set(WindowPlugin {
             primary_window: Some(window()),
@@ -168,4 +171,32 @@ pub fn play(options: &PlayOptions) -> Result<(), String> {
         .add_plugins((ShapePlugin, GamePlugin))
         .run();
     Ok(())
+}
+
+/// Ends the game with one line and status 2 where the display named cannot be opened.
+///
+/// A `DISPLAY` that names no running X server (a stale one in tmux or over ssh) fails only
+/// when Bevy's window plugin builds its event loop, which panics; this turns that panic into
+/// the line a missing `DISPLAY` gets, and leaves every other panic as it was.
+#[cfg(all(unix, not(target_os = "macos"), not(target_arch = "wasm32")))]
+fn say_an_unopenable_display() {
+    let before = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let said = info
+            .payload()
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .or_else(|| info.payload().downcast_ref::<&str>().copied())
+            .unwrap_or_default();
+        if said.contains("Failed to build event loop") {
+            let display = std::env::var("DISPLAY").unwrap_or_default();
+            eprintln!(
+                "error: cannot open the display DISPLAY={display:?} (no X server answers \
+                 there): start one, or unset DISPLAY; `simulate` runs the physics without a \
+                 display, and the web build plays in a browser (docs/web.md)"
+            );
+            std::process::exit(2);
+        }
+        before(info);
+    }));
 }

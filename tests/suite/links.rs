@@ -382,6 +382,31 @@ fn play_refuses_rates_out_of_range_and_a_missing_display_in_one_line() {
     }
 }
 
+/// A `DISPLAY` that names no X server (a stale one over ssh or in tmux) ends the game in one
+/// line naming it, with status 2, and no backtrace.
+#[test]
+fn play_says_a_display_it_cannot_open_in_one_line() {
+    // No X server listens at display 97 here (its socket would be this file).
+    assert!(!std::path::Path::new("/tmp/.X11-unix/X97").exists());
+    let output = common::binary("play")
+        .env("DISPLAY", ":97")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .expect("the binary runs");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    let errors: Vec<&str> = stderr
+        .lines()
+        .filter(|line| line.starts_with("error"))
+        .collect();
+    assert_eq!(errors.len(), 1, "{stderr}");
+    assert!(errors[0].contains("DISPLAY=\":97\""), "{stderr}");
+    assert!(
+        !stderr.contains("panicked") && !stderr.contains("backtrace"),
+        "{stderr}"
+    );
+}
+
 /// How many seconds of a game fit in a link of 8 KB and of 64 KB (docs/links.md's table): a
 /// game at 100 Hz in which the hand moves every frame (60 a second), and one in which it
 /// pulls and lets go once a second. `cargo test --test suite links::link_sizes -- --nocapture`.
