@@ -9,7 +9,7 @@ use crate::game::setup::Setup;
 
 /// Learn mode's chapters: the one shown, its prediction and experiment, what each chapter taught.
 ///
-/// Whether the mode is on is the state [`Mode`], asked nowhere else.
+/// Whether the mode is on is the state [`Mode`](crate::game::shared::Mode), asked nowhere else.
 #[derive(Resource, Debug)]
 pub struct Learning {
     /// The chapter shown in learn mode (the one it shows next when entered).
