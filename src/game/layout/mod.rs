@@ -76,7 +76,11 @@ impl Plugin for LayoutPlugin {
         #[cfg(target_arch = "wasm32")]
         app.add_systems(
             PostUpdate,
-            publish_texts.in_set(AfterBevySystems::AfterLayout),
+            // With the viewport this frame's layout gave, not the last frame's: a status line
+            // that wraps moves the viewport down in the same frame.
+            publish_texts
+                .after(publish_viewport)
+                .in_set(AfterBevySystems::AfterLayout),
         );
     }
 }
