@@ -172,7 +172,7 @@ fn the_save_key_and_the_games_end_write_a_replay_that_loads() {
     game.tap_key(key(Action::Save));
     game.update(1);
     let status = game.world().resource::<StatusMessage>().0.clone().unwrap();
-    assert_eq!(status, format!("saved 30 steps to {}", path.display()));
+    assert_eq!(status, format!("saved the game to {}", path.display()));
     assert!(game.line("Readouts Replay").contains(&status));
     assert_eq!(read(&path).steps, 30);
 

@@ -258,7 +258,7 @@ fn go_to(commands: &mut Commands, now: &Setup, learning: &mut Learning, index: u
 /// The chapter's script stops, its bands go and the books start over (as a reset does); then
 /// the scene, the settings, the overlays, the dock, the cards, the frame, the clock and the box
 /// go back to their owners. The recorder notes the box put back as it notes any other change,
-/// and the player is told the recording goes on.
+/// and the log says the recording goes on.
 fn stop_the_chapter(
     mut learning: ResMut<Learning>,
     recorder: Res<Recorder>,
@@ -269,7 +269,6 @@ fn stop_the_chapter(
     commands.trigger(ResetScene);
     if let Some(goes_on) = recorder.goes_on() {
         info!("{goes_on}");
-        commands.trigger(Say(goes_on));
     }
     if let Some(kept) = learning.kept.take() {
         kept.send(&mut commands);

@@ -119,8 +119,14 @@ impl ReadoutLine {
             ),
             ReadoutLine::Replay => {
                 let mut line = format!("recorded {} steps", r.recorded_steps);
-                if let Some((played, steps)) = r.playback {
-                    line = format!("replay: step {played} of {steps} (press to take over)  {line}");
+                match (r.playback, &r.ended) {
+                    (Some((played, steps)), _) => {
+                        line = format!(
+                            "replay: step {played} of {steps} (press to take over)  {line}"
+                        );
+                    }
+                    (None, Some(ended)) => line += &format!("  {ended}"),
+                    (None, None) => {}
                 }
                 if let Some(status) = &r.status {
                     line += &format!("  {status}");
@@ -155,6 +161,8 @@ struct Readings {
     status: Option<String>,
     /// While a replay plays back: (steps played, steps in it).
     playback: Option<(u64, u64)>,
+    /// How the latest playback ended, in full (its steps and hashes), once it has.
+    ended: Option<String>,
     /// The scene's name (the core's table's, or a recording's).
     scene: String,
 }
@@ -204,6 +212,7 @@ impl Sources<'_, '_> {
             recorded_steps: self.recorder.steps(),
             status: self.status.0.clone(),
             playback: self.playback.progress(),
+            ended: self.playback.ended.map(|end| end.describe()),
             scene: self.scene.0.clone(),
         }
     }
@@ -255,6 +264,7 @@ mod tests {
             recorded_steps: 150,
             status: None,
             playback: None,
+            ended: None,
             scene: "tutorial".to_owned(),
         }
     }
@@ -276,12 +286,22 @@ mod tests {
         assert_eq!(ReadoutLine::Replay.text(&r), "recorded 150 steps");
         let playing = Readings {
             playback: Some((40, 1125)),
-            status: Some("saved 150 steps to a.jsonl".to_owned()),
+            status: Some("saved the game to a.jsonl".to_owned()),
             ..r.clone()
         };
         assert_eq!(
             ReadoutLine::Replay.text(&playing),
-            "replay: step 40 of 1125 (press to take over)  recorded 150 steps  saved 150 steps to a.jsonl"
+            "replay: step 40 of 1125 (press to take over)  recorded 150 steps  saved the game to a.jsonl"
+        );
+        let over = Readings {
+            ended: Some(
+                "replay over: 1125 steps, the recorded states to the bit (hash 0123)".into(),
+            ),
+            ..r.clone()
+        };
+        assert_eq!(
+            ReadoutLine::Replay.text(&over),
+            "recorded 150 steps  replay over: 1125 steps, the recorded states to the bit (hash 0123)"
         );
 
         let fell_back = Readings {

@@ -24,6 +24,7 @@ use crate::replay::{Replay, Settings, TrajectoryHash};
 pub(super) fn plugin(app: &mut App) {
     app.init_resource::<Playback>()
         .add_observer(open)
+        .add_observer(play_scene)
         .add_observer(stop)
         .add_systems(
             RunFixedMainLoop,
@@ -70,7 +71,23 @@ pub enum PlaybackEnd {
 }
 
 impl PlaybackEnd {
-    /// Returns what the HUD says.
+    /// Returns what the status line tells the player of a recorded game's end.
+    ///
+    /// What a person did or must know: no steps, no hashes (the log and the Readouts card
+    /// have them, [`Self::describe`]).
+    pub fn tell(&self) -> String {
+        match *self {
+            Self::TakenOver { .. } => "you took over the replay: the box is yours".to_owned(),
+            Self::Finished { hash, recorded, .. } if hash == recorded => {
+                "replay over: the game followed the recording exactly".to_owned()
+            }
+            Self::Finished { .. } => "replay over: the game did NOT follow the recording (the \
+                                      Readouts card and the log say how)"
+                .to_owned(),
+        }
+    }
+
+    /// Returns the end in full, for the log and the Readouts card: its steps and hashes.
     pub fn describe(&self) -> String {
         match *self {
             Self::TakenOver { step } => format!("replay taken over at step {step}"),
@@ -97,6 +114,8 @@ impl PlaybackEnd {
 #[derive(Resource, Debug, Default)]
 pub struct Playback {
     replay: Option<Replay>,
+    /// It is a scene's scripted pull, not a recorded game: its end is no news to the player.
+    scene: bool,
     /// How far its records are read.
     reader: Reader,
     /// Steps played so far.
@@ -295,30 +314,70 @@ fn place_band(
 #[derive(Event, Debug, Clone)]
 pub struct OpenReplay(pub Replay);
 
+/// Play a scene's scripted pull (a scene or a chapter loaded), as [`OpenReplay`] plays a game.
+#[derive(Event, Debug, Clone)]
+pub struct PlayScene(pub Replay);
+
 /// Stop the playback, leaving the box where it is (learn mode left).
 #[derive(Event, Debug, Clone, Copy, Default)]
 pub struct StopPlayback;
 
 /// Opens a replay: the scene reset, its settings sent to their owners, its playback started.
 ///
-/// The recorder goes on, and the player is told so.
+/// The recorder goes on, and the log says so.
 fn open(
     open: On<OpenReplay>,
     mut commands: Commands,
     mut playback: ResMut<Playback>,
     recorder: Res<Recorder>,
 ) {
-    let replay = open.0.clone();
+    start(
+        &mut commands,
+        &mut playback,
+        &recorder,
+        open.0.clone(),
+        false,
+    );
+}
+
+/// Plays a scene's scripted pull, as a replay is opened.
+fn play_scene(
+    play: On<PlayScene>,
+    mut commands: Commands,
+    mut playback: ResMut<Playback>,
+    recorder: Res<Recorder>,
+) {
+    start(
+        &mut commands,
+        &mut playback,
+        &recorder,
+        play.0.clone(),
+        true,
+    );
+}
+
+/// Resets the scene, sends the replay's settings to their owners and starts its playback.
+///
+/// The recorder goes on, and the log says so.
+fn start(
+    commands: &mut Commands,
+    playback: &mut Playback,
+    recorder: &Recorder,
+    replay: Replay,
+    scene: bool,
+) {
     let header = &replay.header;
     commands.trigger(ResetScene);
     commands.trigger(Apply(header.settings.params()));
     commands.trigger(Apply(header.settings.integrator));
     commands.trigger(Apply(AutoSettings::from(header.auto)));
     commands.trigger(Apply(SceneName(header.scene.clone())));
-    *playback = Playback::of(replay);
+    *playback = Playback {
+        scene,
+        ..Playback::of(replay)
+    };
     if let Some(goes_on) = recorder.goes_on() {
         info!("{goes_on}");
-        commands.trigger(Say(goes_on));
     }
 }
 
@@ -328,25 +387,16 @@ fn stop(_stop: On<StopPlayback>, mut playback: ResMut<Playback>) {
 }
 
 /// Plays a replay file's text the player opened, or says why it cannot be played.
-fn open_or_refuse(
-    commands: &mut Commands,
-    recorder: &Recorder,
-    name: &str,
-    read: Result<Replay, String>,
-) {
+fn open_or_refuse(commands: &mut Commands, name: &str, read: Result<Replay, String>) {
     let read = read.and_then(|replay| {
         replay.check_playable().map_err(|error| error.to_string())?;
         Ok(replay)
     });
     match read {
         Ok(replay) => {
-            let message = format!("playing {name} ({} steps)", replay.steps);
-            let said = match recorder.goes_on() {
-                Some(goes_on) => format!("{message}; {goes_on}"),
-                None => message,
-            };
+            info!("playing {name} ({} steps)", replay.steps);
             commands.trigger(OpenReplay(replay));
-            commands.trigger(Say(said));
+            commands.trigger(Say(format!("playing {name}")));
         }
         Err(error) => commands.trigger(Say(format!("cannot play {name}: {error}"))),
     }
@@ -367,9 +417,10 @@ fn report_the_end(
         return;
     }
     *said = Some(end);
-    let said = end.describe();
-    info!("{said}");
-    commands.trigger(Say(said.clone()));
+    info!("{}", end.describe());
+    if !playback.scene {
+        commands.trigger(Say(end.tell()));
+    }
     #[cfg(target_arch = "wasm32")]
     if let PlaybackEnd::Finished {
         steps,
@@ -390,13 +441,12 @@ fn report_the_end(
 #[cfg(not(target_arch = "wasm32"))]
 fn open_dropped_files(
     mut commands: Commands,
-    recorder: Res<Recorder>,
     mut drops: MessageReader<bevy::window::FileDragAndDrop>,
 ) {
     for drop in drops.read() {
         if let bevy::window::FileDragAndDrop::DroppedFile { path_buf, .. } = drop {
             let name = path_buf.display().to_string();
-            open_or_refuse(&mut commands, &recorder, &name, Replay::read_file(path_buf));
+            open_or_refuse(&mut commands, &name, Replay::read_file(path_buf));
         }
     }
 }
@@ -407,16 +457,15 @@ mod page {
     use bevy::prelude::*;
     use wasm_bindgen::closure::Closure;
 
-    use crate::game::replays::recording::Recorder;
     use crate::game::web;
     use crate::replay::Replay;
     use crate::replay::run::ReplayRun;
 
-    pub fn open_chosen_files(mut commands: Commands, recorder: Res<Recorder>) {
+    pub fn open_chosen_files(mut commands: Commands) {
         let name = web::take_opened_name().unwrap_or_else(|| "the file".to_owned());
         if let Some(text) = web::take_opened_text() {
             let read = Replay::from_bytes(text.as_bytes()).map_err(|error| error.to_string());
-            crate::game::replays::playback::open_or_refuse(&mut commands, &recorder, &name, read);
+            crate::game::replays::playback::open_or_refuse(&mut commands, &name, read);
         }
     }
 

@@ -169,7 +169,8 @@ fn save_on_request(_save: On<SaveReplay>, recorder: Res<Recorder>, mut commands:
             Some(replay) => {
                 let text = String::from_utf8_lossy(&replay.to_bytes()).into_owned();
                 let name = crate::game::web::download_replay(&text);
-                format!("saved {} steps as the download {name}", replay.steps)
+                info!("saved {} steps as the download {name}", replay.steps);
+                format!("saved the game as the download {name}")
             }
         }));
     }
@@ -191,7 +192,10 @@ fn save(recorder: &Recorder, path: &Path) -> Result<String, String> {
         return Err("nothing to save yet: no step has run".to_owned());
     };
     crate::replay::save::write_atomically(path, |file| replay.write(file))
-        .map(|()| format!("saved {} steps to {}", replay.steps, path.display()))
+        .map(|()| {
+            info!("saved {} steps to {}", replay.steps, path.display());
+            format!("saved the game to {}", path.display())
+        })
         .map_err(|error| error.to_string())
 }
 

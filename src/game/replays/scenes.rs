@@ -4,7 +4,7 @@
 
 use bevy::prelude::*;
 
-use crate::game::replays::playback::OpenReplay;
+use crate::game::replays::playback::PlayScene;
 use crate::game::shared::Say;
 use crate::physics::{AutoSettings, Integrator, Scene, SceneParams};
 use crate::replay::script::scene_replay;
@@ -38,7 +38,7 @@ fn load(
             scene_replay(&scene, dt, *integrator, *auto).map_err(|error| error.to_string())
         });
     match loaded {
-        Ok(replay) => commands.trigger(OpenReplay(replay)),
+        Ok(replay) => commands.trigger(PlayScene(replay)),
         Err(error) => commands.trigger(Say(format!("cannot load {name}: {error}"))),
     }
 }
