@@ -437,6 +437,9 @@ fn keys_to_actions(
 /// stays valid.
 fn apply_actions(mut actions: MessageReader<Action>, mut commands: Commands, setup: CurrentSetup) {
     let actions: Vec<Action> = actions.read().copied().collect();
+    if actions.is_empty() {
+        return;
+    }
     let before = setup.get();
     let mut set = before.clone();
     let mut steps = 0;
