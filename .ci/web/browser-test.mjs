@@ -647,6 +647,27 @@ const keyboardAlone = async (p) => {
   await frames(p, 3);
   const left = await p.evaluate(() => document.activeElement?.id !== "bevy");
   check(first && firstFocus?.first === true && left, `${where}: Shift+Tab from the first control (${JSON.stringify(firstFocus)}) leaves the canvas (focus left: ${left})`);
+  // Back in from the page, as a page's own Tab order goes: Tab starts at the game's first
+  // control; out again by Shift+Tab, and Shift+Tab back in starts at its last.
+  await p.keyboard.press("Tab");
+  const inFirst = await until(p, () => document.activeElement?.id === "bevy" && window.rubberBandBox?.focus?.first === true, null, 10000);
+  const firstAgain = await focusOf(p);
+  await p.keyboard.press("Shift+Tab");
+  await frames(p, 3);
+  const outAgain = await p.evaluate(() => document.activeElement?.id !== "bevy");
+  await p.keyboard.press("Shift+Tab");
+  const inLast = await until(p, () => document.activeElement?.id === "bevy" && window.rubberBandBox?.focus?.last === true, null, 10000);
+  const lastAgain = await focusOf(p);
+  check(inFirst && outAgain && inLast,
+    `${where}: Tab from the page back into the game starts at its first control (${JSON.stringify(firstAgain)}); out by Shift+Tab (${outAgain}), Shift+Tab back in starts at its last (${JSON.stringify(lastAgain)})`);
+  // Out forward from the last control, and Tab back in: the first again, not where it left.
+  await p.keyboard.press("Tab");
+  await frames(p, 3);
+  const outForward = await p.evaluate(() => document.activeElement?.id !== "bevy");
+  await p.keyboard.press("Tab");
+  const inFirstAgain = await until(p, () => document.activeElement?.id === "bevy" && window.rubberBandBox?.focus?.first === true, null, 10000);
+  check(outForward && inFirstAgain,
+    `${where}: Tab from the last control leaves the game (${outForward}), and Tab back in starts at its first again (${JSON.stringify(await focusOf(p))})`);
   const listedNames = await p.evaluate(() => [...document.querySelectorAll("#controls li")].map((li) => li.textContent));
   check(listedNames.includes("instruments") && listedNames.includes("Controls"), `${where}: the page lists the controls for a screen reader (${listedNames.join("; ")})`);
   await p.close();

@@ -122,6 +122,26 @@ export function publish_controls(json) {
 export function publish_focus(json) {
   api().focus = JSON.parse(json);
 }
+
+// The canvas entered from the page by Tab ("first") or Shift+Tab ("last"), until the game
+// takes it: as a page's own Tab order does, the game's then starts at that end. A press
+// (a click on the canvas) is no Tab.
+let tabbed = null;
+let entered = null;
+window.addEventListener("keydown", (event) => {
+  if (event.key === "Tab") tabbed = event.shiftKey ? "last" : "first";
+}, { capture: true });
+window.addEventListener("pointerdown", () => { tabbed = null; }, { capture: true });
+document.addEventListener("focusin", (event) => {
+  if (event.target?.id === "bevy" && tabbed) entered = tabbed;
+  tabbed = null;
+}, { capture: true });
+
+export function take_entered() {
+  const end = entered;
+  entered = null;
+  return end;
+}
 "#)]
 extern "C" {
     /// Offers `text` as a download and returns the file's name.
@@ -138,6 +158,11 @@ extern "C" {
 
     /// Takes the text of the file opened since the last call, if any.
     pub fn take_opened_text() -> Option<String>;
+
+    /// Takes the end the canvas was entered at from the page since the last call, if any.
+    ///
+    /// "first" after a Tab, "last" after a Shift+Tab.
+    pub fn take_entered() -> Option<String>;
 
     /// Exposes `window.rubberBandBox.replayHash(text)`.
     ///

@@ -45,6 +45,13 @@ impl Plugin for FocusPlugin {
                     .chain()
                     .in_set(ScreenSystems::Offer),
             );
+        #[cfg(target_arch = "wasm32")]
+        app.add_systems(
+            RunFixedMainLoop,
+            enter_from_the_page
+                .after(return_focus_to_the_scene)
+                .in_set(GameSystems::Input),
+        );
     }
 }
 
@@ -164,5 +171,29 @@ impl Displayed<'_, '_> {
                     .get(node)
                     .is_ok_and(|node| node.display != Display::None)
             })
+    }
+}
+
+/// Focuses the game's first control when Tab brings the page's focus into the canvas, its last
+/// after Shift+Tab, as a page's own Tab order does.
+///
+/// In the browser only: the canvas is one stop in the page's order (index.html lets Tab leave
+/// it from the game's last control).
+#[cfg(target_arch = "wasm32")]
+fn enter_from_the_page(
+    navigation: bevy::input_focus::tab_navigation::TabNavigation,
+    mut commands: Commands,
+) {
+    use bevy::input_focus::tab_navigation::NavAction;
+    let Some(end) = crate::game::web::take_entered() else {
+        return;
+    };
+    let action = if end == "last" {
+        NavAction::Last
+    } else {
+        NavAction::First
+    };
+    if let Ok(control) = navigation.navigate(&InputFocus::default(), action) {
+        commands.trigger(FocusControl(control));
     }
 }
