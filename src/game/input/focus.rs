@@ -3,8 +3,9 @@
 //! with Bevy's own tab navigation (`bevy_input_focus`); a ring shows the focused control when
 //! focus came by keyboard; Escape gives focus back to the scene. A focused control takes its
 //! own keys (a button Space and Enter, a slider the arrows, Home, End and the Page keys), and
-//! the game's global keys do not fire for them ([`FocusedKeys`](crate::game::shared::FocusedKeys)). A click keeps no keyboard
-//! focus.
+//! the game's global keys do not fire for them
+//! ([`FocusedKeys`](crate::game::shared::FocusedKeys)). A click keeps no keyboard focus. In the
+//! browser, Tab into the canvas from the page starts at the first control, Shift+Tab at the last.
 
 use bevy::ecs::system::SystemParam;
 use bevy::input::ButtonState;
@@ -174,11 +175,10 @@ impl Displayed<'_, '_> {
     }
 }
 
-/// Focuses the game's first control when Tab brings the page's focus into the canvas, its last
-/// after Shift+Tab, as a page's own Tab order does.
+/// Focuses the game's first control as Tab enters the canvas from the page; Shift+Tab its last.
 ///
-/// In the browser only: the canvas is one stop in the page's order (index.html lets Tab leave
-/// it from the game's last control).
+/// As a page's own Tab order does. In the browser only: the canvas is one stop in the page's
+/// order (index.html lets Tab leave it from the game's last control).
 #[cfg(target_arch = "wasm32")]
 fn enter_from_the_page(
     navigation: bevy::input_focus::tab_navigation::TabNavigation,
