@@ -166,6 +166,19 @@ pub fn readable(value: f64) -> String {
     }
 }
 
+/// Writes a value as [`readable`] does, with three significant digits in powers of ten too.
+///
+/// Learn mode's equations write their numbers so (τ = 1.23e4, not 1.2e4), so that a learner can
+/// check the equation the card writes to a part in a thousand, as in the usual range.
+pub fn precise(value: f64) -> String {
+    let magnitude = value.abs();
+    if value != 0.0 && value.is_finite() && !(1e-2..1e4).contains(&magnitude) {
+        format!("{value:.2e}")
+    } else {
+        readable(value)
+    }
+}
+
 /// Writes a rate in hertz as every readout shows it: `100 Hz`, `62.5 Hz`.
 ///
 /// The HUD's clock, the status line and the panel all write it so.

@@ -17,7 +17,7 @@ use rubber_band_box::game::learn::twin::{CentreTwin, TWIN_OFFSET};
 use rubber_band_box::game::learn::{LINES, Learn, LearnText, Learning, chapter_shown};
 use rubber_band_box::game::shared::{Mode, Overlays, SceneName};
 use rubber_band_box::game::simulation::{Band, EnergyBooks, RigidBox};
-use rubber_band_box::game::theme::readable;
+use rubber_band_box::game::theme::{precise, readable};
 use rubber_band_box::physics::{
     AngularState, BandEnds, BodyState, Integrator, LinearState, MassProperties, SceneParams,
 };
@@ -48,7 +48,7 @@ fn chapter(game: &mut Game, index: usize) {
 
 /// A number as the card prints it (the HUD's format, a true minus sign).
 fn n(value: f64) -> String {
-    readable(value).replace('-', "−")
+    precise(value).replace('-', "−")
 }
 
 fn v(value: DVec2) -> String {
@@ -1155,4 +1155,18 @@ fn claim_7_the_update_loops_lines_are_the_seed_integrators_next_step_to_the_bit(
             after.to_array().map(f64::to_bits)
         );
     }
+}
+
+/// Learn mode's numbers keep three significant digits in powers of ten (τ and L reach 1e4 and
+/// more), so that ΔL/dt = Στ can be checked from the card to a part in a thousand, not ten.
+#[test]
+fn learn_numbers_keep_three_digits_beyond_the_usual_range() {
+    assert_eq!(precise(12_345.0), "1.23e4");
+    assert_eq!(readable(12_345.0), "1.2e4");
+    assert_eq!(precise(-0.001_234), "-1.23e-3");
+    // In the usual range both write the same.
+    for value in [0.0, 20.0, 2.0203, -0.05, 9999.0] {
+        assert_eq!(precise(value), readable(value), "{value}");
+    }
+    assert_eq!(n(-12_345.0), "−1.23e4");
 }

@@ -6,7 +6,7 @@ use bevy::math::DVec2;
 
 use super::chapters::Equation;
 use super::twin::Twin;
-use crate::game::theme::readable;
+use crate::game::theme::precise;
 use crate::physics::forces::ForceModel;
 use crate::physics::integrators::seed::{SeedStages, tutorial_stages};
 use crate::physics::{
@@ -229,7 +229,7 @@ pub fn point_mass_arms(size: DVec2, n: u32) -> impl Iterator<Item = DVec2> {
 
 /// Formats a number as the HUD writes it.
 fn n(value: f64) -> String {
-    readable(value).replace('-', "−")
+    precise(value).replace('-', "−")
 }
 
 /// Formats a factor after an operator: a negative one in parentheses, `× (−0.6)`.
