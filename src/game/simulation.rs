@@ -532,7 +532,7 @@ fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRec
         *body.accumulator = ForceAccumulator::default();
         let booked = records
             .books
-            .step(&mut stepper, forces, dt, Bound::Playable);
+            .step_accumulated(&mut stepper, forces, dt, Bound::Playable);
         stats.substeps = stats.substeps.max(booked.info.substeps);
         stats.fell_back |= booked.info.fell_back;
         stats.fallbacks += u64::from(booked.info.fell_back);

@@ -358,10 +358,7 @@ impl Run {
     /// as it was before it (the last sane state, its books and counters).
     pub fn advance(&mut self) -> Result<(), Diverged> {
         let kept = (self.stepper.state, self.books);
-        let start = self.stepper.model().forces(&self.stepper.state);
-        let booked = self
-            .books
-            .step(&mut self.stepper, start, self.dt, Bound::Sane);
+        let booked = self.books.step(&mut self.stepper, self.dt, Bound::Sane);
         let energy = self.books.settled.unwrap_or(f64::NAN);
         if booked.refused
             || !energy.is_finite()

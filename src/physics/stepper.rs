@@ -126,13 +126,26 @@ impl Books {
         }
     }
 
-    /// Takes `stepper`'s next step of `dt`, booked.
+    /// Takes `stepper`'s next step of `dt`, booked, from the forces at its state now.
     ///
-    /// `start` is the forces at its state now.
     /// It books the hand's work since the latest step, then steps. A state outside `bound` is
     /// refused: the stepper keeps the state before, and damping's share is not booked. Either
     /// way the step settles at the energy of the state kept.
-    pub fn step(&mut self, stepper: &mut Stepper, start: Forces, dt: f64, bound: Bound) -> Booked {
+    pub fn step(&mut self, stepper: &mut Stepper, dt: f64, bound: Bound) -> Booked {
+        let start = stepper.model().forces(&stepper.state);
+        self.step_accumulated(stepper, start, dt, bound)
+    }
+
+    /// Takes the step [`Books::step`] takes, from `start`: the forces accumulated at the state now.
+    ///
+    /// The game's step accumulates them on the box's components first.
+    pub fn step_accumulated(
+        &mut self,
+        stepper: &mut Stepper,
+        start: Forces,
+        dt: f64,
+        bound: Bound,
+    ) -> Booked {
         self.ledger.open_step(self.settled, stepper.energy());
         let before = stepper.state;
         let info = stepper.step_from(start, dt);

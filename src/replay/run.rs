@@ -123,10 +123,7 @@ impl<'a> ReplayRun<'a> {
         let part = self.dt / f64::from(self.substeps);
         let mut info = StepInfo::default();
         for _ in 0..self.substeps {
-            let start = self.stepper.model().forces(&self.stepper.state);
-            let booked = self
-                .books
-                .step(&mut self.stepper, start, part, Bound::Playable);
+            let booked = self.books.step(&mut self.stepper, part, Bound::Playable);
             info.substeps += booked.info.substeps;
             info.evaluations += booked.info.evaluations;
             info.fell_back |= booked.info.fell_back;

@@ -120,8 +120,7 @@ impl Ghost {
         self.stepper.band = band;
         let before = self.stepper.state;
         let started = Instant::now();
-        let start = self.stepper.model().forces(&self.stepper.state);
-        let booked = self.books.step(&mut self.stepper, start, dt, Bound::Sane);
+        let booked = self.books.step(&mut self.stepper, dt, Bound::Sane);
         let ns = started.elapsed().as_nanos() as f64;
         self.ns_per_step = if self.steps == 0 {
             ns
