@@ -1186,36 +1186,49 @@ fn the_core_takes_from_bevy_only_its_maths_and_two_derives() {
     );
 }
 
+/// Each line of code (comments left out) in the files `wanted` picks by their path under src/:
+/// the path, the line's number and the line, trimmed.
+fn code_lines(
+    files: &[(std::path::PathBuf, String)],
+    wanted: impl Fn(&str) -> bool,
+) -> Vec<(String, usize, &str)> {
+    let mut found = Vec::new();
+    for (path, code) in files {
+        let file = path.to_string_lossy().replace('\\', "/");
+        if !wanted(&file) {
+            continue;
+        }
+        for (n, line) in code.lines().enumerate() {
+            let line = line.trim();
+            if !line.starts_with("//") {
+                found.push((file.clone(), n + 1, line));
+            }
+        }
+    }
+    found
+}
+
 /// Returns each line outside the core's stepper that steps an integrator or opens the books.
 ///
 /// The core's booked step (`Books::step` in src/physics/stepper.rs) is the one step with its
 /// books: a second one would keep them its own way.
 fn second_steps(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
-    let mut found = Vec::new();
-    for (path, code) in files {
-        let file = path.to_string_lossy().replace('\\', "/");
-        let core = [
-            "physics/stepper.rs",
-            "physics/energy.rs",
-            "physics/integrators/",
-        ];
-        if core.iter().any(|part| file.starts_with(part)) {
-            continue;
-        }
-        for (n, line) in code.lines().enumerate() {
-            let line = line.trim_start();
-            if line.starts_with("//") {
-                continue;
-            }
-            if [".open_step(", ".step_with(", ".step_from("]
-                .iter()
-                .any(|call| line.contains(call))
-            {
-                found.push(format!("{file}:{}: {line}", n + 1));
-            }
-        }
-    }
-    found
+    let core = [
+        "physics/stepper.rs",
+        "physics/energy.rs",
+        "physics/integrators/",
+    ];
+    code_lines(files, |file| {
+        !core.iter().any(|part| file.starts_with(part))
+    })
+    .into_iter()
+    .filter(|(_, _, line)| {
+        [".open_step(", ".step_with(", ".step_from("]
+            .iter()
+            .any(|call| line.contains(call))
+    })
+    .map(|(file, n, line)| format!("{file}:{n}: {line}"))
+    .collect()
 }
 
 #[test]
@@ -1358,20 +1371,11 @@ fn second_readers(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
         "replay/read.rs",
         "replay/write.rs",
     ];
-    let mut found = Vec::new();
-    for (path, code) in files {
-        let file = path.to_string_lossy().replace('\\', "/");
-        if own.contains(&file.as_str()) {
-            continue;
-        }
-        for (n, line) in code.lines().enumerate() {
-            let trimmed = line.trim_start();
-            if !trimmed.starts_with("//") && trimmed.contains("Record::") {
-                found.push(format!("{file}:{}: {trimmed}", n + 1));
-            }
-        }
-    }
-    found
+    code_lines(files, |file| !own.contains(&file))
+        .into_iter()
+        .filter(|(_, _, line)| line.contains("Record::"))
+        .map(|(file, n, line)| format!("{file}:{n}: {line}"))
+        .collect()
 }
 
 #[test]
@@ -1393,36 +1397,14 @@ fn the_reader_check_finds_a_second_reader() {
     assert_eq!(second_readers(&[file]).len(), 1);
 }
 
-/// Returns each line outside the HUD that writes the status line's text.
-///
-/// Every other plugin sends `Say`; the HUD alone keeps what the status line says.
-fn status_writers(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
-    let mut found = Vec::new();
-    for (path, code) in files {
-        let file = path.to_string_lossy().replace('\\', "/");
-        if file.starts_with("game/hud/") {
-            continue;
-        }
-        for (n, line) in code.lines().enumerate() {
-            let line = line.trim_start();
-            if [
-                "ResMut<StatusMessage>",
-                "ResMut<'w, StatusMessage>",
-                "resource_mut::<StatusMessage>",
-            ]
-            .iter()
-            .any(|write| line.contains(write))
-            {
-                found.push(format!("{file}:{}: {line}", n + 1));
-            }
-        }
-    }
-    found
-}
-
+/// Every other plugin sends `Say`; the HUD alone keeps what the status line says (its row of
+/// [`OWNERS`]).
 #[test]
 fn only_the_hud_writes_the_status_line() {
-    let found = status_writers(&source_files());
+    let found: Vec<String> = foreign_writes(&source_files())
+        .into_iter()
+        .filter(|write| write.contains("StatusMessage"))
+        .collect();
     assert!(
         found.is_empty(),
         "status written outside the HUD:\n{}",
@@ -1436,7 +1418,7 @@ fn the_status_check_finds_a_writer() {
         std::path::PathBuf::from("game/input/controls.rs"),
         "fn f(mut status: ResMut<StatusMessage>) {}\n".to_owned(),
     );
-    assert_eq!(status_writers(&[file]).len(), 1);
+    assert_eq!(foreign_writes(&[file]).len(), 1);
 }
 
 // --- Every setting written by its owner (issue 61). ---
@@ -1450,20 +1432,11 @@ const EXCLUSIVE: [(&str, &str); 1] = [(
 
 /// Returns each line of the game that takes the whole world or queues a closure over it.
 fn exclusive_lines(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
-    let mut found = Vec::new();
-    for (path, code) in files {
-        let file = path.to_string_lossy().replace('\\', "/");
-        if !file.starts_with("game/") {
-            continue;
-        }
-        for line in code.lines().map(str::trim) {
-            if !line.starts_with("//") && (line.contains("&mut World") || line.contains(".queue("))
-            {
-                found.push(format!("{file}: {line}"));
-            }
-        }
-    }
-    found
+    code_lines(files, |file| file.starts_with("game/"))
+        .into_iter()
+        .filter(|(_, _, line)| line.contains("&mut World") || line.contains(".queue("))
+        .map(|(file, _, line)| format!("{file}: {line}"))
+        .collect()
 }
 
 #[test]
@@ -1506,35 +1479,25 @@ const OWNERS: [(&str, &[&str]); 14] = [
 /// (the play command's set-up, before the plugins, puts the first values in).
 fn foreign_writes(files: &[(std::path::PathBuf, String)]) -> Vec<String> {
     let mut found = Vec::new();
-    for (path, code) in files {
-        let file = path.to_string_lossy().replace('\\', "/");
-        if !file.starts_with("game/") {
-            continue;
+    for (file, n, line) in code_lines(files, |file| file.starts_with("game/")) {
+        if line.contains("insert_resource(") && file != "game/play.rs" {
+            found.push(format!("{file}:{n}: {line}"));
         }
-        for (n, line) in code.lines().enumerate() {
-            let line = line.trim();
-            if line.starts_with("//") {
-                continue;
-            }
-            if line.contains("insert_resource(") && file != "game/play.rs" {
-                found.push(format!("{file}:{}: {line}", n + 1));
-            }
-            for (resource, owners) in OWNERS {
-                let writes = [
-                    format!("ResMut<{resource}>"),
-                    format!("ResMut<'w, {resource}>"),
-                    format!("::{resource}>"),
-                    format!("resource_mut::<{resource}>"),
-                ];
-                let written = writes.iter().any(|write| {
-                    line.contains(write.as_str())
-                        && (write.starts_with("ResMut")
-                            || write.starts_with("resource_mut")
-                            || line.contains("ResMut<"))
-                });
-                if written && !owners.iter().any(|owner| file.starts_with(owner)) {
-                    found.push(format!("{file}:{}: {resource}: {line}", n + 1));
-                }
+        for (resource, owners) in OWNERS {
+            let writes = [
+                format!("ResMut<{resource}>"),
+                format!("ResMut<'w, {resource}>"),
+                format!("::{resource}>"),
+                format!("resource_mut::<{resource}>"),
+            ];
+            let written = writes.iter().any(|write| {
+                line.contains(write.as_str())
+                    && (write.starts_with("ResMut")
+                        || write.starts_with("resource_mut")
+                        || line.contains("ResMut<"))
+            });
+            if written && !owners.iter().any(|owner| file.starts_with(owner)) {
+                found.push(format!("{file}:{n}: {resource}: {line}"));
             }
         }
     }
