@@ -100,6 +100,8 @@ pub enum Learn {
     Chapter(usize),
     /// This answer to the chapter's prediction.
     Predict(usize),
+    /// The chapter's scene back at its start, paused, its answers kept.
+    Restart,
     /// More point masses across the box, or fewer (the moment of inertia's sum).
     PointMasses(i32),
 }

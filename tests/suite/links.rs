@@ -15,12 +15,13 @@ use bevy::prelude::*;
 use bevy::ecs::system::SystemState;
 use common::{Game, small_replay, world_to_screen};
 use rubber_band_box::game::hud::{HINT, NEWS_SECONDS};
+use rubber_band_box::game::input::controls::Action;
 use rubber_band_box::game::play::{PlayOptions, prepare};
 use rubber_band_box::game::replays::links::link_of;
 use rubber_band_box::game::replays::playback::{Playback, PlaybackEnd};
 use rubber_band_box::game::replays::recording::Recorder;
 use rubber_band_box::game::setup::CurrentSetup;
-use rubber_band_box::game::shared::{Overlay, Overlays, SceneName, StatusMessage};
+use rubber_band_box::game::shared::{Learn, Overlay, Overlays, SceneName, StatusMessage};
 use rubber_band_box::physics::{Integrator, SceneParams, TIME_SCALE_RANGE};
 use rubber_band_box::replay::link::{Key, Link, MAX_FRAGMENT_BYTES, decode_replay, encode_replay};
 use rubber_band_box::replay::{Record, Replay, Settings};
@@ -459,6 +460,11 @@ fn link_sizes() {
 fn a_scene_opened_by_a_link_at_start_plays_to_its_recorded_bits() {
     for link in ["?v=1&scene=tutorial", "?v=1&learn=3"] {
         let mut game = opened(link);
+        if link.contains("learn") {
+            // A chapter waits, paused, for its answer.
+            game.world().trigger(Learn::Predict(0));
+            game.world().write_message(Action::TogglePause);
+        }
         game.update(400);
         let ended = game.world().resource::<Playback>().ended;
         assert!(

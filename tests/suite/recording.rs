@@ -10,6 +10,7 @@ use crate::common;
 use common::*;
 use rubber_band_box::game::input::controls::{Action, Parameter};
 use rubber_band_box::game::replays::recording::Recorder;
+use rubber_band_box::game::shared::Learn;
 use rubber_band_box::game::shared::{Overlay, StatusMessage};
 use rubber_band_box::physics::{AutoSettings, BodyState, Scene};
 use rubber_band_box::replay::run::ReplayRun;
@@ -154,8 +155,14 @@ fn learn_mode_and_an_opened_replay_keep_the_game_before_them() {
     let before = game.world().resource::<Recorder>().steps();
     send(&mut game, Action::Learn);
     game.update(5);
+    // The chapter waits, paused, for its answer.
+    game.world().trigger(Learn::Predict(0));
+    send(&mut game, Action::TogglePause);
     pull(&mut game, 20);
     send(&mut game, Action::NextChapter);
+    game.update(1);
+    game.world().trigger(Learn::Predict(0));
+    send(&mut game, Action::TogglePause);
     game.update(10);
     send(&mut game, Action::Learn);
     game.update(1);
@@ -173,7 +180,11 @@ fn learn_mode_and_an_opened_replay_keep_the_game_before_them() {
     pull(&mut game, 10);
     let recorder = game.world().resource::<Recorder>();
     let replay = recorder.replay.as_ref().unwrap();
-    assert!(replay.steps >= before + 80, "the earlier game is kept");
+    assert!(
+        replay.steps >= before + 70,
+        "the earlier game is kept: {} steps, {before} before",
+        replay.steps
+    );
     assert_replays(&mut game, "learn mode, then a replay opened");
 }
 
@@ -407,8 +418,10 @@ fn every_case_records_the_bytes_it_always_recorded() {
     let found: Vec<String> = recorded_cases()
         .into_iter()
         .map(|(case, mut game)| {
-            let replay = game.world().resource::<Recorder>().replay.clone().unwrap();
-            format!("{}\t{case}", digest(&replay))
+            // A chapter waiting for its answer takes no step, and records none.
+            let recorded = game.world().resource::<Recorder>().replay.clone();
+            let digest = recorded.map_or("no steps".to_owned(), |replay| digest(&replay));
+            format!("{digest}\t{case}")
         })
         .collect();
     let found = found.join("\n") + "\n";

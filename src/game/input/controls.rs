@@ -13,13 +13,13 @@ use crate::game::camera::{HomeView, ZOOM_IN, ZOOM_OUT};
 use crate::game::pointer::BAND_KEY;
 use crate::game::replays::links::ShareLink;
 use crate::game::replays::recording::SaveReplay;
-use crate::game::replays::scenes::LoadScene;
+use crate::game::replays::scenes::{LoadScene, RestartScene};
 use crate::game::schedule::GameSystems;
 use crate::game::setup::CurrentSetup;
 use crate::game::shared::FocusedKeys;
 use crate::game::shared::Learn;
 use crate::game::shared::{Overlay, Say};
-use crate::game::simulation::{ResetScene, StepOnce};
+use crate::game::simulation::StepOnce;
 use crate::game::theme::readable;
 use crate::physics::{
     Integrator, Range, STEP_RATE_RANGE, STIFFNESS_RANGE, Scene, SceneParams, TIME_SCALE_RANGE,
@@ -120,6 +120,8 @@ pub enum Action {
     PreviousChapter,
     /// This answer to the chapter's prediction.
     Predict(usize),
+    /// The chapter's scene back at its start, its answers kept.
+    RestartChapter,
     /// More point masses across the box, or fewer.
     PointMasses(i32),
     /// The scene at this place in [`Scene::NAMES`].
@@ -242,7 +244,7 @@ pub const CONTROLS: [Control; 22] = [
         actions: &[Action::Reset],
         label: "R",
         name: "reset",
-        effect: "reset: the box at rest at the centre, no band, the books, the graph and the trail started over",
+        effect: "reset: a scene loaded back at its start, its scripted pull with it, the sliders as they are (else the box at rest at the centre); the books, the graph and the trail started over",
     },
     Control {
         keys: &[CYCLE_INTEGRATOR],
@@ -500,8 +502,8 @@ fn apply_actions(mut actions: MessageReader<Action>, mut commands: Commands, set
 /// Sends what an action asks of another plugin, which acts on it.
 fn send_message(commands: &mut Commands, action: Action) {
     match action {
-        // Each plugin puts back what it owns (see [`ResetScene`]).
-        Action::Reset => commands.trigger(ResetScene),
+        // The scene plays from its start, each plugin putting back what it owns.
+        Action::Reset => commands.trigger(RestartScene),
         // The view puts its camera back ([`HomeView`]).
         Action::HomeView => commands.trigger(HomeView),
         // The recorder saves and says where ([`crate::game::replays::recording`]).
@@ -510,6 +512,7 @@ fn send_message(commands: &mut Commands, action: Action) {
         Action::NextChapter => commands.trigger(Learn::Next),
         Action::PreviousChapter => commands.trigger(Learn::Previous),
         Action::Predict(choice) => commands.trigger(Learn::Predict(choice)),
+        Action::RestartChapter => commands.trigger(Learn::Restart),
         Action::PointMasses(by) => commands.trigger(Learn::PointMasses(by)),
         Action::ShareLink => commands.trigger(ShareLink { game: false }),
         Action::ShareGame => commands.trigger(ShareLink { game: true }),

@@ -58,17 +58,19 @@ pub enum Equation {
 /// Each yields one of the chapter's choices as what happened.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Task {
-    /// A pull of 40 px along a line through the centre: did the box turn (0) or not (1)?
+    /// The scene's pull through the centre, over 40 px: did the box turn (0) or not (1)?
     TurnThroughTheCentre,
     /// Angular damping c at 0 while the box spins: did ω fall (0), stay (1) or grow (2)?
     SpinWithoutDamping,
-    /// A pull of the player's: did ω pass 1 rad/s counter-clockwise (0) or clockwise (1)?
+    /// The scene's pull: did the band's torque make ω rise (0) or fall (1) by 1 rad/s?
     SignOfTorque,
-    /// I doubled while a band holds: did τ_band / I double (0), stay (1) or halve (2)?
+    /// I doubled under a band: did ω change twice as fast (0), as fast (1) or half (2)?
+    ///
+    /// Judged over single steps.
     DoubleTheInertia,
-    /// The pointer dragged nearer another corner: did the band hold the first (0) or move (1)?
+    /// The pointer dragged nearer another corner: did the band hold its point (0) or move (1)?
     HeldCorner,
-    /// A pull let go: did the box come to rest (0) or keep moving (1)?
+    /// A band let go: did the box come to rest (0) or keep moving (1)?
     ComeToRest,
     /// A single step while paused: did x move with the v before the step (0) or after it (1)?
     StepOrder,
@@ -93,7 +95,9 @@ pub struct Chapter {
     pub scene: &'static str,
     /// The integrator the chapter runs with (the tutorial's own for its update loop).
     pub integrator: Option<&'static str>,
-    /// A few sentences in the project's own words.
+    /// A few sentences in the project's own words, at most about 60.
+    ///
+    /// The derivations are docs/learn.md's.
     pub text: &'static str,
     pub equations: &'static [Equation],
     /// The world area the camera frames, in px (left, bottom, right, top).
@@ -105,34 +109,35 @@ pub struct Chapter {
     pub centre_twin: bool,
     /// The ghosts of every integrator beside the box (the update loop's seed and Euler).
     pub ghosts: bool,
+    /// How fast the game's clock runs in the chapter: slow motion where the eye needs it.
+    pub pace: f64,
     pub task: Task,
     pub prediction: Prediction,
 }
 
 /// The chapters, in the tutorial's order.
+///
+/// Each starts paused at its scene's start; nothing moves until its question has an answer.
 pub const CHAPTERS: [Chapter; 7] = [
     Chapter {
         title: "Linear motion",
         sections: "§3.2, §4.2",
         scene: "diagonal",
         integrator: None,
-        text: "Axes: x to the right, y up (the tutorial's screen counts y down); the centre's \
-               position is x (the tutorial's s). Every force moves the centre as if all the mass sat \
-               there, wherever it acts: ΣF\u{a0}=\u{a0}m\u{a0}a (§4.2), where ΣF is the band's pull \
-               F_band plus the damping F_damp\u{a0}=\u{a0}−b\u{a0}v (chapter 6). Does a force whose \
-               line of action passes through the centre also turn the box? Predict below. Time is in \
-               seconds: the tutorial's k\u{a0}=\u{a0}0.002\u{a0}/frame² and \
-               b\u{a0}=\u{a0}0.05\u{a0}/frame are k\u{a0}=\u{a0}0.002\u{a0}×\u{a0}100²\u{a0}=\u{a0}20 \
-               and b\u{a0}=\u{a0}0.05\u{a0}×\u{a0}100\u{a0}=\u{a0}5 at its 100 frames a second.",
+        text: "Right and up are positive; x is the centre's position, in px. Every force moves \
+               the centre as if all the mass sat there: ΣF\u{a0}=\u{a0}m\u{a0}a, ΣF the band's \
+               pull plus damping's −b\u{a0}v. Time is in s, mass in mass units (mu), force in \
+               mu·px/s². The band here pulls along the diagonal, through the centre.",
         equations: &[Equation::ForceSum, Equation::Acceleration, Equation::Motion],
         frame: [-70.0, -70.0, 230.0, 230.0],
         centre_twin: false,
         ghosts: false,
+        pace: 1.0,
         task: Task::TurnThroughTheCentre,
         prediction: Prediction {
-            question: "pulled along its diagonal, through the centre: will the box turn?",
+            question: "the band will pull along the diagonal, through the centre: will the box turn?",
             choices: &["it turns", "it does not turn"],
-            then: "then pull the box 40 px along the diagonal, from a corner away from the centre",
+            then: "then resume (Space) and watch the pull",
         },
     },
     Chapter {
@@ -140,23 +145,21 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§3.3",
         scene: "spin",
         integrator: None,
-        text: "A rigid body also has an orientation θ (the tutorial's Ω): one number, because a plane \
-               has one way to turn (§3.3.1). Its angular velocity is ω\u{a0}=\u{a0}dθ/dt, its angular \
-               acceleration α\u{a0}=\u{a0}dω/dt. θ, ω and torques count counter-clockwise as \
-               positive, as the arc between the axes in the scene's corner shows (on the tutorial's \
-               y-down screen its positive angle looks clockwise). No band pulls this box until you \
-               press: it spins, and angular damping takes ω down at the rate c, \
-               dω/dt\u{a0}=\u{a0}−c\u{a0}ω; the tutorial's ω\u{a0}×\u{a0}0.98 a frame is \
-               c\u{a0}=\u{a0}−ln\u{a0}0.98\u{a0}×\u{a0}100\u{a0}=\u{a0}2.02\u{a0}/s.",
+        text: "A rigid body also has an orientation θ, in rad, and an angular velocity \
+               ω\u{a0}=\u{a0}dθ/dt, in rad/s, counter-clockwise positive (the arc in the scene's \
+               corner). No band pulls this box: only angular damping changes ω, \
+               dω/dt\u{a0}=\u{a0}−c\u{a0}ω, c in /s. Slow motion: an eighth of real time, so the \
+               spin is seen as it is.",
         equations: &[Equation::Orientation, Equation::AngularDecay],
         frame: [-130.0, -100.0, 130.0, 100.0],
         centre_twin: false,
         ghosts: false,
+        pace: 0.125,
         task: Task::SpinWithoutDamping,
         prediction: Prediction {
             question: "with the angular damping c at 0, what will ω do?",
             choices: &["fall to 0", "stay as it is", "grow"],
-            then: "then pause (Space), set angular damping to 0 (Controls card), resume and watch ω for half a second",
+            then: "then set angular damping to 0 (Controls card), resume (Space) and watch ω",
         },
     },
     Chapter {
@@ -164,17 +167,11 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§4.2, §4.3.1-4.3.3",
         scene: "tutorial",
         integrator: None,
-        text: "The arm r runs from the centre to the point p where the force acts. The torque is \
-               τ\u{a0}=\u{a0}r\u{a0}×\u{a0}F\u{a0}=\u{a0}r_x·F_y\u{a0}−\u{a0}r_y·F_x (the tutorial's \
-               eq.\u{a0}12; its perp dot product r⊥\u{a0}·\u{a0}F is the same number): zero when the \
-               force's line of action passes through the centre, positive when it turns the box \
-               counter-clockwise. A point of the box moves at v\u{a0}+\u{a0}ω\u{a0}r⊥, with \
-               r⊥\u{a0}=\u{a0}(−r_y,\u{a0}r_x) (§4.3.2): the green arrow at the corner, beside the \
-               grey one of its move over the last step. The centre still accelerates by \
-               ΣF\u{a0}/\u{a0}m. The outline below is a twin that the box's own band force pushes at \
-               its centre, with the same damping: its centre moves as the box's, and with \
-               r\u{a0}=\u{a0}0 it never turns. How much a torque changes ω takes the moment of \
-               inertia: chapter 4.",
+        text: "The arm r runs from the centre to the band's point p. The band's torque about the \
+               centre is τ\u{a0}=\u{a0}r\u{a0}×\u{a0}F\u{a0}=\u{a0}r_x\u{a0}F_y\u{a0}−\u{a0}r_y\u{a0}F_x \
+               (eq.\u{a0}12), in mu·px²/s², counter-clockwise positive. It sets how ω changes, \
+               not which way the box turns. The outline below only follows the centre: the centre \
+               moves as if F acted there.",
         equations: &[
             Equation::Arm,
             Equation::Torque,
@@ -186,11 +183,13 @@ pub const CHAPTERS: [Chapter; 7] = [
         frame: [-70.0, -180.0, 270.0, 190.0],
         centre_twin: true,
         ghosts: false,
+        pace: 1.0,
         task: Task::SignOfTorque,
         prediction: Prediction {
-            question: "which way will your pull turn the box?",
-            choices: &["counter-clockwise (τ > 0)", "clockwise (τ < 0)"],
-            then: "then press and pull until the band has changed ω by 1 rad/s",
+            question: "the band will pull the upper-right corner toward (200, 120) px: what will \
+                       its torque do to ω?",
+            choices: &["ω rises (τ > 0)", "ω falls (τ < 0)"],
+            then: "then resume (Space) and watch the band's pull",
         },
     },
     Chapter {
@@ -198,18 +197,11 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§4.3.4-4.3.6",
         scene: "undamped",
         integrator: None,
-        text: "The moment of inertia is to turning what mass is to moving. Cut the box into \
-               n\u{a0}×\u{a0}n small masses mₖ at arms rₖ: its kinetic energy of turning is \
-               ½\u{a0}Σ\u{a0}mₖ\u{a0}|ω\u{a0}rₖ|²\u{a0}=\u{a0}½\u{a0}I\u{a0}ω², so \
-               I\u{a0}=\u{a0}Σ\u{a0}mₖ\u{a0}|rₖ|², which tends to the box's \
-               m\u{a0}(w²\u{a0}+\u{a0}h²)\u{a0}/\u{a0}12 as n grows (the dots; n\u{a0}−, n\u{a0}+). \
-               While I stays, the angular momentum L\u{a0}=\u{a0}I\u{a0}ω changes at the rate of the \
-               torque, τ\u{a0}=\u{a0}dL/dt, so α\u{a0}=\u{a0}Στ\u{a0}/\u{a0}I \
-               (τ_damp\u{a0}=\u{a0}−c\u{a0}I\u{a0}ω is chapter 6's; 0 here). This scene has no \
-               damping and its band stays unless you press (◂\u{a0}back and next\u{a0}▸ bring it \
-               back), so your hand is free for the sliders: the band holds the same point in the \
-               box's own coordinates when the mass or the size changes (after a resize, no longer a \
-               corner).",
+        text: "The moment of inertia I is to turning what mass is to moving: \
+               I\u{a0}=\u{a0}Σ\u{a0}mₖ\u{a0}|rₖ|² over the dots (n\u{a0}−, n\u{a0}+), \
+               m\u{a0}(w²\u{a0}+\u{a0}h²)\u{a0}/\u{a0}12 for the box, in mu·px². About the \
+               centre, L\u{a0}=\u{a0}I\u{a0}ω changes at the rate Στ. No damping here, and the \
+               band holds its point of the box when the mass or the size changes.",
         equations: &[
             Equation::PointMasses,
             Equation::Inertia,
@@ -220,11 +212,13 @@ pub const CHAPTERS: [Chapter; 7] = [
         frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
         ghosts: false,
+        pace: 1.0,
         task: Task::DoubleTheInertia,
         prediction: Prediction {
-            question: "I doubled, the band where it is: what will τ_band / I do?",
-            choices: &["double", "stay the same", "halve"],
-            then: "then pause (Space) and at least double I: mass 5 → 10, or size 60 → 89 px (Controls card)",
+            question: "I doubled, the band where it is: how fast will ω change?",
+            choices: &["twice as fast", "as fast", "half as fast"],
+            then: "then step (N) and note ω's change; double I (mass 5 → 10, or size 60 → 85 \
+                   px, Controls card); step again",
         },
     },
     Chapter {
@@ -232,18 +226,18 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§5.2.3",
         scene: "rest",
         integrator: None,
-        text: "The band is a spring of zero rest length from the pointer q to a corner p of the box: \
-               its force is F\u{a0}=\u{a0}−k\u{a0}(p\u{a0}−\u{a0}q), k times the stretch, toward the \
-               pointer (the tutorial's x is the stretch p\u{a0}−\u{a0}q; its p is the momentum). The \
-               corner is the one nearest the pointer at the press. Does the band keep that corner \
-               when another comes nearer? Predict below.",
+        text: "The band is a spring of zero rest length from the pointer q to its point p on the \
+               box: F\u{a0}=\u{a0}−k\u{a0}(p\u{a0}−\u{a0}q), k times the stretch, toward the \
+               pointer. At the press it takes the corner nearest the pointer.",
         equations: &[Equation::NearestCorner, Equation::Spring, Equation::Torque],
         frame: [-130.0, -100.0, 130.0, 100.0],
         centre_twin: false,
         ghosts: false,
+        pace: 1.0,
         task: Task::HeldCorner,
         prediction: Prediction {
-            question: "press by one corner, then drag until another is nearer: which does the band hold?",
+            question: "press by one corner, then drag until another is nearer: which does the \
+                       band hold?",
             choices: &["the one it took", "the one now nearest"],
             then: "then press by a corner and drag the pointer round to another",
         },
@@ -253,15 +247,11 @@ pub const CHAPTERS: [Chapter; 7] = [
         sections: "§5.2.4",
         scene: "tutorial",
         integrator: None,
-        text: "Damping opposes the motion: F_damp\u{a0}=\u{a0}−b\u{a0}v on the centre and \
-               τ_damp\u{a0}=\u{a0}−c\u{a0}I\u{a0}ω on the turn. It turns kinetic energy into heat at \
-               the rate b\u{a0}|v|²\u{a0}+\u{a0}c\u{a0}I\u{a0}ω². The hand puts \
-               ½\u{a0}k\u{a0}|p\u{a0}−\u{a0}q|² into the band at the press, and more in or out as it \
-               moves the pointer; at release the band's energy leaves with the hand. A slider (k, \
-               mass, size) changes E too, and the books count it with the hand. The books: \
-               E₀\u{a0}+\u{a0}W_hand\u{a0}−\u{a0}W_damp; E differs from them by the integrator's \
-               error (its own reckoning of W_damp included), the last line. Does the box always come \
-               to rest? Set b or c to 0 if you like, and predict below.",
+        text: "Damping slows the box: F_damp\u{a0}=\u{a0}−b\u{a0}v on the centre, \
+               τ_damp\u{a0}=\u{a0}−c\u{a0}I\u{a0}ω on the turn (the tutorial adds it for looks, \
+               §5.2.4). It takes energy E out at b\u{a0}|v|²\u{a0}+\u{a0}c\u{a0}I\u{a0}ω². The \
+               books, E₀\u{a0}+\u{a0}W_hand\u{a0}−\u{a0}W_damp, differ from E by the \
+               integrator's error: the last line. The band pulls for 2\u{a0}s, then lets go.",
         equations: &[
             Equation::LinearDamping,
             Equation::AngularDamping,
@@ -271,37 +261,33 @@ pub const CHAPTERS: [Chapter; 7] = [
         frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
         ghosts: false,
+        pace: 1.0,
         task: Task::ComeToRest,
         prediction: Prediction {
-            question: "once you let go, will the box come to rest?",
+            question: "once the band lets go, will the box come to rest?",
             choices: &["it comes to rest", "it keeps moving"],
-            then: "then pull and let go (set b or c to 0 first, if you like)",
+            then: "then resume (Space) and watch (set b or c to 0 first, if you like)",
         },
     },
     Chapter {
         title: "The update loop",
-        sections: "§5.2.4; appendix §8.1: RigidBody.update, AngularDamping",
+        sections: "appendix §8.1: RigidBody.update, AngularDamping",
         scene: "tutorial",
         integrator: Some("seed"),
-        text: "The tutorial's own loop, run here by the seed integrator; the lines are its numbers \
-               for the next step. Angular damping first scales ω by e^(−c\u{a0}dt), 0.98 a step at \
-               100\u{a0}Hz; the forces give a, and the band's torque \
-               α_band\u{a0}=\u{a0}τ_band\u{a0}/\u{a0}I (damping acted in line 1); then ω and θ, then \
-               v and x. Which v moves x? Predict below. This order (semi-implicit Euler) keeps the \
-               energy's error bounded while the step resolves the band (2\u{a0}√(k/m)\u{a0}dt below \
-               2: at 100\u{a0}Hz, k/m under 10⁴); explicit Euler, which moves x with the old v, runs \
-               further from its books step after step. The ghosts step both from the same start, \
-               their books' errors the last lines; the other ghosts are the other integrators, and P \
-               plots each one's distance from the reference against its cost.",
+        text: "The tutorial's own loop, run by the seed integrator; each line is its number for \
+               the next step. Damping scales ω first, then the forces give a and α_band. The \
+               ghosts step seed and explicit Euler from the same start, their books' errors the \
+               last lines; P plots every integrator's error against its cost.",
         equations: &[Equation::Update, Equation::UpdateOrder],
         frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
         ghosts: true,
+        pace: 1.0,
         task: Task::StepOrder,
         prediction: Prediction {
-            question: "paused, one step (N): x moves by v dt with which v?",
+            question: "one step (N): x moves by v dt with which v?",
             choices: &["the v before the step", "the v after it"],
-            then: "then pause (Space) and step (N) while the box moves",
+            then: "then resume a moment (Space), pause (Space) and step (N)",
         },
     },
 ];

@@ -274,6 +274,16 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
     }
 }
 
+/// Hides what an equation's lines would tell of the chapter's answer before it is given.
+///
+/// The update loop's lines 4 and 5 say which v moves x.
+pub fn hide_the_answer(equation: Equation, lines: &mut Vec<String>) {
+    if equation == Equation::Update {
+        lines.truncate(3);
+        lines.push("4, 5  ω, θ, v and x: shown once you have answered".to_owned());
+    }
+}
+
 /// Returns the lines of ΣF, the band's and damping's forces summed.
 fn force_sum(q: &Quantities) -> Vec<String> {
     let sum = q.force_sum();
@@ -577,7 +587,7 @@ fn update(q: &Quantities) -> Vec<String> {
             n(s.angular_acceleration)
         ),
         format!(
-            "4  ω += α dt → {}   θ += ω dt → {}",
+            "4  ω += α_band dt → {}   θ += ω dt → {}",
             n(after.angular.angular_velocity),
             n(after.angular.orientation)
         ),

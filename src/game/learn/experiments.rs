@@ -9,14 +9,10 @@ use crate::game::theme::readable;
 use crate::physics::{BandEnds, BodyState, kinetic_energy};
 use crate::physics::{MassProperties, SceneParams};
 
-/// How far the box may turn over a 40 px pull and count as not turning (rad).
-pub const NOT_TURNING: f64 = 0.05;
-/// How far a pull's line of action may pass from the centre and count as through it (px).
-pub const THROUGH_THE_CENTRE: f64 = 3.0;
-/// How long ω is watched with the angular damping at 0 (s).
-pub const SPIN_WATCH: f64 = 0.5;
 /// How far ω must change from the press for a pull's turn to count (rad/s).
 pub const TURN: f64 = 1.0;
+/// How long ω is watched with the angular damping at 0 (s).
+pub const SPIN_WATCH: f64 = 0.5;
 
 /// What an experiment found, against the answer the learner held when it began.
 #[derive(Debug, Clone, PartialEq)]
@@ -45,13 +41,18 @@ pub(super) struct Progress {
     pub(super) verdict: Option<Verdict>,
     /// The experiment under way has been judged (a new press, release or setting starts one).
     pub(super) judged: bool,
-    /// A pull of the player's under way: where it started, θ and ω then.
+    /// A pull under way: where it started, θ and ω then.
     pub(super) pull_start: Option<(DVec2, f64, f64)>,
+    /// The band's point on the box, in its own coordinates, and its torque as the pull began.
+    pub(super) pull_point: DVec2,
+    pub(super) pull_torque: f64,
+    /// The pull under way is, or was at some moment, the player's own.
+    pub(super) players: bool,
     /// The farthest the band's line of action has passed from the centre in this pull (px).
     pub(super) worst_miss: f64,
     /// ω and the fixed clock when the angular damping was first seen at 0.
     pub(super) window: Option<(f64, f64)>,
-    /// τ_band / I, τ_band and I while the band held with I unchanged.
+    /// ω's change over the latest single step (rad/s), τ_band and I then.
     pub(super) before: Option<(f64, f64, f64)>,
     /// A pull let go: the most kinetic energy since, and when (the fixed clock, s).
     pub(super) released: Option<f64>,
@@ -80,7 +81,6 @@ pub(super) struct Look<'a> {
     pub(super) clock: f64,
     /// The simulated time this frame's steps covered.
     pub(super) stepped_seconds: f64,
-    pub(super) paused: bool,
     pub(super) single_step: bool,
 }
 
@@ -126,11 +126,12 @@ fn line_miss(look: &Look, band: BandEnds) -> f64 {
     }
 }
 
-/// Starts a pull of the player's when the band appears, and forgets it when the band goes.
+/// Starts a pull when a band appears, and forgets it when the band goes.
 ///
+/// The band is the scene's or the player's.
 /// Returns the band while the pull is on.
 fn follow_pull(progress: &mut Progress, look: &Look) -> Option<BandEnds> {
-    let Some(band) = look.player_band else {
+    let Some(band) = look.any_band else {
         progress.pull_start = None;
         return None;
     };
@@ -141,51 +142,77 @@ fn follow_pull(progress: &mut Progress, look: &Look) -> Option<BandEnds> {
             angular.orientation,
             angular.angular_velocity,
         ));
+        progress.pull_point = band.local_point;
+        progress.pull_torque = band_torque(look, band);
+        progress.players = false;
         progress.worst_miss = 0.0;
+        progress.band_turn = 0.0;
         progress.committed = progress.predicted;
         progress.judged = false;
     }
+    progress.players |= look.player_band.is_some();
     Some(band)
+}
+
+/// Says what a chapter whose pull is the scene's makes of a pull of the player's own.
+fn not_the_chapters_pull(what: &str) -> String {
+    format!("that was your own pull, not the chapter's: {what}; ↺ restart plays the chapter's pull")
 }
 
 fn turn_through_the_centre(progress: &mut Progress, look: &Look) -> Found {
     let band = follow_pull(progress, look)?;
     progress.worst_miss = progress.worst_miss.max(line_miss(look, band));
-    let (from, angle, _) = progress.pull_start?;
+    let (from, angle, spin) = progress.pull_start?;
     let moved = look.state.linear.position.distance(from);
     if progress.judged || moved < 40.0 {
         return None;
     }
-    let turned = (look.state.angular.orientation - angle).abs();
-    let miss = progress.worst_miss;
-    if miss > THROUGH_THE_CENTRE {
+    let angular = look.state.angular;
+    let (turned, spun) = (angular.orientation - angle, angular.angular_velocity - spin);
+    if progress.players {
+        let what = format!("it turned the box {} rad", n(turned));
+        return Some((None, not_the_chapters_pull(&what)));
+    }
+    if spin != 0.0 {
         return Some((
             None,
             format!(
-                "that pull's line passed up to {} px from the centre, so τ = r × F was not 0 \
-                 and the box turned {} rad: pull along the diagonal to test the answer",
-                n(miss),
-                n(turned)
+                "the box was already turning (ω = {} rad/s): ↺ restart starts it at rest",
+                n(spin)
             ),
         ));
     }
-    // A line `miss` px off the centre turns the box by about 40 m miss / I over the 40 px
-    // (the torque F miss over the same ∫∫F dt² = 40 m that moved the centre).
-    let explained = 40.0 * look.mass.mass() * miss / look.mass.inertia();
-    let outcome = usize::from(turned < NOT_TURNING + explained);
+    // A pull through the centre has no torque about it to the bit (the box's corner, its
+    // centre and the pointer on one line); the band of a box that is not square misses it.
+    let size = look.mass.size();
+    let reach = size.length() / 2.0;
+    let miss = progress.worst_miss;
+    if miss > 1e-9 * reach {
+        return Some((
+            None,
+            format!(
+                "this box is {} × {} px, not square: its corner's diagonal misses the centre by \
+                 up to {} px, so the pull does not pass through it",
+                n(size.x),
+                n(size.y),
+                n(miss)
+            ),
+        ));
+    }
+    let outcome = usize::from(turned.abs() <= 1e-9 && spun.abs() <= 1e-9);
     let why = if outcome == 1 {
         format!(
-            "over 40 px it turned {} rad, no more than a line {} px off the centre explains: \
-             through the centre, τ = r × F = 0 and ω stays 0",
+            "over 40 px θ changed by {} rad and ω by {} rad/s: the band's line passed through \
+             the centre, so its torque about the centre, τ = r × F, was 0",
             n(turned),
-            n(miss)
+            n(spun)
         )
     } else {
         format!(
-            "it turned {} rad over 40 px, more than its line {} px off the centre explains: \
-             something else turned it (was it turning before the press?)",
+            "over 40 px θ changed by {} rad and ω by {} rad/s: something gave a torque about \
+             the centre",
             n(turned),
-            n(miss)
+            n(spun)
         )
     };
     Some((Some(outcome), why))
@@ -213,7 +240,7 @@ fn spin_without_damping(progress: &mut Progress, look: &Look) -> Found {
         return Some((
             None,
             format!(
-                "the spin had died down (ω = {} rad/s): ◂ back and next ▸ spin it again",
+                "the spin had died down (ω = {} rad/s): ↺ restart spins it again",
                 n(from)
             ),
         ));
@@ -225,11 +252,16 @@ fn spin_without_damping(progress: &mut Progress, look: &Look) -> Found {
     } else {
         2
     };
+    let why = if outcome == 1 {
+        "with c = 0 and no band, no torque acts: dω/dt = −c ω = 0, and the box turns on at the \
+         same rate"
+    } else {
+        "with c = 0 and no band, something still gave a torque"
+    };
     Some((
         Some(outcome),
         format!(
-            "ω went from {} to {} rad/s in {} s: with c = 0, dω/dt = −c ω = 0, and nothing \
-             else turns it",
+            "ω went from {} to {} rad/s in {} s: {why}",
             n(from),
             n(omega),
             n(look.clock - since)
@@ -238,10 +270,7 @@ fn spin_without_damping(progress: &mut Progress, look: &Look) -> Found {
 }
 
 fn sign_of_torque(progress: &mut Progress, look: &Look) -> Found {
-    let Some(band) = follow_pull(progress, look) else {
-        progress.band_turn = 0.0;
-        return None;
-    };
+    let band = follow_pull(progress, look)?;
     let torque = band_torque(look, band);
     // The band's own part of ω's change: ∫ τ_band dt / I over the pull, not damping's.
     progress.band_turn += torque / look.mass.inertia() * look.stepped_seconds;
@@ -249,15 +278,19 @@ fn sign_of_torque(progress: &mut Progress, look: &Look) -> Found {
     if progress.judged || turn.abs() < TURN {
         return None;
     }
+    if progress.players {
+        let what = format!("its torque changed ω by {} rad/s", n(turn));
+        return Some((None, not_the_chapters_pull(&what)));
+    }
     let outcome = usize::from(turn < 0.0);
-    let sense = ["counter-clockwise", "clockwise"][outcome];
+    let sense = ["rose", "fell"][outcome];
     Some((
         Some(outcome),
         format!(
-            "the band's torque alone changed ω by {} rad/s (∫ τ_band dt / I), {sense}: the sign \
-             of τ = r × F ({} now) is the sense",
+            "the band's torque alone changed ω by {} rad/s (∫ τ_band dt / I): ω {sense}, as the \
+             sign of τ = r × F at the start ({} mu·px²/s²) says, whichever way the box was turning",
             n(turn),
-            n(torque)
+            n(progress.pull_torque)
         ),
     ))
 }
@@ -267,27 +300,27 @@ fn double_the_inertia(progress: &mut Progress, look: &Look) -> Found {
         progress.before = None;
         return None;
     };
+    if !look.single_step {
+        // While the box runs, τ_band moves with it: the steps compared are single steps.
+        if look.stepped_seconds > 0.0 {
+            progress.before = None;
+        }
+        return None;
+    }
+    let last = progress.last_state?;
+    let change = look.state.angular.angular_velocity - last.angular.angular_velocity;
     let (torque, inertia) = (band_torque(look, band), look.mass.inertia());
-    let share = torque / inertia;
     match progress.before {
-        // I doubled since: judge the answer held before the change.
-        Some((share_then, torque_then, inertia_then))
+        // I doubled since the step before: judge the answer held then.
+        Some((change_then, torque_then, inertia_then))
             if inertia >= 2.0 * inertia_then * (1.0 - 1e-12) =>
         {
-            progress.before = Some((share, torque, inertia));
-            if !look.paused {
+            progress.before = Some((change, torque, inertia));
+            let ratio = change / change_then;
+            if change_then == 0.0 || !ratio.is_finite() {
                 return Some((
                     None,
-                    "the box moved while I changed, so τ_band changed too: pause (Space) first, \
-                     then change I"
-                        .to_owned(),
-                ));
-            }
-            let ratio = share / share_then;
-            if share_then == 0.0 || !ratio.is_finite() {
-                return Some((
-                    None,
-                    "the band had no torque before: wait for it to pull off the centre".to_owned(),
+                    "ω did not change over the step before: the band had no torque".to_owned(),
                 ));
             }
             let outcome = if ratio > 1.5 {
@@ -300,22 +333,22 @@ fn double_the_inertia(progress: &mut Progress, look: &Look) -> Found {
             Some((
                 Some(outcome),
                 format!(
-                    "τ_band / I went {} → {} rad/s² (× {}): τ_band {} → {} (the band held \
-                     its point), I {} → {}",
-                    n(share_then),
-                    n(share),
+                    "over one step ω changed by {} rad/s with I = {} mu·px², by {} with I = {} \
+                     (× {}); the band's torque went {} → {}: α = τ / I",
+                    n(change_then),
+                    n(inertia_then),
+                    n(change),
+                    n(inertia),
                     n(ratio),
                     n(torque_then),
-                    n(torque),
-                    n(inertia_then),
-                    n(inertia)
+                    n(torque)
                 ),
             ))
         }
-        // I grows (a slider dragged over several frames): keep the sample before it moved.
-        Some((_, _, inertia_then)) if inertia > inertia_then => None,
+        // I moved, but not to twice: keep the step from before it moved.
+        Some((_, _, inertia_then)) if inertia != inertia_then => None,
         _ => {
-            progress.before = Some((share, torque, inertia));
+            progress.before = Some((change, torque, inertia));
             progress.committed = progress.predicted;
             None
         }
@@ -324,38 +357,44 @@ fn double_the_inertia(progress: &mut Progress, look: &Look) -> Found {
 
 fn held_corner(progress: &mut Progress, look: &Look) -> Found {
     let band = follow_pull(progress, look)?;
-    if progress.judged {
+    if progress.judged || !progress.players {
         return None;
     }
     let state = &look.state;
-    let held = band.attachment(state);
-    let to_held = held.distance(band.anchor);
-    let nearest = look
-        .mass
-        .corners()
-        .map(|corner| state.local_to_world(corner))
-        .into_iter()
-        .min_by(|a, b| a.distance(band.anchor).total_cmp(&b.distance(band.anchor)))?;
-    let nearer = to_held - nearest.distance(band.anchor);
+    let nearest = look.mass.corners().into_iter().min_by(|a, b| {
+        let to = |corner: DVec2| state.local_to_world(corner).distance(band.anchor);
+        to(*a).total_cmp(&to(*b))
+    })?;
+    let first = progress.pull_point;
+    let to_first = state.local_to_world(first).distance(band.anchor);
+    let nearer = to_first - state.local_to_world(nearest).distance(band.anchor);
     if nearer < 1.0 {
         return None;
     }
-    Some((
-        Some(0),
+    // Judged from where the band holds now, in the box's own coordinates.
+    let outcome = usize::from(band.local_point != first);
+    let why = if outcome == 0 {
         format!(
-            "the band held {}, though the corner at {} is {} px nearer the pointer: the corner \
-             is chosen once, at the press",
-            v(held),
+            "the band held the corner {} of the box, though the corner {} is {} px nearer the \
+             pointer: the corner is chosen once, at the press",
+            v(first),
             v(nearest),
             n(nearer)
-        ),
-    ))
+        )
+    } else {
+        format!(
+            "the band moved from the corner {} to {}",
+            v(first),
+            v(band.local_point)
+        )
+    };
+    Some((Some(outcome), why))
 }
 
 fn come_to_rest(progress: &mut Progress, look: &Look) -> Found {
     let state = &look.state;
     let energy = kinetic_energy(state, look.mass);
-    if look.player_band.is_some() {
+    if look.any_band.is_some() {
         progress.pulled = true;
         progress.released = None;
         return None;
@@ -437,36 +476,61 @@ fn step_order(progress: &mut Progress, look: &Look) -> Found {
     let before: BodyState = progress.last_state?;
     let dt = look.params.dt();
     let (v0, v1) = (before.linear.velocity, look.state.linear.velocity);
-    if (v1 - v0).length() * dt < 1e-9 {
+    let (x0, x1) = (before.linear.position, look.state.linear.position);
+    // What rounding alone can move x by: a few units in the last place of x.
+    let rounding = 8.0 * f64::EPSILON * x0.length().max(x1.length()).max(1.0);
+    if (v1 - v0).length() * dt <= 2.0 * rounding {
         return Some((
             None,
-            "v did not change over that step, so both answers move x alike: pull the box first"
+            "v hardly changed over that step, so both answers move x alike: resume a moment, \
+             pause and step again"
                 .to_owned(),
         ));
     }
-    let moved = look.state.linear.position - before.linear.position;
+    let moved = x1 - x0;
     progress.committed = held;
-    let off = |v: DVec2| moved.distance(v * dt) / moved.length().max(1e-300);
-    if off(v0).min(off(v1)) > 1e-9 {
+    let off = |v: DVec2| moved.distance(v * dt);
+    if off(v0).min(off(v1)) > rounding + 1e-9 * moved.length() {
         return Some((
             None,
             format!(
-                "x moved by {}, neither v dt before nor after: this integrator takes the forces \
-                 at several points of the step; the question is the seed's (I until seed)",
-                v(moved)
+                "x moved by {}, neither v dt before ({}) nor after ({}): the integrator now \
+                 stepping is not the tutorial's loop (I until seed)",
+                v(moved),
+                v(v0 * dt),
+                v(v1 * dt)
             ),
         ));
     }
     let outcome = usize::from(off(v1) < off(v0));
     let which = ["before", "after"][outcome];
+    let p = look.params;
     Some((
         Some(outcome),
         format!(
-            "x moved by {} = {} × dt: the v {which} the step (before it was {}, after {})",
+            "x moved by {} = {} · dt: the v {which} the step (before it was {}, after {}). \
+             This order follows the band only while ω dt < 2, ω = √(k (1/m + |r|²/I)) its \
+             fastest mode (2 √(k/m) at a corner; more once the box shrinks under a held band), \
+             here {}, and while b dt / m < 2, here {}: past either, its step gains energy the \
+             physics does not have",
             v(moved),
             v(moved / dt),
             v(v0),
-            v(v1)
+            v(v1),
+            n(band_mode(look) * dt),
+            n(p.linear_damping * dt / look.mass.mass())
         ),
     ))
+}
+
+/// Returns the band's fastest mode ω = √(k (1/m + |r|²/I)) (rad/s), r its point's arm.
+///
+/// Without a band, r is a corner's.
+fn band_mode(look: &Look) -> f64 {
+    let corner = BandEnds {
+        local_point: look.mass.size() / 2.0,
+        anchor: DVec2::ZERO,
+    };
+    let band = look.any_band.unwrap_or(corner);
+    look.params.force_model(*look.mass, Some(band)).band_rate()
 }

@@ -16,6 +16,12 @@ pub struct Learning {
     pub chapter: usize,
     /// Each chapter's prediction found right by its experiment.
     pub done: [bool; CHAPTERS.len()],
+    /// Each chapter's answer chosen now: kept across the chapters and their restarts.
+    pub(super) chosen: [Option<usize>; CHAPTERS.len()],
+    /// Each chapter's first answer judged, and whether it was right.
+    pub(super) first: [Option<(usize, bool)>; CHAPTERS.len()],
+    /// How many answers each chapter's experiments have judged.
+    pub(super) tries: [u32; CHAPTERS.len()],
     /// The point masses across the box (the moment of inertia's sum is over n × n).
     pub point_masses: u32,
     pub(super) progress: Progress,
@@ -28,6 +34,9 @@ impl Default for Learning {
         Self {
             chapter: 0,
             done: [false; CHAPTERS.len()],
+            chosen: [None; CHAPTERS.len()],
+            first: [None; CHAPTERS.len()],
+            tries: [0; CHAPTERS.len()],
             point_masses: 4,
             progress: Progress::default(),
             kept: None,
@@ -42,6 +51,11 @@ impl Learning {
     /// Returns the answer chosen for this chapter's prediction.
     pub fn predicted(&self) -> Option<usize> {
         self.progress.predicted
+    }
+
+    /// Returns the first answer the chapter's experiments judged, and whether it was right.
+    pub fn first_answer(&self) -> Option<(usize, bool)> {
+        self.first.get(self.chapter).copied().flatten()
     }
 
     /// Returns what the chapter's experiment found last, against the answer held then.

@@ -32,11 +32,13 @@ use crate::game::replays::links::{ShareLink, publish};
 use crate::game::replays::playback::StopPlayback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::LoadScene;
-use crate::game::schedule::{AfterStepsSystems, PhysicsSystems, ScreenSystems};
+use crate::game::schedule::{AfterStepsSystems, GameSystems, PhysicsSystems, ScreenSystems};
 use crate::game::setup::{CurrentSetup, Setup};
 pub use crate::game::shared::Learn;
-use crate::game::shared::{Apply, DockHidden, Mode, Overlay, Say, has_screen};
-use crate::game::simulation::{Band, Bodies, EnergyBooks, ResetScene, StepCount, acting_band};
+use crate::game::shared::{Apply, DockHidden, Mode, Overlay, Say, SceneName, has_screen};
+use crate::game::simulation::{
+    Band, Bodies, Clock, EnergyBooks, ResetScene, StepCount, acting_band,
+};
 use crate::game::theme::{self, colour, size, space};
 use crate::physics::{AutoSettings, Integrator, SceneParams};
 use crate::replay::link::Link;
@@ -57,10 +59,18 @@ impl Plugin for LearnPlugin {
         .add_observer(learn)
         .add_observer(share_the_chapter)
         .add_observer(twin::restart_on_reset)
+        .add_observer(start_over_on_reset)
         .add_systems(Startup, spawn_card)
         .add_systems(OnEnter(Mode::Learn), show_the_chapter)
         .add_systems(OnExit(Mode::Learn), stop_the_chapter)
         .add_systems(FixedUpdate, keep_the_twin.in_set(PhysicsSystems::Observe))
+        .add_systems(
+            Update,
+            hold_until_answered
+                .run_if(in_state(Mode::Learn))
+                .after(GameSystems::ModeChange)
+                .before(GameSystems::ApplySettings),
+        )
         .add_systems(
             RunFixedMainLoop,
             check_task
@@ -165,8 +175,12 @@ fn learn(learn: On<Learn>, mut teaching: Teaching, mut commands: Commands) {
         (Learn::Predict(choice), Some(index))
             if choice < CHAPTERS[index].prediction.choices.len() =>
         {
+            learning.chosen[index] = Some(choice);
             learning.progress.predicted = Some(choice);
             learning.progress.verdict = None;
+        }
+        (Learn::Restart, Some(index)) => {
+            go_to(&mut commands, &teaching.setup.get(), learning, index);
         }
         (Learn::PointMasses(by), Some(_)) => {
             let n = learning.point_masses.saturating_add_signed(by);
@@ -239,6 +253,11 @@ fn go_to(commands: &mut Commands, now: &Setup, learning: &mut Learning, index: u
     if chapter.ghosts {
         next.overlays.set(Overlay::Ghosts, true);
     }
+    // Paused at its start: nothing moves before the question has an answer.
+    next.clock = Clock {
+        speed: chapter.pace,
+        paused: true,
+    };
     // The chapter is in the dock: it shows.
     next.dock_hidden = DockHidden(false);
     next.cards.set(Card::LEARN, true);
@@ -250,7 +269,47 @@ fn go_to(commands: &mut Commands, now: &Setup, learning: &mut Learning, index: u
     next.send_changed(now, commands);
     commands.trigger(LoadScene(chapter.scene));
     learning.chapter = index;
-    learning.progress = Progress::default();
+    learning.progress = Progress {
+        predicted: learning.chosen[index],
+        ..default()
+    };
+}
+
+/// Starts the chapter's experiment over when the scene starts over, keeping the answer.
+///
+/// A restart, `R` and a scene loaded all start it over.
+fn start_over_on_reset(_reset: On<ResetScene>, mut learning: ResMut<Learning>) {
+    let predicted = learning.progress.predicted;
+    learning.progress = Progress {
+        predicted,
+        ..default()
+    };
+}
+
+/// Holds the clock paused while the chapter's question has no answer.
+///
+/// So nothing, a scene's scripted pull least of all, shows the answer before it is given.
+/// It runs after the controls: a resume asked before an answer is taken back within its frame,
+/// before any step.
+fn hold_until_answered(
+    learning: Res<Learning>,
+    time: Res<Time<Virtual>>,
+    shown: Res<SceneName>,
+    mut commands: Commands,
+) {
+    let waiting = learning.progress.predicted.is_none()
+        && CHAPTERS
+            .get(learning.chapter)
+            .is_some_and(|chapter| chapter.scene == shown.0);
+    if waiting && !time.is_paused() {
+        commands.trigger(Apply(Clock {
+            speed: time.relative_speed_f64(),
+            paused: true,
+        }));
+        commands.trigger(Say(
+            "choose an answer first: the chapter runs once you have".to_owned(),
+        ));
+    }
 }
 
 /// Stops the chapter as learn mode is left, and sends back the setup kept as it was entered.
@@ -275,24 +334,35 @@ fn stop_the_chapter(
     }
 }
 
+/// The clocks an experiment reads: the steps taken, the game's clock and the fixed clock.
+#[derive(SystemParam)]
+struct Clocks<'w> {
+    steps: Res<'w, StepCount>,
+    time: Res<'w, Time<Virtual>>,
+    fixed: Res<'w, Time<Fixed>>,
+}
+
 /// Checks the chapter's experiment, after the frame's steps, against what the steps did.
 ///
 /// When it concludes, the answer held at its start is judged by what happened.
-#[allow(clippy::too_many_arguments)]
 fn check_task(
     mut learning: ResMut<Learning>,
     params: Res<SceneParams>,
     grip: Res<Grip>,
-    steps: Res<StepCount>,
-    time: Res<Time<Virtual>>,
-    fixed: Res<Time<Fixed>>,
+    clocks: Clocks,
     boxes: Bodies,
     bands: Query<&Band>,
+    shown: Res<SceneName>,
 ) {
+    let Clocks { steps, time, fixed } = clocks;
     let index = learning.chapter;
     let Ok(body) = boxes.single() else {
         return;
     };
+    // Another scene is no experiment of the chapter's (the card says so).
+    if CHAPTERS[index].scene != shown.0 {
+        return;
+    }
     let any_band = acting_band(body.entity, &bands);
     let progress = &mut learning.progress;
     let stepped = steps.0.saturating_sub(progress.steps_seen);
@@ -308,10 +378,13 @@ fn check_task(
         any_band,
         clock: fixed.elapsed_secs_f64(),
         stepped_seconds: stepped as f64 * fixed.timestep().as_secs_f64(),
-        paused: time.is_paused(),
         single_step,
     };
-    let found = experiments::observe(CHAPTERS[index].task, progress, &look);
+    // Before an answer, nothing is an experiment: one begins once the answer is given.
+    let found = match progress.predicted {
+        Some(_) => experiments::observe(CHAPTERS[index].task, progress, &look),
+        None => None,
+    };
     progress.last_state = Some(look.state);
     if let Some((outcome, why)) = found {
         let verdict = Verdict {
@@ -321,7 +394,11 @@ fn check_task(
         };
         progress.judged = true;
         let right = verdict.right();
-        progress.verdict = Some(verdict);
+        if let (Some(answer), Some(_)) = (verdict.answer, verdict.outcome) {
+            learning.tries[index] += 1;
+            learning.first[index].get_or_insert((answer, right));
+        }
+        learning.progress.verdict = Some(verdict);
         if right {
             learning.done[index] = true;
         }
@@ -436,9 +513,12 @@ fn spawn_card(mut commands: Commands, slots: Slots) {
 }
 
 /// Writes the chapter's texts from the game's state this frame, each with its colour.
+///
+/// `scene` is the scene shown: another than the chapter's is said, and nothing judged on it.
 fn chapter_texts(
     learning: &Learning,
     quantities: Option<&Quantities>,
+    scene: &str,
 ) -> Option<Vec<(LearnText, String, Color)>> {
     let index = learning.chapter;
     let chapter = CHAPTERS.get(index)?;
@@ -453,15 +533,19 @@ fn chapter_texts(
         (LearnText::Title, title, colour::TEXT),
         (LearnText::Body, chapter.text.to_owned(), colour::DIM),
     ];
+    let prediction = &chapter.prediction;
+    let answered = learning.progress.predicted.is_some();
     let lines: Vec<(String, Color)> = quantities.map_or_else(Vec::new, |q| {
         chapter
             .equations
             .iter()
             .flat_map(|&equation| {
                 let colour = equation_colour(equation);
-                equations::lines(equation, q)
-                    .into_iter()
-                    .map(move |line| (line, colour))
+                let mut lines = equations::lines(equation, q);
+                if !answered {
+                    equations::hide_the_answer(equation, &mut lines);
+                }
+                lines.into_iter().map(move |line| (line, colour))
             })
             .collect()
     });
@@ -469,60 +553,72 @@ fn chapter_texts(
         let (text, colour) = lines.get(line).cloned().unwrap_or_default();
         texts.push((LearnText::Line(line), text, colour));
     }
-    let prediction = &chapter.prediction;
     let done = if learning.done[index] {
         "● done. "
     } else {
         ""
     };
-    let task = match learning
-        .progress
-        .predicted
-        .and_then(|i| prediction.choices.get(i))
-    {
+    let said = |choice: Option<usize>| {
+        choice
+            .and_then(|i| prediction.choices.get(i))
+            .copied()
+            .unwrap_or("nothing")
+    };
+    let task = match learning.progress.predicted {
         Some(answer) => format!(
-            "{done}▸ {} You say: {answer}; {}",
-            prediction.question, prediction.then
+            "{done}▸ {} You say: {}; {}",
+            prediction.question,
+            said(Some(answer)),
+            prediction.then
         ),
         None => format!(
-            "{done}▸ Predict: {} Choose an answer below, {}",
-            prediction.question, prediction.then
+            "{done}▸ Predict: {} Choose an answer below; nothing moves until you do.",
+            prediction.question
         ),
     };
     let task = (task, colour::TEXT);
-    let verdict = match learning.verdict() {
-        None => (String::new(), colour::DIM),
-        Some(verdict) => {
-            let said = |choice: Option<usize>| {
-                choice
-                    .and_then(|i| prediction.choices.get(i))
-                    .copied()
-                    .unwrap_or("nothing")
-            };
-            match (verdict.answer, verdict.outcome) {
+    let retry = match (learning.first_answer(), learning.tries[index]) {
+        (Some((first, right)), tries) if tries > 1 => format!(
+            " (a retry: your first answer, {}, was {})",
+            said(Some(first)),
+            if right { "right" } else { "wrong" }
+        ),
+        _ => String::new(),
+    };
+    let verdict = if chapter.scene != scene {
+        (
+            format!(
+                "This is the {scene} scene, not the chapter's ({}): ↺ restart brings it back.",
+                chapter.scene
+            ),
+            colour::DIM,
+        )
+    } else {
+        match learning.verdict() {
+            None => (String::new(), colour::DIM),
+            Some(verdict) => match (verdict.answer, verdict.outcome) {
                 (_, None) => (format!("… {}", verdict.why), colour::DIM),
-                (None, Some(outcome)) => (
-                    format!(
-                        "It was: {}; {}. No answer was chosen before it began: choose one, then again.",
-                        said(Some(outcome)),
-                        verdict.why
-                    ),
+                // Nothing of the result is shown before an answer.
+                (None, Some(_)) => (
+                    "That experiment began before you answered: choose an answer, then \
+                     ↺ restart and watch again."
+                        .to_owned(),
                     colour::DIM,
                 ),
                 (Some(_), Some(_)) if verdict.right() => (
-                    format!("● Right: {}. {}", said(verdict.outcome), verdict.why),
+                    format!("● Right{retry}: {}. {}", said(verdict.outcome), verdict.why),
                     colour::VELOCITY,
                 ),
                 (answer, outcome) => (
                     format!(
-                        "✕ You said {}; it was {}: {}. Choose again and try once more.",
+                        "✕ You said {}; it was {}{retry}: {}. A retry is welcome: ↺ restart.",
                         said(answer),
                         said(outcome),
                         verdict.why
                     ),
                     colour::FORCE,
                 ),
-            }
+            },
         }
     };
     texts.push((LearnText::Task, task.0, task.1));
@@ -542,7 +638,9 @@ type ChoiceButtonsQuery<'w, 's> = Query<
     Or<(With<ChoiceButton>, With<PointMassButton>)>,
 >;
 
-/// What the card's numbers are read from: the settings, the books, the twin and the ghosts.
+/// What the card's numbers are read from.
+///
+/// The settings, the books, the twin, the ghosts and the scene shown.
 #[derive(SystemParam)]
 struct CardSources<'w> {
     params: Res<'w, SceneParams>,
@@ -551,6 +649,7 @@ struct CardSources<'w> {
     books: Res<'w, EnergyBooks>,
     twin: Res<'w, CentreTwin>,
     ghosts: Res<'w, Ghosts>,
+    scene: Res<'w, SceneName>,
 }
 
 /// Writes the card from this frame's components.
@@ -570,6 +669,7 @@ fn show_chapter(
         books,
         twin,
         ghosts,
+        scene,
     } = sources;
     let Some(chapter) = CHAPTERS.get(learning.chapter) else {
         return;
@@ -591,7 +691,7 @@ fn show_chapter(
             q
         }
     });
-    let Some(shown) = chapter_texts(&learning, quantities.as_ref()) else {
+    let Some(shown) = chapter_texts(&learning, quantities.as_ref(), &scene.0) else {
         return;
     };
     for (which, mut text, mut colour) in &mut texts {

@@ -1,44 +1,92 @@
 //! The named scenes in the game: the core's table ([`Scene::NAMES`]), loaded by number
 //! keys (and the panel) as a replay of their scripted pull (`replay::script`), which the
-//! playback plays until the player presses. The player's step rate and integrator stay.
+//! playback plays until the player presses. The player's step rate and integrator stay; a
+//! scene restarted (`R`) keeps every setting the player has, the sliders' too.
 
 use bevy::prelude::*;
 
 use crate::game::replays::playback::PlayScene;
-use crate::game::shared::Say;
+use crate::game::shared::{Say, SceneName};
+use crate::game::simulation::ResetScene;
 use crate::physics::{AutoSettings, Integrator, Scene, SceneParams};
 use crate::replay::script::scene_replay;
 
 /// Loads the scene asked.
 pub(super) fn plugin(app: &mut App) {
-    app.add_observer(load);
+    app.init_resource::<Loaded>()
+        .add_observer(load)
+        .add_observer(restart);
 }
+
+/// The scene last loaded with its scripted pull (none in a fresh game).
+///
+/// `R` plays it again while it is the scene shown; a fresh game, or a replay opened, is put
+/// back at rest instead.
+#[derive(Resource, Debug, Default)]
+struct Loaded(Option<&'static str>);
+
+/// Play the scene shown from its start, its scripted pull with it, the settings as they are.
+#[derive(Event, Debug, Clone, Copy, Default)]
+pub struct RestartScene;
 
 /// Load the named scene (one of [`Scene::NAMES`]).
 #[derive(Event, Debug, Clone, Copy)]
 pub struct LoadScene(pub &'static str);
 
+/// The player's settings and step, which a scene is played with.
+#[derive(bevy::ecs::system::SystemParam)]
+struct Playing<'w> {
+    params: Res<'w, SceneParams>,
+    time: Res<'w, Time<Fixed>>,
+    integrator: Res<'w, Integrator>,
+    auto: Res<'w, AutoSettings>,
+}
+
+impl Playing<'_> {
+    /// Plays `scene` from its start, with `params` for its own.
+    fn play(&self, commands: &mut Commands, mut scene: Scene, params: SceneParams) {
+        let name = scene.name;
+        scene.params = params;
+        let dt = self.time.timestep().as_secs_f64();
+        match scene_replay(&scene, dt, *self.integrator, *self.auto) {
+            Ok(replay) => commands.trigger(PlayScene(replay)),
+            Err(error) => commands.trigger(Say(format!("cannot load {name}: {error}"))),
+        }
+    }
+}
+
 /// Loads a scene: its parameters at the player's step rate, its start, and its script playing.
 ///
 /// The integrator, `auto`'s settings and the step rate are the player's, as sent before it.
-fn load(
-    load: On<LoadScene>,
+fn load(load: On<LoadScene>, mut commands: Commands, playing: Playing, mut loaded: ResMut<Loaded>) {
+    match Scene::named(load.0) {
+        Ok(scene) => {
+            loaded.0 = Some(scene.name);
+            let params = SceneParams {
+                step_rate_hz: playing.params.step_rate_hz,
+                ..scene.params
+            };
+            playing.play(&mut commands, scene, params);
+        }
+        Err(unknown) => commands.trigger(Say(format!("cannot load {}: {unknown}", load.0))),
+    }
+}
+
+/// Restarts the scene loaded with the settings in force, while it is the one shown.
+///
+/// A fresh game, or a replay opened since, has its box put back at rest at the centre.
+fn restart(
+    _restart: On<RestartScene>,
     mut commands: Commands,
-    params: Res<SceneParams>,
-    time: Res<Time<Fixed>>,
-    integrator: Res<Integrator>,
-    auto: Res<AutoSettings>,
+    shown: Res<SceneName>,
+    loaded: Res<Loaded>,
+    playing: Playing,
 ) {
-    let name = load.0;
-    let loaded = Scene::named(name)
-        .map_err(|unknown| unknown.to_string())
-        .and_then(|mut scene| {
-            scene.params.step_rate_hz = params.step_rate_hz;
-            let dt = time.timestep().as_secs_f64();
-            scene_replay(&scene, dt, *integrator, *auto).map_err(|error| error.to_string())
-        });
-    match loaded {
-        Ok(replay) => commands.trigger(PlayScene(replay)),
-        Err(error) => commands.trigger(Say(format!("cannot load {name}: {error}"))),
+    match loaded.0.filter(|&name| name == shown.0).map(Scene::named) {
+        Some(Ok(scene)) => {
+            let params = *playing.params;
+            playing.play(&mut commands, scene, params);
+        }
+        _ => commands.trigger(ResetScene),
     }
 }

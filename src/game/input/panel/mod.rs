@@ -132,6 +132,7 @@ fn spawn_chapter_buttons(
     for row in &rows {
         for (label, action) in [
             ("◂ back", Action::PreviousChapter),
+            ("↺ restart", Action::RestartChapter),
             ("next ▸", Action::NextChapter),
             ("leave", Action::Learn),
         ] {
