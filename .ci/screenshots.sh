@@ -4,7 +4,7 @@
 #   resized to a phone held upright (390 x 844): the tutorial's scripted pull with the ghosts
 #   and the plot on (keys 1 and P);
 # - in the browser, the pictures the browser test takes (headless Chromium, software WebGL2),
-#   at a desktop's and a phone's viewport, and learn mode's seven chapters at the desktop's.
+#   at a desktop's and a phone's viewport, and learn mode's eight chapters at the desktop's.
 # Needs Debian's xvfb, mesa-vulkan-drivers, xdotool and imagemagick (installed if missing) and
 # what .ci/web/run.sh needs. Run: bash .ci/screenshots.sh
 set -euo pipefail

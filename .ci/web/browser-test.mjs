@@ -545,10 +545,10 @@ const boxAlwaysInView = async (p, snap, samples = 12, least = 0.6) => {
 };
 
 // Learn mode (docs/learn.md): the Controls card's "learn" opens the Learn card; every chapter,
-// reached by its "next ▸", shows its title ("3 of 7 ...") and an equation of its own with
+// reached by its "next ▸", shows its title ("3 of 8 ...") and an equation of its own with
 // numbers in it, with every corner of the box in the viewport; "leave" ends the mode. An
 // equation of each chapter, as the card writes it (a line a text):
-const FIRST_EQUATIONS = ["ΣF = F_band + F_damp = (", "θ = ", "τ = r × F = r_x·F_y − r_y·F_x = ", "I = m (w² + h²) / 12 = ", "τ = r × F = r_x·F_y − r_y·F_x = ", "F_damp = −b v = −", "1  ω ← e^(−c dt) ω = "];
+const FIRST_EQUATIONS = ["ΣF = F_band + F_damp = (", "θ = ", "τ = r × F = r_x·F_y − r_y·F_x = ", "I = m (w² + h²) / 12 = ", "τ = r × F = r_x·F_y − r_y·F_x = ", "F_damp = −b v = −", "1  ω ← e^(−c dt) ω = ", "box: ½mv² + ½Iω² = "];
 // The page's focused control (`rubberBandBox.focus`), and its controls' names and values.
 const focusOf = (p) => p.evaluate(() => window.rubberBandBox?.focus ?? null);
 const controlValue = (p, name) => p.evaluate((name) =>
@@ -1323,7 +1323,7 @@ try {
   lap("a link shared and opened");
   // A teacher's link to a chapter (docs/learn.md): `?learn=4` opens learn mode at chapter 4.
   const taughtPage = await openLink(desk, `${url}?v=1&learn=4`);
-  const opened = await until(taughtPage, () => (window.rubberBandBox?.texts ?? []).some((t) => t.text.startsWith("4 of 7")), null, 120000);
+  const opened = await until(taughtPage, () => (window.rubberBandBox?.texts ?? []).some((t) => t.text.startsWith("4 of 8")), null, 120000);
   const fourth = await api(taughtPage);
   await taughtPage.screenshot({ path: path.join(screens, "link-to-chapter-4.png") });
   await taughtPage.close();

@@ -121,7 +121,7 @@ impl Scene {
                 vec![(0.0, 2.0, TUTORIAL_PULL_TARGET)],
             ),
             "diagonal" => (
-                "pulled along the diagonal through the centre: no torque, a 1D damped oscillator",
+                "pulled along the diagonal, through the centre",
                 tutorial,
                 at_rest,
                 vec![(0.0, held, DVec2::new(150.0, 150.0))],
@@ -158,7 +158,7 @@ impl Scene {
                 vec![(0.0, held, DVec2::new(1e6, 0.0))],
             ),
             "undamped" => (
-                "no damping (b = c = 0), band held: energy and angular momentum are invariants",
+                "no damping (b = c = 0), band held: E, and the angular momentum about the anchor, are invariants",
                 SceneParams {
                     linear_damping: 0.0,
                     angular_damping: 0.0,

@@ -155,13 +155,13 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
             if band.is_some() {
                 let drag = -params.linear_damping * vel;
                 wanted.push(format!(
-                    "twin: ΣF = F_band + F_damp = {} + {}, a = ΣF / m = {}",
+                    "outline: the box's ΣF = {} + {} as if at its centre, a = ΣF / m = {}",
                     v(force),
                     v(drag),
                     v((force + drag) / m)
                 ));
                 wanted.push(format!(
-                    "twin: r = 0, τ = 0 × F = 0, θ = {} rad",
+                    "outline: r = 0, no torque about its centre, θ = {} rad",
                     n(twin.orientation)
                 ));
             }
@@ -178,18 +178,19 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
                     sum += m / (cells * cells) * (rx * rx + ry * ry);
                 }
             }
-            wanted.push(format!("over {count} × {count} masses"));
-            wanted.push(format!("= {} (", n(sum)));
+            wanted.push(format!("over {count} by {count} masses"));
+            // Their centre of mass, x + Σ mₖ R(θ) rₖ / m: the box's centre.
+            wanted.push(format!("Σ mₖ xₖ / m = {} = x", v(x)));
+            wanted.push(format!("= {} mu·px² (", n(sum)));
             wanted.push(format!("= {}", n(inertia)));
             wanted.push(format!(
-                "L = I ω = {} × {} = {}",
+                "L = I ω about the centre = {}·{} = {} mu·px²/s",
                 n(inertia),
                 f(omega),
                 n(inertia * omega)
             ));
             wanted.push(torque_parts);
-            wanted.push(n(torques / inertia));
-            wanted.push(format!("= {} rad/s²", n(torque / inertia)));
+            wanted.push(format!("= {} rad/s²", n(torques / inertia)));
         }
         Task::HeldCorner => {
             if let (Some(p), Some(q)) = (corner, anchor) {
@@ -225,6 +226,17 @@ fn expected(game: &mut Game, index: usize) -> Vec<String> {
                 n(e.linear + e.rotational + e.band - books),
                 integrator.name()
             ));
+        }
+        Task::MoreEnergy => {
+            let moving = 0.5 * m * vel.length_squared();
+            let turning = 0.5 * inertia * omega * omega;
+            wanted.push(format!(
+                "box: ½mv² + ½Iω² = {} + {} = {} mu·px²/s²",
+                n(moving),
+                n(turning),
+                n(moving + turning)
+            ));
+            wanted.push(format!("outline: ½mv² = {} mu·px²/s²", n(moving)));
         }
         Task::StepOrder => {
             // The tutorial's update (its appendix's RigidBody.update after AngularDamping),
@@ -293,7 +305,7 @@ fn every_chapters_values_are_the_components_recomputed() {
 }
 
 /// Each chapter's right answer to its prediction, under the action [`task_done`] takes.
-const RIGHT: [usize; 7] = [1, 1, 1, 2, 0, 0, 1];
+const RIGHT: [usize; 8] = [1, 1, 1, 2, 0, 0, 1, 0];
 
 /// Opens a chapter, chooses `answer` (if any), does the chapter's experiment (if `act`), and
 /// returns whether the prediction was judged right, and the verdict's text as the card shows it.
@@ -323,7 +335,10 @@ fn task_done(index: usize, answer: Option<usize>, act: bool) -> (bool, String) {
     if act {
         match CHAPTERS[index].task {
             // The scene's own pulls: along the diagonal; toward (200, 120); 2 s, then let go.
-            Task::TurnThroughTheCentre | Task::SignOfTorque | Task::ComeToRest => resume(&mut game),
+            Task::TurnThroughTheCentre
+            | Task::SignOfTorque
+            | Task::ComeToRest
+            | Task::MoreEnergy => resume(&mut game),
             Task::SpinWithoutDamping => {
                 game.world()
                     .write_message(Action::Set(Parameter::AngularDamping, 0.0));

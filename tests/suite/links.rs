@@ -496,7 +496,7 @@ fn a_link_opens_a_chapter_and_the_share_control_writes_the_chapters_link() {
     game.update(2);
     assert_eq!(chapter_shown(game.world()), None);
     assert!(
-        status(&mut game).contains("no chapter 9 (there are 7)"),
+        status(&mut game).contains("no chapter 9 (there are 8)"),
         "{}",
         status(&mut game)
     );

@@ -33,8 +33,6 @@ pub enum Equation {
     AngularMomentum,
     /// α = Στ / I.
     AngularAcceleration,
-    /// The band's part of α, τ_band / I.
-    BandShareOfAlpha,
     /// F = −k (p − q).
     Spring,
     /// The corner the band holds: the one nearest the pointer when pressed.
@@ -51,6 +49,8 @@ pub enum Equation {
     Update,
     /// The energy books of the seed's and explicit Euler's ghosts, stepped from the same start.
     UpdateOrder,
+    /// The kinetic energy of the box and of the centre outline: ½ m v² + ½ I ω² against ½ m v².
+    OutlineEnergy,
 }
 
 /// The experiment a chapter's prediction is checked against; learn mode runs it (`check_task`).
@@ -74,6 +74,10 @@ pub enum Task {
     ComeToRest,
     /// A single step while paused: did x move with the v before the step (0) or after it (1)?
     StepOrder,
+    /// The scene's pull: did the box gain more kinetic energy than the outline (0, 1, 2)?
+    ///
+    /// More (0), as much (1) or less (2), judged after half a second.
+    MoreEnergy,
 }
 
 /// What the learner commits to before the experiment: a question and its answers.
@@ -118,7 +122,7 @@ pub struct Chapter {
 /// The chapters, in the tutorial's order.
 ///
 /// Each starts paused at its scene's start; nothing moves until its question has an answer.
-pub const CHAPTERS: [Chapter; 7] = [
+pub const CHAPTERS: [Chapter; 8] = [
     Chapter {
         title: "Linear motion",
         sections: "§3.2, §4.2",
@@ -200,14 +204,13 @@ pub const CHAPTERS: [Chapter; 7] = [
         text: "The moment of inertia I is to turning what mass is to moving: \
                I\u{a0}=\u{a0}Σ\u{a0}mₖ\u{a0}|rₖ|² over the dots (n\u{a0}−, n\u{a0}+), \
                m\u{a0}(w²\u{a0}+\u{a0}h²)\u{a0}/\u{a0}12 for the box, in mu·px². About the \
-               centre, L\u{a0}=\u{a0}I\u{a0}ω changes at the rate Στ. No damping here, and the \
+               centre, L\u{a0}=\u{a0}I\u{a0}ω changes at the rate Στ. The scene starts undamped; the \
                band holds its point of the box when the mass or the size changes.",
         equations: &[
             Equation::PointMasses,
             Equation::Inertia,
             Equation::AngularMomentum,
             Equation::AngularAcceleration,
-            Equation::BandShareOfAlpha,
         ],
         frame: [-70.0, -100.0, 270.0, 190.0],
         centre_twin: false,
@@ -288,6 +291,27 @@ pub const CHAPTERS: [Chapter; 7] = [
             question: "one step (N): x moves by v dt with which v?",
             choices: &["the v before the step", "the v after it"],
             then: "then resume a moment (Space), pause (Space) and step (N)",
+        },
+    },
+    Chapter {
+        title: "Work: one force at a corner, the same at the centre",
+        sections: "§4.2, §4.3.4",
+        scene: "tutorial",
+        integrator: None,
+        text: "The outline below takes the box's band force as if at its centre, so both centres \
+               move alike. A force does work W\u{a0}=\u{a0}∫\u{a0}F\u{a0}·\u{a0}dp along the path \
+               of the point p it acts at; kinetic energy is \
+               ½\u{a0}m\u{a0}|v|²\u{a0}+\u{a0}½\u{a0}I\u{a0}ω², in mu·px²/s².",
+        equations: &[Equation::OutlineEnergy, Equation::Arm, Equation::CentrePull],
+        frame: [-70.0, -180.0, 270.0, 190.0],
+        centre_twin: true,
+        ghosts: false,
+        pace: 1.0,
+        task: Task::MoreEnergy,
+        prediction: Prediction {
+            question: "the same force on both: which will gain more kinetic energy?",
+            choices: &["the box", "both the same", "the outline"],
+            then: "then resume (Space) and watch the band's pull",
         },
     },
 ];

@@ -11,7 +11,7 @@ use crate::physics::forces::ForceModel;
 use crate::physics::integrators::seed::{SeedStages, tutorial_stages};
 use crate::physics::{
     AutoSettings, BandEnds, BodyState, EnergyLedger, Integrator, MassProperties, SceneParams,
-    Stepper,
+    Stepper, rotate,
 };
 
 /// A ghost's energy and its books' error (E minus what the books say), for the update loop.
@@ -159,6 +159,17 @@ impl Quantities {
             .sum()
     }
 
+    /// Returns where the point masses' centre of mass lies from the box's centre, in the world.
+    pub fn point_mass_centre(&self) -> DVec2 {
+        let n = self.point_masses.max(1);
+        let share = self.mass / f64::from(n * n);
+        let turned = |r: DVec2| rotate(r, self.state.angular.orientation);
+        point_mass_arms(self.size, n)
+            .map(|r| share * turned(r))
+            .sum::<DVec2>()
+            / self.mass
+    }
+
     /// Returns the arm r from the centre to the band's corner (zero without a band).
     fn arm(&self) -> DVec2 {
         self.band.map_or(DVec2::ZERO, |(corner, _)| {
@@ -262,7 +273,6 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
         Equation::Inertia => inertia(q),
         Equation::AngularMomentum => angular_momentum(q),
         Equation::AngularAcceleration => angular_acceleration(q),
-        Equation::BandShareOfAlpha => band_share_of_alpha(q),
         Equation::Spring => spring(q),
         Equation::NearestCorner => nearest_corner(q),
         Equation::LinearDamping => linear_damping(q),
@@ -271,6 +281,7 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
         Equation::Ledger => ledger(q),
         Equation::Update => update(q),
         Equation::UpdateOrder => update_order(q),
+        Equation::OutlineEnergy => outline_energy(q),
     }
 }
 
@@ -288,7 +299,7 @@ pub fn hide_the_answer(equation: Equation, lines: &mut Vec<String>) {
 fn force_sum(q: &Quantities) -> Vec<String> {
     let sum = q.force_sum();
     vec![format!(
-        "ΣF = F_band + F_damp = {} + {} = {}",
+        "ΣF = F_band + F_damp = {} + {} = {} mu·px/s²",
         v(q.band_force()),
         v(q.damping_force()),
         v(sum)
@@ -300,7 +311,7 @@ fn acceleration(q: &Quantities) -> Vec<String> {
     let m = n(q.mass);
     let sum = q.force_sum();
     vec![format!(
-        "a = ΣF / m = {} / {m} = {}",
+        "a = ΣF / m = {} / {m} = {} px/s²",
         v(sum),
         v(sum / q.mass)
     )]
@@ -310,7 +321,12 @@ fn acceleration(q: &Quantities) -> Vec<String> {
 fn motion(q: &Quantities) -> Vec<String> {
     let x = q.state.linear.position;
     let velocity = q.state.linear.velocity;
-    vec![format!("x = {}   v = dx/dt = {}", v(x), v(velocity))]
+    vec![format!(
+        "x = {} px   v = dx/dt = {} px/s   momentum m v = {} mu·px/s",
+        v(x),
+        v(velocity),
+        v(q.mass * velocity)
+    )]
 }
 
 /// Returns the lines of the angle and its rate.
@@ -328,7 +344,7 @@ fn orientation(q: &Quantities) -> Vec<String> {
 fn angular_decay(q: &Quantities) -> Vec<String> {
     let omega = q.state.angular.angular_velocity;
     vec![format!(
-        "damping's part of dω/dt = −c ω = −{} × {} = {} rad/s²",
+        "damping's part of dω/dt = −c ω = −{}·{} = {} rad/s²",
         n(q.angular_damping),
         f_(omega),
         n(-q.angular_damping * omega)
@@ -340,7 +356,7 @@ fn arm(q: &Quantities) -> Vec<String> {
     let x = q.state.linear.position;
     match q.band {
         Some((corner, _)) => vec![format!(
-            "r = p − x = {} − {} = {}",
+            "r = p − x = {} − {} = {} px",
             v(corner),
             v(x),
             v(q.arm())
@@ -353,7 +369,7 @@ fn arm(q: &Quantities) -> Vec<String> {
 fn torque(q: &Quantities) -> Vec<String> {
     let (r, f) = (q.arm(), q.band_force());
     vec![format!(
-        "τ = r × F = r_x·F_y − r_y·F_x = {}·{} − {}·{} = {}",
+        "τ = r × F = r_x·F_y − r_y·F_x = {}·{} − {}·{} = {} mu·px²/s²",
         n(r.x),
         f_(f.y),
         f_(r.y),
@@ -371,7 +387,7 @@ fn point_velocity(q: &Quantities) -> Vec<String> {
             let r = q.arm();
             let perp = DVec2::new(-r.y, r.x);
             vec![format!(
-                "v_p = v + ω r⊥ = {} + {} × {} = {}",
+                "v_p = v + ω r⊥ = {} + {}·{} = {} px/s",
                 v(velocity),
                 n(omega),
                 v(perp),
@@ -387,18 +403,20 @@ fn centre_pull(q: &Quantities) -> Vec<String> {
     match (q.twin, q.band) {
         (Some(twin), Some(_)) => vec![
             format!(
-                "twin: ΣF = F_band + F_damp = {} + {}, a = ΣF / m = {}",
+                "outline: the box's ΣF = {} + {} as if at its centre, a = ΣF / m = {}",
                 v(q.band_force()),
                 // Its velocity is the box's, so its damping is too.
                 v(q.damping_force()),
                 v((q.band_force() + q.damping_force()) / q.mass)
             ),
             format!(
-                "twin: r = 0, τ = 0 × F = 0, θ = {} rad",
+                "outline: r = 0, no torque about its centre, θ = {} rad",
                 n(twin.angular.orientation)
             ),
         ],
-        _ => vec!["twin (below): the box's band force at its centre, r = 0, τ = 0".to_owned()],
+        _ => vec![
+            "outline (below): the centre alone, as if F acted there: it never turns".to_owned(),
+        ],
     }
 }
 
@@ -406,19 +424,27 @@ fn centre_pull(q: &Quantities) -> Vec<String> {
 fn point_masses(q: &Quantities) -> Vec<String> {
     let count = q.point_masses.max(1);
     let sum = q.point_mass_inertia();
-    vec![format!(
-        "I ≈ Σ mₖ |rₖ|² over {count} × {count} masses of m / {} = {} ({}% of the box's)",
-        count * count,
-        n(sum),
-        n(100.0 * sum / q.inertia)
-    )]
+    let x = q.state.linear.position;
+    vec![
+        format!(
+            "I ≈ Σ mₖ |rₖ|² over {count} by {count} masses of m / {} = {} mu·px² ({}% of the \
+             box's)",
+            count * count,
+            n(sum),
+            n(100.0 * sum / q.inertia)
+        ),
+        format!(
+            "their centre of mass Σ mₖ xₖ / m = {} = x: forces move it as if all m sat there",
+            v(x + q.point_mass_centre())
+        ),
+    ]
 }
 
 /// Returns the lines of I of the box in closed form.
 fn inertia(q: &Quantities) -> Vec<String> {
     let m = n(q.mass);
     vec![format!(
-        "I = m (w² + h²) / 12 = {m} × ({}² + {}²) / 12 = {}",
+        "I = m (w² + h²) / 12 = {m}·({}² + {}²) / 12 = {} mu·px²",
         n(q.size.x),
         n(q.size.y),
         n(q.inertia)
@@ -431,7 +457,7 @@ fn angular_momentum(q: &Quantities) -> Vec<String> {
     let torque = q.torque_sum();
     let momentum = q.inertia * omega;
     let mut lines = vec![format!(
-        "L = I ω = {} × {} = {}",
+        "L = I ω about the centre = {}·{} = {} mu·px²/s",
         n(q.inertia),
         f_(omega),
         n(momentum)
@@ -439,7 +465,7 @@ fn angular_momentum(q: &Quantities) -> Vec<String> {
     if let Some((after, torque_after)) = q.next {
         let change = (q.inertia * after.angular.angular_velocity - momentum) / q.dt;
         lines.push(format!(
-            "over the next step ΔL / dt = {}; Στ goes {} → {}, mean {}",
+            "over the next step ΔL / dt = {}; Στ goes {} → {}, mean {} mu·px²/s²",
             n(change),
             n(torque),
             n(torque_after),
@@ -454,7 +480,7 @@ fn angular_acceleration(q: &Quantities) -> Vec<String> {
     let torque = q.torque_sum();
     vec![
         format!(
-            "Στ = τ_band + τ_damp = {} + {} = {}",
+            "Στ = τ_band + τ_damp = {} + {} = {} mu·px²/s²",
             n(q.band_torque()),
             f_(q.damping_torque()),
             n(torque)
@@ -468,21 +494,11 @@ fn angular_acceleration(q: &Quantities) -> Vec<String> {
     ]
 }
 
-/// Returns the lines of the band's share of α.
-fn band_share_of_alpha(q: &Quantities) -> Vec<String> {
-    vec![format!(
-        "τ_band / I = {} / {} = {} rad/s²",
-        f_(q.band_torque()),
-        n(q.inertia),
-        n(q.band_torque() / q.inertia)
-    )]
-}
-
 /// Returns the lines of the band's force F = −k (p − q).
 fn spring(q: &Quantities) -> Vec<String> {
     match q.band {
         Some((corner, anchor)) => vec![format!(
-            "F = −k (p − q) = −{} × ({} − {}) = {}",
+            "F = −k (p − q) = −{}·({} − {}) = {} mu·px/s²",
             n(q.stiffness),
             v(corner),
             v(anchor),
@@ -509,7 +525,7 @@ fn nearest_corner(q: &Quantities) -> Vec<String> {
 fn linear_damping(q: &Quantities) -> Vec<String> {
     let velocity = q.state.linear.velocity;
     vec![format!(
-        "F_damp = −b v = −{} × {} = {}",
+        "F_damp = −b v = −{}·{} = {} mu·px/s²",
         n(q.linear_damping),
         v(velocity),
         v(q.damping_force())
@@ -520,7 +536,7 @@ fn linear_damping(q: &Quantities) -> Vec<String> {
 fn angular_damping(q: &Quantities) -> Vec<String> {
     let omega = q.state.angular.angular_velocity;
     vec![format!(
-        "τ_damp = −c I ω = −{} × {} × {} = {}",
+        "τ_damp = −c I ω = −{}·{}·{} = {} mu·px²/s²",
         n(q.angular_damping),
         n(q.inertia),
         f_(omega),
@@ -532,7 +548,7 @@ fn angular_damping(q: &Quantities) -> Vec<String> {
 fn energy(q: &Quantities) -> Vec<String> {
     let (linear, turning, band) = q.energy();
     vec![format!(
-        "E = ½mv² + ½Iω² + ½k|p − q|² = {} + {} + {} = {}",
+        "E = ½mv² + ½Iω² + ½k|p − q|² = {} + {} + {} = {} mu·px²/s²",
         n(linear),
         n(turning),
         n(band),
@@ -568,7 +584,7 @@ fn update(q: &Quantities) -> Vec<String> {
     let after = s.after;
     vec![
         format!(
-            "1  ω ← e^(−c dt) ω = {} × {} = {}   (c = {} /s)",
+            "1  ω ← e^(−c dt) ω = {}·{} = {}   (c = {} /s)",
             n(s.damping_factor),
             f_(omega),
             n(s.damped_angular_velocity),
@@ -598,6 +614,25 @@ fn update(q: &Quantities) -> Vec<String> {
             n(q.dt)
         ),
     ]
+}
+
+/// Returns the lines of the box's kinetic energy and the centre outline's.
+fn outline_energy(q: &Quantities) -> Vec<String> {
+    let (linear, turning, _) = q.energy();
+    let mut lines = vec![format!(
+        "box: ½mv² + ½Iω² = {} + {} = {} mu·px²/s²",
+        n(linear),
+        n(turning),
+        n(linear + turning)
+    )];
+    if let Some(outline) = q.twin {
+        let moving = 0.5 * q.mass * outline.linear.velocity.length_squared();
+        lines.push(format!(
+            "outline: ½mv² = {} mu·px²/s², and no ½Iω²: it never turns",
+            n(moving)
+        ));
+    }
+    lines
 }
 
 /// Returns the lines of the seed's and explicit Euler's ghosts' energy and residual.

@@ -46,6 +46,8 @@ pub(super) struct Progress {
     /// The band's point on the box, in its own coordinates, and its torque as the pull began.
     pub(super) pull_point: DVec2,
     pub(super) pull_torque: f64,
+    /// When the pull under way began (the fixed clock, s).
+    pub(super) pull_clock: f64,
     /// The pull under way is, or was at some moment, the player's own.
     pub(super) players: bool,
     /// The farthest the band's line of action has passed from the centre in this pull (px).
@@ -97,6 +99,7 @@ pub(super) fn observe(task: Task, progress: &mut Progress, look: &Look) -> Found
         Task::HeldCorner => held_corner(progress, look),
         Task::ComeToRest => come_to_rest(progress, look),
         Task::StepOrder => step_order(progress, look),
+        Task::MoreEnergy => more_energy(progress, look),
     }
 }
 
@@ -143,6 +146,7 @@ fn follow_pull(progress: &mut Progress, look: &Look) -> Option<BandEnds> {
             angular.angular_velocity,
         ));
         progress.pull_point = band.local_point;
+        progress.pull_clock = look.clock;
         progress.pull_torque = band_torque(look, band);
         progress.players = false;
         progress.worst_miss = 0.0;
@@ -216,6 +220,49 @@ fn turn_through_the_centre(progress: &mut Progress, look: &Look) -> Found {
         )
     };
     Some((Some(outcome), why))
+}
+
+/// How long the outline's chapter watches the band pull (s).
+pub const ENERGY_WATCH: f64 = 0.5;
+
+fn more_energy(progress: &mut Progress, look: &Look) -> Found {
+    follow_pull(progress, look)?;
+    if progress.judged || look.clock - progress.pull_clock < ENERGY_WATCH {
+        return None;
+    }
+    let state = &look.state;
+    let boxed = kinetic_energy(state, look.mass);
+    // The outline moves with the box's centre and never turns.
+    let mut outline = *state;
+    outline.angular.angular_velocity = 0.0;
+    let centre = kinetic_energy(&outline, look.mass);
+    if progress.players {
+        let what = format!(
+            "the box has {} mu·px²/s², the outline {}",
+            n(boxed),
+            n(centre)
+        );
+        return Some((None, not_the_chapters_pull(&what)));
+    }
+    let outcome = if boxed > centre * (1.0 + 1e-9) {
+        0
+    } else if boxed >= centre * (1.0 - 1e-9) {
+        1
+    } else {
+        2
+    };
+    let turning = boxed - centre;
+    Some((
+        Some(outcome),
+        format!(
+            "both have ½ m v² = {}, and the box ½ I ω² = {} on top ({} in all, mu·px²/s²): \
+             the band's point on the box moved further along F than its centre did, so F did \
+             more work on the box",
+            n(centre),
+            n(turning),
+            n(boxed)
+        ),
+    ))
 }
 
 fn spin_without_damping(progress: &mut Progress, look: &Look) -> Found {

@@ -434,7 +434,6 @@ fn equation_colour(equation: Equation) -> Color {
         Equation::Arm => colour::ARM,
         Equation::Torque
         | Equation::AngularAcceleration
-        | Equation::BandShareOfAlpha
         | Equation::AngularMomentum
         | Equation::AngularDamping => colour::TORQUE,
         Equation::PointVelocity => colour::VELOCITY,
