@@ -26,9 +26,8 @@ run "the seed moves x with the old v" src/physics/integrators/seed.rs "    after
     after.linear.position += after.linear.velocity * dt;" "    after.linear.position += after.linear.velocity * dt;
     after.linear.velocity += acceleration * dt;"
 run "the band always takes the first corner" src/physics/body.rs "            if distance < best_distance {" "            if distance < best_distance && distance < 0.0 {"
-run "the twin turns with the box" src/game/learn/twin.rs "                angular_velocity: 0.0," "                angular_velocity: state.angular.angular_velocity,"
-run "the held corner's experiment says it moved" src/game/learn/experiments.rs "        Some(0),
-        format!(
-            \"the band held" "        Some(1),
-        format!(
-            \"the band held"
+run "the held corner's experiment says it moved" src/game/learn/experiments.rs "let outcome = usize::from(band.local_point != first);" "let outcome = usize::from(band.local_point == first);"
+run "the torque's components swapped" src/physics/forces.rs "torque: arm.perp_dot(force)," "torque: force.perp_dot(arm),"
+run "the rotation turned the wrong way" src/physics/body.rs "DVec2::new(cos * v.x - sin * v.y, sin * v.x + cos * v.y)" "DVec2::new(cos * v.x + sin * v.y, -sin * v.x + cos * v.y)"
+run "I of a square, whatever the box" src/physics/body.rs "let inertia = mass * (size.x * size.x + size.y * size.y) / 12.0;" "let inertia = mass * (2.0 * size.x * size.x) / 12.0;"
+run "the seed's damping without the division by m" src/physics/integrators/seed.rs "start.damping.force * mass.inverse_mass()" "start.damping.force"
