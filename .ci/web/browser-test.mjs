@@ -811,7 +811,8 @@ try {
         }
         return seen;
       };
-      await phone.goto(url);
+      // The dock shown by the link: a window under half for the scene would start without it.
+      await phone.goto(`${url}?dock=on`);
       await running(phone);
       // The scene fits the tutorial's 640 x 480 in the viewport: the box's side is 60 of those.
       let start = null, scale = 1, previous = null;
@@ -940,7 +941,7 @@ try {
   // context of the browser `on`.
   const teacherAndKeyboard = async (on, lap) => {
     const context = await on.newContext({ viewport: small });
-    const teacher = "?integrator=rk4&frobnicate=1&k=1e20&ghosts=on";
+    const teacher = "?integrator=rk4&frobnicate=1&k=1e20&ghosts=on&dock=on";
     const taught = await openLink(context, url + teacher);
     const said = await until(taught, () => (window.rubberBandBox?.texts ?? []).some((t) => t.text.includes("frobnicate")), null, 20000);
     const statusSaid = ((await api(taught)).texts ?? []).find((t) => t.text.includes("not taken"))?.text;
@@ -961,7 +962,8 @@ try {
 
   const lap = laps("browser 1");
   const started = Date.now();
-  await page.goto(url);
+  // The dock shown by the link, as at 480 x 360 it would start hidden (docs/screen.md).
+  await page.goto(`${url}?dock=on`);
   await running(page);
   let first = null;
   for (let i = 0; i < 600 && !first; i++) {
@@ -1314,7 +1316,8 @@ try {
       `the fixture in a link's fragment (${fragment.length} characters) plays back in the page to its recorded bits (${JSON.stringify(played)})`);
   });
   if (shared) {
-    const again = await openLink(desk, shared);
+    // At a desktop's size, where the dock shows as the link left it.
+    const again = await openLink(desk, shared, { width: 960, height: 720 });
     const back = await shareOf(again, byKey(again));
     await again.screenshot({ path: path.join(screens, "link-opened.png") });
     check(back === shared, `that link opened in a fresh page shows the same: its own C writes the same link (${back})`);

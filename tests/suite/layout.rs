@@ -288,3 +288,66 @@ fn a_dock_that_overflows_shows_its_scrollbar() {
     let ((track, painted), (_, shown)) = dock_scrollbar(&mut game);
     assert!(!painted && !shown, "a short card on a phone: {track:?}");
 }
+
+/// A small window starts with the dock hidden and says how to show it: where a card open would
+/// leave the scene less than half the window (320 x 240, 480 x 320, 240 x 480); a desktop and a
+/// phone held upright keep it. A window grown large shows it again; once the player (or a
+/// link) sets the dock, the window's size no longer does.
+#[test]
+fn a_small_window_starts_with_the_dock_hidden() {
+    use rubber_band_box::game::layout::small::scene_share_with_a_card_open;
+    // The rule: the scene kept at least half the window.
+    const LEAST_SCENE_SHARE: f32 = 0.5;
+    use rubber_band_box::game::shared::StatusMessage;
+    for (size, hidden) in [
+        (UVec2::new(320, 240), true),
+        (UVec2::new(480, 320), true),
+        (UVec2::new(240, 480), true),
+        (UVec2::new(960, 720), false),
+        (UVec2::new(1280, 800), false),
+        (UVec2::new(844, 390), false),
+    ] {
+        let share = scene_share_with_a_card_open(size.as_vec2());
+        println!("{size}: {share:.3}");
+        assert_eq!(share < LEAST_SCENE_SHARE, hidden, "{size}: {share}");
+        let mut game = Game::laid_out();
+        game.resize(size);
+        game.update(3);
+        assert_eq!(game.world().resource::<DockHidden>().0, hidden, "{size}");
+        if hidden {
+            // Measured, with a card open and the dock shown: less than half.
+            let said = game.world().resource::<StatusMessage>().0.clone();
+            assert!(
+                said.is_some_and(|said| said.contains("instruments")),
+                "{size}"
+            );
+            game.world()
+                .trigger(rubber_band_box::game::shared::Apply(DockHidden(false)));
+            let mut cards = Cards::default();
+            cards.set(Card::CONTROLS, true);
+            *game.world().resource_mut::<Cards>() = cards;
+            game.update(4);
+            let viewport = game.world().resource::<SceneViewport>().0.unwrap();
+            let measured = viewport.width() * viewport.height() / size.as_vec2().element_product();
+            assert!(measured < LEAST_SCENE_SHARE, "{size}: {measured}");
+            // The player's dock stays through a resize.
+            game.resize(UVec2::new(300, 200));
+            game.update(3);
+            assert!(!game.world().resource::<DockHidden>().0, "{size}");
+        }
+    }
+    for size in SIZES {
+        println!(
+            "{size}: {:.3}",
+            scene_share_with_a_card_open(size.as_vec2())
+        );
+    }
+    // Grown large, the dock the rule hid comes back.
+    let mut game = Game::laid_out();
+    game.resize(UVec2::new(320, 240));
+    game.update(3);
+    assert!(game.world().resource::<DockHidden>().0);
+    game.resize(UVec2::new(1280, 800));
+    game.update(3);
+    assert!(!game.world().resource::<DockHidden>().0);
+}

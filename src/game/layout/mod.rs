@@ -11,12 +11,14 @@
 //!
 //! The plugins that fill the regions find them by their `Slot`; this module spawns the
 //! frame in `PreStartup`, they spawn their content in `Startup`. The cards' registry and which
-//! are open are [`cards`], the window's shape [`shape`], the dock's scrolling [`scroll`], and
-//! what the window shows, for the checks and the page, [`visible`].
+//! are open are [`cards`], the window's shape [`shape`], the dock's scrolling [`scroll`], the
+//! dock hidden on a small window [`small`], and what the window shows, for the checks and the
+//! page, [`visible`].
 
 pub mod cards;
 pub mod scroll;
 pub mod shape;
+pub mod small;
 pub mod visible;
 
 use bevy::a11y::AccessibilityNode;
@@ -51,7 +53,8 @@ impl Plugin for LayoutPlugin {
             app.add_plugins(ScrollbarPlugin);
         }
         // The panel's sliders read it too (the UI plugin has it; the headless game does not).
-        app.init_resource::<UiScale>()
+        app.add_plugins(small::plugin)
+            .init_resource::<UiScale>()
             .init_resource::<CardRegistry>()
             .init_resource::<Cards>()
             .owns::<Cards>()

@@ -138,11 +138,12 @@ fn open_link(commands: &mut Commands, link: Link, now: &Setup) -> Vec<String> {
             shown.overlays.set(overlay, on);
         }
     }
-    if let Some(on) = link.overlays.dock {
-        shown.dock_hidden = DockHidden(!on);
-    }
-    // Only the time scale, the overlays and the dock differ from `now` here.
+    // Only the time scale and the overlays differ from `now` here.
     shown.send_changed(now, commands);
+    // Sent even as it is: a link that names the dock has set it (a small window's rule yields).
+    if let Some(on) = link.overlays.dock {
+        commands.trigger(Apply(DockHidden(!on)));
+    }
     problems
 }
 
