@@ -3,6 +3,8 @@
 # (docs/measurements.md). The screen is read about every 20 ms at a point of the box, at rest
 # at the centre of the 960 x 720 window, until it turns the box's blue; the window's first
 # frame is when that point turns from Xvfb's black.
+# With WINDOW_ONLY=1 it stops at the window's first frame: for an app that draws no box, such
+# as the example `band` (`cargo build --example band`), the empty app it is set beside.
 # Usage: bash .ci/first-frame.sh BINARY [RUNS]
 set -euo pipefail
 binary=${1:?the game binary, e.g. target/release/rubber_band_box}
@@ -21,6 +23,7 @@ for run in $(seq 1 "$runs"); do
             # Xvfb starts black; the game clears to its dark background before the box shows.
             if [ -z "$window" ] && [ -n "$seen" ] && ! echo "$seen" | grep -q "#000000"; then
                 window=$(echo "$now - $start" | bc)
+                if [ -n "${WINDOW_ONLY:-}" ]; then printf "window %.2f s\n" "$window"; break; fi
             fi
             # The box: blue, its red under 80 and blue over 150.
             if echo "$seen" | grep -Eq "\((([0-7]?[0-9]),[0-9]+,(1[5-9][0-9]|2[0-5][0-9]))"; then

@@ -63,10 +63,10 @@ echo "assets/screenshot-web.png assets/screenshot-web-phone.png"
 # Learn mode's chapters, at the desktop's size (docs/learn.md), in 128 colours (a third the
 # bytes, no visible loss on the UI's flat colours).
 mkdir -p assets/learn
-for chapter in 1 2 3 4 5 6 7; do
+for chapter in 1 2 3 4 5 6 7 8; do
     convert "site/screens/desktop-learn-$chapter.png" -colors 128 "PNG8:assets/learn/chapter-$chapter.png"
 done
-echo "assets/learn/chapter-1.png ... chapter-7.png"
+echo "assets/learn/chapter-1.png ... chapter-8.png"
 # The band by keyboard alone (docs/accessibility.md): the browser test's keyboard pull.
 convert site/screens/keyboard-band.png -colors 128 PNG8:assets/keyboard-band.png
 echo "assets/keyboard-band.png"

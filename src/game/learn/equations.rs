@@ -361,7 +361,7 @@ fn arm(q: &Quantities) -> Vec<String> {
             v(x),
             v(q.arm())
         )],
-        None => vec!["r = p − x: no band (press on the scene)".to_owned()],
+        None => vec!["r = p − x: no band yet".to_owned()],
     }
 }
 
@@ -504,7 +504,7 @@ fn spring(q: &Quantities) -> Vec<String> {
             v(anchor),
             v(q.band_force())
         )],
-        None => vec!["F = −k (p − q): no band (press on the scene)".to_owned()],
+        None => vec!["F = −k (p − q): no band yet".to_owned()],
     }
 }
 

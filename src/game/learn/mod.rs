@@ -32,7 +32,7 @@ use crate::game::replays::links::{ShareLink, publish};
 use crate::game::replays::playback::StopPlayback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::LoadScene;
-use crate::game::schedule::{AfterStepsSystems, GameSystems, PhysicsSystems, ScreenSystems};
+use crate::game::schedule::{AfterStepsSystems, GameSystems, ScreenSystems};
 use crate::game::setup::{CurrentSetup, Setup};
 pub use crate::game::shared::Learn;
 use crate::game::shared::{Apply, DockHidden, Mode, Overlay, Say, SceneName, has_screen};
@@ -63,7 +63,13 @@ impl Plugin for LearnPlugin {
         .add_systems(Startup, spawn_card)
         .add_systems(OnEnter(Mode::Learn), show_the_chapter)
         .add_systems(OnExit(Mode::Learn), stop_the_chapter)
-        .add_systems(FixedUpdate, keep_the_twin.in_set(PhysicsSystems::Observe))
+        // Every frame, not every step: a chapter starts paused, its outline already beside it.
+        .add_systems(
+            Update,
+            keep_the_twin
+                .after(GameSystems::ModeChange)
+                .before(ScreenSystems::Write),
+        )
         .add_systems(
             Update,
             hold_until_answered
