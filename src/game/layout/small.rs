@@ -44,7 +44,7 @@ const LEAST_SCENE_SHARE: f32 = 0.5;
 /// Returns the scene's share of a window, by area, with a card open in the dock.
 ///
 /// On a wide window the dock takes its width at the side; on a tall one its sheet takes up to
-/// [`SHEET_SHARE`] of the height. The status line and the hint take a line each.
+/// `SHEET_SHARE` of the height. The status line and the hint take a line each.
 pub fn scene_share_with_a_card_open(window: Vec2) -> f32 {
     let scale = ui_scale_for(window);
     // A line of body text with its padding, above the scene and below it.
