@@ -1469,3 +1469,119 @@ fn claim_7_the_seed_blows_up_where_the_verdicts_limits_say() {
         "{stable} stable, {unstable} unstable"
     );
 }
+
+/// Each chapter's text on screen is short: at most about 60 words (the derivations are
+/// docs/learn.md's).
+#[test]
+fn every_chapters_text_is_at_most_about_sixty_words() {
+    for (index, chapter) in CHAPTERS.iter().enumerate() {
+        let words = chapter.text.split_whitespace().count();
+        assert!(words <= 65, "chapter {}: {words} words", index + 1);
+    }
+}
+
+/// The slider ends, one slider at a time, as the panel sets them.
+fn slider_ends() -> Vec<(Parameter, f64)> {
+    use rubber_band_box::physics::scene::{
+        ANGULAR_DAMPING_RANGE, LINEAR_DAMPING_RANGE, MASS_RANGE, SIZE_RANGE, STIFFNESS_RANGE,
+    };
+    [
+        (Parameter::Mass, MASS_RANGE),
+        (Parameter::Size, SIZE_RANGE),
+        (Parameter::LinearDamping, LINEAR_DAMPING_RANGE),
+        (Parameter::AngularDamping, ANGULAR_DAMPING_RANGE),
+        (Parameter::Stiffness, STIFFNESS_RANGE),
+    ]
+    .into_iter()
+    .flat_map(|(parameter, range)| [(parameter, range.low), (parameter, range.high)])
+    .collect()
+}
+
+/// Chapter 1's verdict at every slider's ends and with every integrator: where it says what
+/// happened, it says the box did not turn (the scene's pull passes through the centre to the
+/// bit), and a box that is not square is told its pull misses the centre.
+#[test]
+fn chapter_1s_verdict_holds_at_every_sliders_ends_with_every_integrator() {
+    for integrator in Integrator::ALL {
+        for (parameter, value) in slider_ends() {
+            let mut game = Game::stepping();
+            game.update(2);
+            chapter(&mut game, 0);
+            game.world().write_message(Action::Integrator(integrator));
+            game.world().write_message(Action::Set(parameter, value));
+            game.update(1);
+            game.world().trigger(Learn::Predict(RIGHT[0]));
+            game.world().write_message(Action::TogglePause);
+            game.update(200);
+            let learning = game.world().resource::<Learning>();
+            if let Some(verdict) = learning.verdict() {
+                assert_ne!(
+                    verdict.outcome,
+                    Some(0),
+                    "{integrator}, {parameter:?} = {value}: {verdict:?}"
+                );
+                if verdict.outcome == Some(1) {
+                    assert!(verdict.why.contains("θ changed by 0 rad"), "{verdict:?}");
+                }
+            }
+        }
+    }
+}
+
+/// Chapter 7's verdict with every integrator, at the chapter's settings and at every slider's
+/// ends: x moves with the v after the step for the tutorial's order (seed, symplectic) and for
+/// implicit Euler, with the v before it for explicit Euler, and by neither for the others,
+/// which the card names rather than judges; never the wrong one. Only the seed's verdict gives
+/// the seed's stability limits.
+#[test]
+fn chapter_7s_verdict_names_each_integrators_own_order() {
+    let order = |integrator: Integrator| match integrator {
+        // Backward Euler too: v from the forces at the step's end, then x with it.
+        Integrator::Seed | Integrator::Symplectic | Integrator::Implicit => Some(1),
+        Integrator::Euler => Some(0),
+        _ => None,
+    };
+    let mut ends: Vec<Option<(Parameter, f64)>> = vec![None];
+    ends.extend(slider_ends().into_iter().map(Some));
+    for integrator in Integrator::ALL {
+        for end in &ends {
+            let mut game = Game::stepping();
+            game.update(2);
+            chapter(&mut game, 6);
+            game.world().write_message(Action::Integrator(integrator));
+            if let Some((parameter, value)) = end {
+                game.world().write_message(Action::Set(*parameter, *value));
+            }
+            game.update(1);
+            game.world().trigger(Learn::Predict(1));
+            game.world().write_message(Action::TogglePause);
+            game.update(20);
+            game.world().write_message(Action::TogglePause);
+            game.update(2);
+            game.world().write_message(Action::Step);
+            game.update(2);
+            let learning = game.world().resource::<Learning>();
+            let Some(verdict) = learning.verdict() else {
+                continue;
+            };
+            // `auto` past its substeps' budget falls back to implicit Euler for the step.
+            let fallen_back = integrator == Integrator::Auto && verdict.outcome == Some(1);
+            if let Some(outcome) = verdict.outcome
+                && !fallen_back
+            {
+                assert_eq!(
+                    Some(outcome),
+                    order(integrator),
+                    "{integrator}, {end:?}: {verdict:?}"
+                );
+            }
+            if end.is_none() {
+                assert_eq!(
+                    verdict.outcome,
+                    order(integrator),
+                    "{integrator}: {verdict:?}"
+                );
+            }
+        }
+    }
+}

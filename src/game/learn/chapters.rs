@@ -202,10 +202,10 @@ pub const CHAPTERS: [Chapter; 8] = [
         scene: "undamped",
         integrator: None,
         text: "The moment of inertia I is to turning what mass is to moving: \
-               I\u{a0}=\u{a0}Σ\u{a0}mₖ\u{a0}|rₖ|² over the dots (n\u{a0}−, n\u{a0}+), \
+               I\u{a0}=\u{a0}Σ\u{a0}mₖ\u{a0}|rₖ|² over the dots (n\u{a0}±), \
                m\u{a0}(w²\u{a0}+\u{a0}h²)\u{a0}/\u{a0}12 for the box, in mu·px². About the \
-               centre, L\u{a0}=\u{a0}I\u{a0}ω changes at the rate Στ. The scene starts undamped; the \
-               band holds its point of the box when the mass or the size changes.",
+               centre, L\u{a0}=\u{a0}I\u{a0}ω changes at the rate Στ. Undamped at the start; the \
+               band keeps its point of the box through a new mass or size.",
         equations: &[
             Equation::PointMasses,
             Equation::Inertia,

@@ -7,7 +7,7 @@ use bevy::math::DVec2;
 use super::chapters::Task;
 use crate::game::theme::readable;
 use crate::physics::{BandEnds, BodyState, kinetic_energy};
-use crate::physics::{MassProperties, SceneParams};
+use crate::physics::{Integrator, MassProperties, SceneParams};
 
 /// How far ω must change from the press for a pull's turn to count (rad/s).
 pub const TURN: f64 = 1.0;
@@ -83,6 +83,7 @@ pub(super) struct Look<'a> {
     pub(super) clock: f64,
     /// The simulated time this frame's steps covered.
     pub(super) stepped_seconds: f64,
+    pub(super) integrator: Integrator,
     pub(super) single_step: bool,
 }
 
@@ -238,7 +239,7 @@ fn more_energy(progress: &mut Progress, look: &Look) -> Found {
     let centre = kinetic_energy(&outline, look.mass);
     if progress.players {
         let what = format!(
-            "the box has {} mu·px²/s², the outline {}",
+            "the box has {} mu·px²/s², the outline {} mu·px²/s²",
             n(boxed),
             n(centre)
         );
@@ -381,7 +382,7 @@ fn double_the_inertia(progress: &mut Progress, look: &Look) -> Found {
                 Some(outcome),
                 format!(
                     "over one step ω changed by {} rad/s with I = {} mu·px², by {} with I = {} \
-                     (× {}); the band's torque went {} → {}: α = τ / I",
+                     (× {}); the band's torque went {} → {} mu·px²/s²: α = τ / I",
                     n(change_then),
                     n(inertia_then),
                     n(change),
@@ -422,7 +423,7 @@ fn held_corner(progress: &mut Progress, look: &Look) -> Found {
     let outcome = usize::from(band.local_point != first);
     let why = if outcome == 0 {
         format!(
-            "the band held the corner {} of the box, though the corner {} is {} px nearer the \
+            "the band held the corner {} px of the box, though the corner {} px is {} px nearer the \
              pointer: the corner is chosen once, at the press",
             v(first),
             v(nearest),
@@ -430,7 +431,7 @@ fn held_corner(progress: &mut Progress, look: &Look) -> Found {
         )
     } else {
         format!(
-            "the band moved from the corner {} to {}",
+            "the band moved from the corner {} px to {} px",
             v(first),
             v(band.local_point)
         )
@@ -479,7 +480,7 @@ fn come_to_rest(progress: &mut Progress, look: &Look) -> Found {
         return Some((
             Some(1),
             format!(
-                "it still turns at ω = {} rad/s: with c = 0 nothing takes ½ I ω² = {} out",
+                "it still turns at ω = {} rad/s: with c = 0 nothing takes ½ I ω² = {} mu·px²/s² out",
                 n(omega),
                 n(spin)
             ),
@@ -489,7 +490,7 @@ fn come_to_rest(progress: &mut Progress, look: &Look) -> Found {
         return Some((
             Some(1),
             format!(
-                "it still drifts at v = {}: with b = 0 nothing takes ½ m v² = {} out",
+                "it still drifts at v = {} px/s: with b = 0 nothing takes ½ m v² = {} mu·px²/s² out",
                 v(velocity),
                 n(energy - spin)
             ),
@@ -501,8 +502,8 @@ fn come_to_rest(progress: &mut Progress, look: &Look) -> Found {
         return Some((
             Some(0),
             format!(
-                "its kinetic energy fell from {} to {}: b = {} takes it from v and c = {} \
-                 from ω",
+                "its kinetic energy fell from {} to {} mu·px²/s²: b = {} mu/s takes it from v \
+                 and c = {} /s from ω",
                 n(most),
                 n(energy),
                 n(p.linear_damping),
@@ -541,7 +542,7 @@ fn step_order(progress: &mut Progress, look: &Look) -> Found {
         return Some((
             None,
             format!(
-                "x moved by {}, neither v dt before ({}) nor after ({}): the integrator now \
+                "x moved by {} px, neither v dt before ({}) nor after ({}): the integrator now \
                  stepping is not the tutorial's loop (I until seed)",
                 v(moved),
                 v(v0 * dt),
@@ -552,22 +553,28 @@ fn step_order(progress: &mut Progress, look: &Look) -> Found {
     let outcome = usize::from(off(v1) < off(v0));
     let which = ["before", "after"][outcome];
     let p = look.params;
-    Some((
-        Some(outcome),
+    let moved_by = format!(
+        "x moved by {} px = {} px/s · dt: the v {which} the step (before it was {}, after {})",
+        v(moved),
+        v(moved / dt),
+        v(v0),
+        v(v1)
+    );
+    // The limits are the tutorial's loop's: other integrators have their own (the Stability
+    // card).
+    let why = if look.integrator == Integrator::Seed {
         format!(
-            "x moved by {} = {} · dt: the v {which} the step (before it was {}, after {}). \
-             This order follows the band only while ω dt < 2, ω = √(k (1/m + |r|²/I)) its \
-             fastest mode (2 √(k/m) at a corner; more once the box shrinks under a held band), \
-             here {}, and while b dt / m < 2, here {}: past either, its step gains energy the \
-             physics does not have",
-            v(moved),
-            v(moved / dt),
-            v(v0),
-            v(v1),
+            "{moved_by}. This order follows the band only while ω dt < 2, ω = √(k (1/m + \
+             |r|²/I)) its fastest mode (2 √(k/m) at a corner; more once the box shrinks under a \
+             held band), here {}, and while b dt / m < 2, here {}: past either, its step gains \
+             energy the physics does not have",
             n(band_mode(look) * dt),
             n(p.linear_damping * dt / look.mass.mass())
-        ),
-    ))
+        )
+    } else {
+        format!("{moved_by}, with {}", look.integrator.name())
+    };
+    Some((Some(outcome), why))
 }
 
 /// Returns the band's fastest mode ω = √(k (1/m + |r|²/I)) (rad/s), r its point's arm.

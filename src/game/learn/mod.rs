@@ -340,12 +340,13 @@ fn stop_the_chapter(
     }
 }
 
-/// The clocks an experiment reads: the steps taken, the game's clock and the fixed clock.
+/// How the steps an experiment reads were taken: their count, the clocks and the integrator.
 #[derive(SystemParam)]
-struct Clocks<'w> {
+struct Stepping<'w> {
     steps: Res<'w, StepCount>,
     time: Res<'w, Time<Virtual>>,
     fixed: Res<'w, Time<Fixed>>,
+    integrator: Res<'w, Integrator>,
 }
 
 /// Checks the chapter's experiment, after the frame's steps, against what the steps did.
@@ -355,12 +356,17 @@ fn check_task(
     mut learning: ResMut<Learning>,
     params: Res<SceneParams>,
     grip: Res<Grip>,
-    clocks: Clocks,
+    stepping: Stepping,
     boxes: Bodies,
     bands: Query<&Band>,
     shown: Res<SceneName>,
 ) {
-    let Clocks { steps, time, fixed } = clocks;
+    let Stepping {
+        steps,
+        time,
+        fixed,
+        integrator,
+    } = stepping;
     let index = learning.chapter;
     let Ok(body) = boxes.single() else {
         return;
@@ -385,6 +391,7 @@ fn check_task(
         clock: fixed.elapsed_secs_f64(),
         stepped_seconds: stepped as f64 * fixed.timestep().as_secs_f64(),
         single_step,
+        integrator: *integrator,
     };
     // Before an answer, nothing is an experiment: one begins once the answer is given.
     let found = match progress.predicted {
