@@ -325,9 +325,11 @@ fn learn_mode_draws_the_arm_and_the_torques_arc_in_their_colours() {
     game.mouse(ButtonState::Released);
     // The chapter on a force at a point; the player's pull.
     game.world().trigger(Learn::Chapter(2));
-    game.update(2);
-    // Learn mode frames the chapter closer: the press goes where the camera shows the point.
-    let below_right = game.on_window(Vec2::new(150.0, -200.0));
+    // The chapter pauses, loads its scene on the next frame, and frames it on the one after.
+    game.update(3);
+    // Learn mode frames the chapter closer (down to y = −180): the press goes where the camera
+    // shows the point.
+    let below_right = game.on_window(Vec2::new(100.0, -150.0));
     game.cursor(Some(below_right));
     game.mouse(ButtonState::Pressed);
     game.update(3);

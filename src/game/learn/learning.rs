@@ -27,6 +27,10 @@ pub struct Learning {
     pub(super) progress: Progress,
     /// The game's setup as learn mode found it, sent back as the mode is left.
     pub(super) kept: Option<Setup>,
+    /// The chapter's scene, loaded on the frame after the chapter paused the clock.
+    ///
+    /// With it, whether that frame has come.
+    pub(super) scene_to_load: Option<(&'static str, bool)>,
 }
 
 impl Default for Learning {
@@ -40,6 +44,7 @@ impl Default for Learning {
             point_masses: 4,
             progress: Progress::default(),
             kept: None,
+            scene_to_load: None,
         }
     }
 }

@@ -37,10 +37,10 @@ use crate::game::setup::{CurrentSetup, Setup};
 pub use crate::game::shared::Learn;
 use crate::game::shared::{Apply, DockHidden, Mode, Overlay, Say, SceneName, has_screen};
 use crate::game::simulation::{
-    Band, Bodies, Clock, EnergyBooks, ResetScene, StepCount, acting_band,
+    Band, Bodies, Clock, EnergyBooks, PlacedBox, ResetScene, StepCount, acting_band,
 };
 use crate::game::theme::{self, colour, size, space};
-use crate::physics::{AutoSettings, Integrator, SceneParams};
+use crate::physics::{AutoSettings, Integrator, Scene, SceneParams};
 use crate::replay::link::Link;
 
 pub struct LearnPlugin;
@@ -67,12 +67,13 @@ impl Plugin for LearnPlugin {
         .add_systems(
             Update,
             keep_the_twin
-                .after(GameSystems::ModeChange)
+                .after(hold_until_answered)
                 .before(ScreenSystems::Write),
         )
         .add_systems(
             Update,
-            hold_until_answered
+            (load_the_chapters_scene, hold_until_answered)
+                .chain()
                 .run_if(in_state(Mode::Learn))
                 .after(GameSystems::ModeChange)
                 .before(GameSystems::ApplySettings),
@@ -273,7 +274,9 @@ fn go_to(commands: &mut Commands, now: &Setup, learning: &mut Learning, index: u
         copy_at: chapter.centre_twin.then_some(TWIN_OFFSET.as_vec2()),
     };
     next.send_changed(now, commands);
-    commands.trigger(LoadScene(chapter.scene));
+    // Loaded once the pause is in force: Bevy's clocks advance before the input is read, so a
+    // scene loaded now would take this frame's steps before the question has its answer.
+    learning.scene_to_load = Some((chapter.scene, false));
     learning.chapter = index;
     learning.progress = Progress {
         predicted: learning.chosen[index],
@@ -290,6 +293,31 @@ fn start_over_on_reset(_reset: On<ResetScene>, mut learning: ResMut<Learning>) {
         predicted,
         ..default()
     };
+}
+
+/// Loads the chapter's scene, on the frame after the chapter paused the clock.
+///
+/// The box is put at the scene's start at once (its playback would at its first step), so a
+/// chapter waiting for its answer shows the box as the scene starts it: spinning in chapter 2.
+fn load_the_chapters_scene(mut learning: ResMut<Learning>, mut commands: Commands) {
+    let Some((name, due)) = learning.scene_to_load else {
+        return;
+    };
+    // The pause sent this frame holds from the next: Bevy's clocks have advanced already.
+    if !due {
+        learning.scene_to_load = Some((name, true));
+        return;
+    }
+    learning.scene_to_load = None;
+    commands.trigger(LoadScene(name));
+    if let Ok(scene) = Scene::named(name)
+        && let Ok(mass) = scene.params.mass_properties()
+    {
+        commands.trigger(Apply(PlacedBox {
+            state: scene.initial,
+            mass,
+        }));
+    }
 }
 
 /// Holds the clock paused while the chapter's question has no answer.
@@ -329,6 +357,7 @@ fn stop_the_chapter(
     recorder: Res<Recorder>,
     mut commands: Commands,
 ) {
+    learning.scene_to_load = None;
     commands.trigger(Apply(Stage::default()));
     commands.trigger(StopPlayback);
     commands.trigger(ResetScene);
