@@ -128,10 +128,11 @@ pub const CHAPTERS: [Chapter; 8] = [
         sections: "§3.2, §4.2",
         scene: "diagonal",
         integrator: None,
-        text: "Right and up are positive; x is the centre's position, in px. Every force moves \
-               the centre as if all the mass sat there: ΣF\u{a0}=\u{a0}m\u{a0}a, ΣF the band's \
-               pull plus damping's −b\u{a0}v. Time is in s, mass in mass units (mu), force in \
-               mu·px/s². The band here pulls along the diagonal, through the centre.",
+        text: "No gravity: the box floats in a plane, seen from above. Right and up are \
+               positive; x is the centre's position, in px. Any force moves the centre as if all \
+               the mass sat there: ΣF\u{a0}=\u{a0}m\u{a0}a, with damping's −b\u{a0}v in ΣF. \
+               Time in s, mass in mass units (mu), force in mu·px/s². The band pulls along the \
+               diagonal.",
         equations: &[Equation::ForceSum, Equation::Acceleration, Equation::Motion],
         frame: [-70.0, -70.0, 230.0, 230.0],
         centre_twin: false,
