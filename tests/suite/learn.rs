@@ -1586,3 +1586,72 @@ fn chapter_7s_verdict_names_each_integrators_own_order() {
         }
     }
 }
+
+/// Single steps taken before the answer play the experiment, but it is judged by no answer:
+/// an answer chosen after seeing it is not marked right, the card names no choice, and the
+/// status line asks for a restart.
+#[test]
+fn an_experiment_seen_before_the_answer_is_not_judged_by_it() {
+    let mut game = Game::stepping();
+    game.update(2);
+    chapter(&mut game, 0);
+    for _ in 0..40 {
+        game.world().write_message(Action::Step);
+        game.update(1);
+    }
+    game.world().trigger(Learn::Predict(RIGHT[0]));
+    game.world().write_message(Action::TogglePause);
+    game.update(200);
+    assert!(!game.world().resource::<Learning>().done[0]);
+    // Judged before the answer, by none; the answer given after it asks for a restart.
+    let status = game
+        .world()
+        .resource::<rubber_band_box::game::shared::StatusMessage>()
+        .0
+        .clone()
+        .unwrap_or_default();
+    assert!(status.contains("↺ restart"), "{status}");
+    let verdict = card(&mut game, LearnText::Verdict);
+    for choice in CHAPTERS[0].prediction.choices {
+        assert!(!verdict.contains(choice), "{verdict}");
+    }
+}
+
+/// Chapter 4 asks about I doubled: a mass made 200 times larger is said, not judged.
+#[test]
+fn the_inertias_task_wants_i_doubled_not_any_larger() {
+    let index = 3;
+    let mut game = Game::stepping();
+    game.update(2);
+    chapter(&mut game, index);
+    game.world().trigger(Learn::Predict(RIGHT[index]));
+    game.update(1);
+    game.world().write_message(Action::Step);
+    game.update(2);
+    game.world()
+        .write_message(Action::Set(Parameter::Mass, 1000.0));
+    game.update(2);
+    game.world().write_message(Action::Step);
+    game.update(2);
+    let learning = game.world().resource::<Learning>();
+    assert!(!learning.done[index]);
+    let verdict = learning.verdict().expect("a verdict");
+    assert_eq!(verdict.outcome, None, "{verdict:?}");
+    assert!(verdict.why.contains("not × 2"), "{verdict:?}");
+}
+
+/// `R` after learn mode: the game put back is a fresh game's tutorial, so `R` puts the box at
+/// rest, not the chapter's scripted pull.
+#[test]
+fn r_after_learn_mode_puts_a_fresh_game_at_rest() {
+    let mut game = Game::stepping();
+    game.update(2);
+    run_chapter(&mut game, 2);
+    game.update(10);
+    game.world().write_message(Action::Learn);
+    game.update(2);
+    game.world().write_message(Action::Reset);
+    game.update(20);
+    assert!(game.bands().is_empty());
+    assert_eq!(body_state(&mut game), BodyState::default());
+}

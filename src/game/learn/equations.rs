@@ -289,9 +289,18 @@ pub fn lines(equation: Equation, q: &Quantities) -> Vec<String> {
 ///
 /// The update loop's lines 4 and 5 say which v moves x.
 pub fn hide_the_answer(equation: Equation, lines: &mut Vec<String>) {
-    if equation == Equation::Update {
-        lines.truncate(3);
-        lines.push("4, 5  ω, θ, v and x: shown once you have answered".to_owned());
+    match equation {
+        Equation::Update => {
+            lines.truncate(3);
+            lines.push("4, 5  ω, θ, v and x: shown once you have answered".to_owned());
+        }
+        // Which corner the band keeps is chapter 5's question.
+        Equation::NearestCorner => {
+            *lines = vec!["p: the band's point on the box; q: the pointer".to_owned()];
+        }
+        // Which gains more energy is chapter 8's.
+        Equation::OutlineEnergy => lines.truncate(1),
+        _ => {}
     }
 }
 

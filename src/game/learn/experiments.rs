@@ -69,6 +69,8 @@ pub(super) struct Progress {
     /// A step now is a single step, not the remainder of the frame that paused it.
     pub(super) was_paused: bool,
     pub(super) steps_seen: u64,
+    /// The answer whose try this experiment has counted (a try counts once an experiment).
+    pub(super) tried: Option<usize>,
 }
 
 /// What a frame shows an experiment: the box, its player's band and any band, the settings.
@@ -92,6 +94,18 @@ pub type Found = Option<(Option<usize>, String)>;
 
 /// Feeds this frame to the chapter's experiment and returns what it concluded, if it did.
 pub(super) fn observe(task: Task, progress: &mut Progress, look: &Look) -> Found {
+    let finite = look.state.to_array().iter().all(|x| x.is_finite());
+    if !finite || !kinetic_energy(&look.state, look.mass).is_finite() {
+        if progress.judged {
+            return None;
+        }
+        return Some((
+            None,
+            "the step blew up: lower k or b, raise the mass, or take more steps a second (the \
+             Stability card)"
+                .to_owned(),
+        ));
+    }
     match task {
         Task::TurnThroughTheCentre => turn_through_the_centre(progress, look),
         Task::SpinWithoutDamping => spin_without_damping(progress, look),
@@ -320,8 +334,23 @@ fn spin_without_damping(progress: &mut Progress, look: &Look) -> Found {
 fn sign_of_torque(progress: &mut Progress, look: &Look) -> Found {
     let band = follow_pull(progress, look)?;
     let torque = band_torque(look, band);
-    // The band's own part of ω's change: ∫ τ_band dt / I over the pull, not damping's.
-    progress.band_turn += torque / look.mass.inertia() * look.stepped_seconds;
+    let dt = look.params.dt();
+    if band_mode(look) * dt > 2.0 && !progress.judged {
+        return Some((
+            None,
+            format!(
+                "with this band the step cannot follow ω (ω dt = {} > 2): lower k or raise the \
+                 mass",
+                n(band_mode(look) * dt)
+            ),
+        ));
+    }
+    // The band's own part of ω's change: ∫ τ_band dt / I over the pull, not damping's, the
+    // torque taken at the frame's two ends.
+    let before = progress.last_state.map_or(torque, |state| {
+        band.wrench(&state, look.params.stiffness).torque
+    });
+    progress.band_turn += 0.5 * (before + torque) / look.mass.inertia() * look.stepped_seconds;
     let turn = progress.band_turn;
     if progress.judged || turn.abs() < TURN {
         return None;
@@ -364,6 +393,16 @@ fn double_the_inertia(progress: &mut Progress, look: &Look) -> Found {
             if inertia >= 2.0 * inertia_then * (1.0 - 1e-12) =>
         {
             progress.before = Some((change, torque, inertia));
+            let grown = inertia / inertia_then;
+            if grown > 2.04 {
+                return Some((
+                    None,
+                    format!(
+                        "I went × {}, not × 2: ↺ restart and double it (mass × 2 or size × 1.42)",
+                        n(grown)
+                    ),
+                ));
+            }
             let ratio = change / change_then;
             if change_then == 0.0 || !ratio.is_finite() {
                 return Some((

@@ -32,7 +32,7 @@ use crate::game::replays::links::{ShareLink, publish};
 use crate::game::replays::playback::StopPlayback;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::LoadScene;
-use crate::game::schedule::{AfterStepsSystems, GameSystems, ScreenSystems};
+use crate::game::schedule::{AfterStepsSystems, ScreenSystems};
 use crate::game::setup::{CurrentSetup, Setup};
 pub use crate::game::shared::Learn;
 use crate::game::shared::{Apply, DockHidden, Mode, Overlay, Say, SceneName, has_screen};
@@ -72,11 +72,11 @@ impl Plugin for LearnPlugin {
         )
         .add_systems(
             Update,
+            // In `Update`, after the frame's steps: a resume asked before an answer is taken back
+            // before the next frame's clock advances.
             (load_the_chapters_scene, hold_until_answered)
                 .chain()
-                .run_if(in_state(Mode::Learn))
-                .after(GameSystems::ModeChange)
-                .before(GameSystems::ApplySettings),
+                .run_if(in_state(Mode::Learn)),
         )
         .add_systems(
             RunFixedMainLoop,
@@ -184,6 +184,11 @@ fn learn(learn: On<Learn>, mut teaching: Teaching, mut commands: Commands) {
         {
             learning.chosen[index] = Some(choice);
             learning.progress.predicted = Some(choice);
+            if learning.progress.judged {
+                commands.trigger(Say(
+                    "↺ restart plays the experiment again for this answer".to_owned()
+                ));
+            }
             learning.progress.verdict = None;
         }
         (Learn::Restart, Some(index)) => {
@@ -323,8 +328,8 @@ fn load_the_chapters_scene(mut learning: ResMut<Learning>, mut commands: Command
 /// Holds the clock paused while the chapter's question has no answer.
 ///
 /// So nothing, a scene's scripted pull least of all, shows the answer before it is given.
-/// It runs after the controls: a resume asked before an answer is taken back within its frame,
-/// before any step.
+/// It runs after the frame's steps, which a resume asked in this frame does not reach (the
+/// clock advanced before the input was read): the next frame starts paused again.
 fn hold_until_answered(
     learning: Res<Learning>,
     time: Res<Time<Virtual>>,
@@ -422,11 +427,9 @@ fn check_task(
         single_step,
         integrator: *integrator,
     };
-    // Before an answer, nothing is an experiment: one begins once the answer is given.
-    let found = match progress.predicted {
-        Some(_) => experiments::observe(CHAPTERS[index].task, progress, &look),
-        None => None,
-    };
+    // An experiment begun before the answer (a single step, a press) is judged by no answer:
+    // the card says so and shows nothing of its result.
+    let found = experiments::observe(CHAPTERS[index].task, progress, &look);
     progress.last_state = Some(look.state);
     if let Some((outcome, why)) = found {
         let verdict = Verdict {
@@ -436,7 +439,10 @@ fn check_task(
         };
         progress.judged = true;
         let right = verdict.right();
-        if let (Some(answer), Some(_)) = (verdict.answer, verdict.outcome) {
+        if let (Some(answer), Some(_)) = (verdict.answer, verdict.outcome)
+            && progress.tried != Some(answer)
+        {
+            progress.tried = Some(answer);
             learning.tries[index] += 1;
             learning.first[index].get_or_insert((answer, right));
         }

@@ -6,7 +6,7 @@
 use bevy::prelude::*;
 
 use crate::game::replays::playback::PlayScene;
-use crate::game::shared::{Say, SceneName};
+use crate::game::shared::{Apply, Say, SceneName};
 use crate::game::simulation::ResetScene;
 use crate::physics::{AutoSettings, Integrator, Scene, SceneParams};
 use crate::replay::script::scene_replay;
@@ -15,15 +15,20 @@ use crate::replay::script::scene_replay;
 pub(super) fn plugin(app: &mut App) {
     app.init_resource::<Loaded>()
         .add_observer(load)
+        .add_observer(note_the_scene_shown)
         .add_observer(restart);
 }
 
-/// The scene last loaded with its scripted pull (none in a fresh game).
+/// The scene shown, when it was loaded with its scripted pull (none in a fresh game).
 ///
-/// `R` plays it again while it is the scene shown; a fresh game, or a replay opened, is put
+/// `R` plays it again; a fresh game, a replay opened or a scene put back by learn mode is put
 /// back at rest instead.
 #[derive(Resource, Debug, Default)]
-struct Loaded(Option<&'static str>);
+struct Loaded {
+    shown: Option<&'static str>,
+    /// The scene being loaded, until its name is put in place.
+    loading: Option<&'static str>,
+}
 
 /// Play the scene shown from its start, its scripted pull with it, the settings as they are.
 #[derive(Event, Debug, Clone, Copy, Default)]
@@ -61,7 +66,7 @@ impl Playing<'_> {
 fn load(load: On<LoadScene>, mut commands: Commands, playing: Playing, mut loaded: ResMut<Loaded>) {
     match Scene::named(load.0) {
         Ok(scene) => {
-            loaded.0 = Some(scene.name);
+            loaded.loading = Some(scene.name);
             let params = SceneParams {
                 step_rate_hz: playing.params.step_rate_hz,
                 ..scene.params
@@ -72,6 +77,12 @@ fn load(load: On<LoadScene>, mut commands: Commands, playing: Playing, mut loade
     }
 }
 
+/// Notes whether the scene put in place is one loaded here, with its scripted pull.
+fn note_the_scene_shown(apply: On<Apply<SceneName>>, mut loaded: ResMut<Loaded>) {
+    let loading = loaded.loading.take();
+    loaded.shown = loading.filter(|&name| name == apply.0.0);
+}
+
 /// Restarts the scene loaded with the settings in force, while it is the one shown.
 ///
 /// A fresh game, or a replay opened since, has its box put back at rest at the centre.
@@ -79,11 +90,16 @@ fn restart(
     _restart: On<RestartScene>,
     mut commands: Commands,
     shown: Res<SceneName>,
-    loaded: Res<Loaded>,
+    mut loaded: ResMut<Loaded>,
     playing: Playing,
 ) {
-    match loaded.0.filter(|&name| name == shown.0).map(Scene::named) {
+    match loaded
+        .shown
+        .filter(|&name| name == shown.0)
+        .map(Scene::named)
+    {
         Some(Ok(scene)) => {
+            loaded.loading = Some(scene.name);
             let params = *playing.params;
             playing.play(&mut commands, scene, params);
         }
