@@ -351,3 +351,34 @@ fn a_small_window_starts_with_the_dock_hidden() {
     game.update(3);
     assert!(!game.world().resource::<DockHidden>().0);
 }
+
+/// A link shared from a small window leaves out the dock the window's size hid: a desktop that
+/// opens it shows its dock. The dock the player hid stays in it.
+#[test]
+fn a_link_from_a_small_window_leaves_its_hidden_dock_out() {
+    use rubber_band_box::game::replays::links::ShareLink;
+    use rubber_band_box::game::shared::StatusMessage;
+    let said = |game: &mut Game| {
+        game.world()
+            .resource::<StatusMessage>()
+            .0
+            .clone()
+            .unwrap_or_default()
+    };
+    let mut game = Game::laid_out();
+    game.resize(UVec2::new(480, 320));
+    game.update(3);
+    assert!(game.world().resource::<DockHidden>().0);
+    game.world().trigger(ShareLink { game: false });
+    game.update(1);
+    assert!(!said(&mut game).contains("dock=off"), "{}", said(&mut game));
+    // H twice, a frame apart: shown, then hidden, by the player now.
+    game.tap_key(KeyCode::KeyH);
+    game.update(1);
+    game.tap_key(KeyCode::KeyH);
+    game.update(2);
+    assert!(game.world().resource::<DockHidden>().0);
+    game.world().trigger(ShareLink { game: false });
+    game.update(1);
+    assert!(said(&mut game).contains("dock=off"), "{}", said(&mut game));
+}

@@ -27,7 +27,7 @@ pub(super) fn plugin(app: &mut App) {
 
 /// What the rule has judged, and whether it still has a say.
 #[derive(Resource, Debug, Default)]
-struct SmallWindow {
+pub struct SmallWindow {
     /// The window size judged last.
     judged: Option<Vec2>,
     /// The dock this rule has asked for and not yet seen applied.
@@ -36,6 +36,15 @@ struct SmallWindow {
     hid: bool,
     /// The player, a link or learn mode has set the dock: the rule is done.
     done: bool,
+}
+
+impl SmallWindow {
+    /// Tells whether the dock is hidden by this rule, not by the player, a link or learn mode.
+    ///
+    /// A link shared then leaves the dock out: it is the window's, not the game's.
+    pub fn hid_the_dock(&self) -> bool {
+        self.hid && !self.done
+    }
 }
 
 /// The least share of the window the scene keeps before the dock starts hidden.

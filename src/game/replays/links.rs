@@ -7,6 +7,7 @@
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
+use crate::game::layout::small::SmallWindow;
 use crate::game::replays::playback::OpenReplay;
 use crate::game::replays::recording::Recorder;
 use crate::game::replays::scenes::LoadScene;
@@ -196,13 +197,19 @@ fn share(
     share: On<ShareLink>,
     mode: Res<State<Mode>>,
     (setup, recorder): (CurrentSetup, Res<Recorder>),
+    small: Option<Res<SmallWindow>>,
     mut commands: Commands,
 ) {
     // In learn mode the link is the chapter's, which learn mode writes.
     if !share.game && *mode.get() == Mode::Learn {
         return;
     }
-    let link = link_of(&setup.get(), recorder.replay.as_ref(), share.game);
+    let mut now = setup.get();
+    // A dock a small window hid is the window's: a desktop opening the link shows it.
+    if small.is_some_and(|small| small.hid_the_dock()) {
+        now.dock_hidden = DockHidden(false);
+    }
+    let link = link_of(&now, recorder.replay.as_ref(), share.game);
     let said = match link.and_then(|link| link.to_query()) {
         Ok(query) => publish(&query, share.game),
         Err(error) => format!("no link: {error}"),
