@@ -34,8 +34,6 @@ impl Verdict {
 /// What an experiment has seen since its chapter began.
 #[derive(Debug, Default, Clone)]
 pub(super) struct Progress {
-    /// The answer chosen now.
-    pub(super) predicted: Option<usize>,
     /// The answer held when the experiment under way began: the one it is judged by.
     pub(super) committed: Option<usize>,
     pub(super) verdict: Option<Verdict>,
@@ -86,6 +84,8 @@ pub(super) struct Look<'a> {
     /// The simulated time this frame's steps covered.
     pub(super) stepped_seconds: f64,
     pub(super) integrator: Integrator,
+    /// The answer chosen now.
+    pub(super) answer: Option<usize>,
     pub(super) single_step: bool,
 }
 
@@ -166,7 +166,7 @@ fn follow_pull(progress: &mut Progress, look: &Look) -> Option<BandEnds> {
         progress.players = false;
         progress.worst_miss = 0.0;
         progress.band_turn = 0.0;
-        progress.committed = progress.predicted;
+        progress.committed = look.answer;
         progress.judged = false;
     }
     progress.players |= look.player_band.is_some();
@@ -292,7 +292,7 @@ fn spin_without_damping(progress: &mut Progress, look: &Look) -> Found {
     }
     let Some((from, since)) = progress.window else {
         progress.window = Some((omega, look.clock));
-        progress.committed = progress.predicted;
+        progress.committed = look.answer;
         return None;
     };
     if look.clock - since < SPIN_WATCH {
@@ -436,7 +436,7 @@ fn double_the_inertia(progress: &mut Progress, look: &Look) -> Found {
         Some((_, _, inertia_then)) if inertia != inertia_then => None,
         _ => {
             progress.before = Some((change, torque, inertia));
-            progress.committed = progress.predicted;
+            progress.committed = look.answer;
             None
         }
     }
@@ -491,7 +491,7 @@ fn come_to_rest(progress: &mut Progress, look: &Look) -> Found {
     }
     let most = match progress.released {
         None => {
-            progress.committed = progress.predicted;
+            progress.committed = look.answer;
             progress.judged = false;
             progress.released_at = look.clock;
             energy
@@ -556,7 +556,7 @@ fn come_to_rest(progress: &mut Progress, look: &Look) -> Found {
 fn step_order(progress: &mut Progress, look: &Look) -> Found {
     let held = progress.committed;
     // The answer held as this frame ends is the one the next single step is judged by.
-    progress.committed = progress.predicted;
+    progress.committed = look.answer;
     if !look.single_step {
         return None;
     }

@@ -55,7 +55,7 @@ pub const MOST_POINT_MASSES: u32 = 64;
 impl Learning {
     /// Returns the answer chosen for this chapter's prediction.
     pub fn predicted(&self) -> Option<usize> {
-        self.progress.predicted
+        self.chosen.get(self.chapter).copied().flatten()
     }
 
     /// Returns the first answer the chapter's experiments judged, and whether it was right.

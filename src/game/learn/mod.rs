@@ -183,7 +183,6 @@ fn learn(learn: On<Learn>, mut teaching: Teaching, mut commands: Commands) {
             if choice < CHAPTERS[index].prediction.choices.len() =>
         {
             learning.chosen[index] = Some(choice);
-            learning.progress.predicted = Some(choice);
             if learning.progress.judged {
                 commands.trigger(Say(
                     "↺ restart plays the experiment again for this answer".to_owned()
@@ -283,21 +282,14 @@ fn go_to(commands: &mut Commands, now: &Setup, learning: &mut Learning, index: u
     // scene loaded now would take this frame's steps before the question has its answer.
     learning.scene_to_load = Some((chapter.scene, false));
     learning.chapter = index;
-    learning.progress = Progress {
-        predicted: learning.chosen[index],
-        ..default()
-    };
+    learning.progress = Progress::default();
 }
 
-/// Starts the chapter's experiment over when the scene starts over, keeping the answer.
+/// Starts the chapter's experiment over when the scene starts over (the answer is kept apart).
 ///
 /// A restart, `R` and a scene loaded all start it over.
 fn start_over_on_reset(_reset: On<ResetScene>, mut learning: ResMut<Learning>) {
-    let predicted = learning.progress.predicted;
-    learning.progress = Progress {
-        predicted,
-        ..default()
-    };
+    learning.progress = Progress::default();
 }
 
 /// Loads the chapter's scene, on the frame after the chapter paused the clock.
@@ -336,7 +328,7 @@ fn hold_until_answered(
     shown: Res<SceneName>,
     mut commands: Commands,
 ) {
-    let waiting = learning.progress.predicted.is_none()
+    let waiting = learning.predicted().is_none()
         && CHAPTERS
             .get(learning.chapter)
             .is_some_and(|chapter| chapter.scene == shown.0);
@@ -410,6 +402,7 @@ fn check_task(
         return;
     }
     let any_band = acting_band(body.entity, &bands);
+    let answer = learning.predicted();
     let progress = &mut learning.progress;
     let stepped = steps.0.saturating_sub(progress.steps_seen);
     let first_look = progress.steps_seen == 0;
@@ -426,6 +419,7 @@ fn check_task(
         stepped_seconds: stepped as f64 * fixed.timestep().as_secs_f64(),
         single_step,
         integrator: *integrator,
+        answer,
     };
     // An experiment begun before the answer (a single step, a press) is judged by no answer:
     // the card says so and shows nothing of its result.
@@ -581,7 +575,7 @@ fn chapter_texts(
         (LearnText::Body, chapter.text.to_owned(), colour::DIM),
     ];
     let prediction = &chapter.prediction;
-    let answered = learning.progress.predicted.is_some();
+    let answered = learning.predicted().is_some();
     let lines: Vec<(String, Color)> = quantities.map_or_else(Vec::new, |q| {
         chapter
             .equations
@@ -611,7 +605,7 @@ fn chapter_texts(
             .copied()
             .unwrap_or("nothing")
     };
-    let task = match learning.progress.predicted {
+    let task = match learning.predicted() {
         Some(answer) => format!(
             "{done}▸ {} You say: {}; {}",
             prediction.question,
