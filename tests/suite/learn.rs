@@ -700,7 +700,7 @@ fn claim_2_an_unpulled_box_only_spins_and_omega_falls_at_the_rate_c() {
 /// point moves at v + ω r⊥.
 #[test]
 fn claim_3_a_force_at_a_point_changes_omega_by_r_cross_f_over_i() {
-    use rubber_band_box::physics::{AutoSettings, Stepper};
+    use rubber_band_box::physics::Stepper;
     let cases = [
         (
             DVec2::new(80.0, 30.0),
@@ -730,7 +730,6 @@ fn claim_3_a_force_at_a_point_changes_omega_by_r_cross_f_over_i() {
                 angular_damping: 0.0,
                 ..SceneParams::tutorial()
             };
-            let mass = params.mass_properties().unwrap();
             let state = BodyState {
                 linear: LinearState {
                     position: DVec2::new(5.0, -3.0),
@@ -753,12 +752,10 @@ fn claim_3_a_force_at_a_point_changes_omega_by_r_cross_f_over_i() {
                 anchor,
             };
             let mut stepper = Stepper {
-                params,
-                mass,
                 state,
                 band: Some(band),
                 integrator,
-                auto: AutoSettings::default(),
+                ..Stepper::new(params).expect("a valid box")
             };
             stepper.step(dt);
             let after = stepper.state;
@@ -1377,10 +1374,10 @@ fn a_chapter_waits_paused_for_its_answer() {
 /// passes a hundred times its start, which damping and a still pointer never allow.
 #[test]
 fn claim_7_the_seed_blows_up_where_the_verdicts_limits_say() {
+    use rubber_band_box::physics::Stepper;
     use rubber_band_box::physics::scene::{
         ANGULAR_DAMPING_RANGE, LINEAR_DAMPING_RANGE, MASS_RANGE, SIZE_RANGE, STIFFNESS_RANGE,
     };
-    use rubber_band_box::physics::{AutoSettings, Stepper};
     let base = SceneParams::tutorial();
     let corner = |params: &SceneParams| params.size / 2.0;
     let mut cases: Vec<(SceneParams, DVec2)> = Vec::new();
@@ -1423,12 +1420,9 @@ fn claim_7_the_seed_blows_up_where_the_verdicts_limits_say() {
         let omega_dt = params.force_model(mass, Some(band)).band_rate() * dt;
         let decay = params.linear_damping * dt / params.mass;
         let mut stepper = Stepper {
-            params,
-            mass,
-            state: BodyState::default(),
             band: Some(band),
             integrator: Integrator::Seed,
-            auto: AutoSettings::default(),
+            ..Stepper::new(params).expect("a valid box")
         };
         // With b, c ≥ 0 and the pointer still, E can only fall from the band's energy at the
         // start: the seed's error aside, a run that goes far above it has blown up.
