@@ -9,8 +9,7 @@
 //!    mode's `OnEnter` and `OnExit` act before the steps), the settings' consequences derived;
 //! 2. `FixedUpdate`, zero or more times, [`PhysicsSystems`]: a playback's recorded inputs,
 //!    the observers of the step's inputs (the recorder, the ghosts, learn mode's twin), the
-//!    step (accumulate,
-//!    integrate, settle), then the readers of the step's results (the recorder, the HUD's
+//!    step (accumulate, then integrate with the energies settled), then the readers of the step's results (the recorder, the HUD's
 //!    history);
 //! 3. `RunFixedMainLoop`, after the fixed loop, [`AfterStepsSystems`]: the drawn state
 //!    interpolated between the last two steps, the end of a playback said, learn mode's task
@@ -47,7 +46,7 @@ pub enum GameSystems {
     /// time, as Bevy's docs allow, so that learn mode's chapter (its `OnEnter`) and the game put
     /// back (`OnExit`) act on this frame's steps. With no mode asked it does nothing.
     ModeChange,
-    /// What derives from the settings the controls wrote (the fixed clock's step).
+    /// What derives from the settings the controls wrote (the stability view's margins).
     ApplySettings,
     /// The frame's budget for fixed steps opened, just before the loop (`budget`).
     Budget,
@@ -128,9 +127,10 @@ pub enum AfterBevySystems {
     AfterExit,
 }
 
-/// Orders the fixed step's chain, and the settings applied before the loop.
+/// Orders the fixed step's chain.
 ///
-/// The physics plugin needs no more to run alone.
+/// The physics plugin needs no more to run alone: it takes the settings it owns as they are
+/// sent, with no system before the loop.
 pub fn order_the_physics(app: &mut App) {
     app.configure_sets(
         FixedUpdate,
@@ -142,10 +142,6 @@ pub fn order_the_physics(app: &mut App) {
             PhysicsSystems::Budget,
         )
             .chain(),
-    )
-    .configure_sets(
-        RunFixedMainLoop,
-        GameSystems::ApplySettings.in_set(RunFixedMainLoopSystems::BeforeFixedMainLoop),
     );
 }
 

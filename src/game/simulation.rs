@@ -1,8 +1,8 @@
 //! The physics plugin: the box's state as components, the band as an entity, and the fixed
 //! step as one system in the frame's `schedule::PhysicsSystems::Step`: forces and torques
 //! accumulated, then the core's booked step (the hand's work and damping's share booked, a
-//! state the game cannot play refused), then the results settled (render snapshots, the
-//! energies, the step counted). A tap's band is the pointer's to remove after its step. It owns
+//! state the game cannot play refused, the render snapshots and the energies settled), then
+//! the step counted. A tap's band is the pointer's to remove after its step. It owns
 //! the body, the energy books and the step statistics, and puts them back on [`ResetScene`].
 //!
 //! Headless, and usable alone (the benchmarks and the side-by-side with the peers run it
@@ -17,7 +17,7 @@ use bevy::ecs::system::SystemParam;
 use bevy::math::DVec2;
 use bevy::prelude::*;
 
-use crate::game::schedule::{self, GameSystems, PhysicsSystems};
+use crate::game::schedule::{self, PhysicsSystems};
 use crate::game::shared::{Apply, Owns};
 use crate::physics::{
     AngularState, AutoSettings, BandEnds, BodyState, Books, Bound, Energies, Forces, Integrator,
@@ -48,13 +48,6 @@ impl Plugin for SimulationPlugin {
             // then builds its steps on it.
             .add_systems(Startup, (spawn_box, apply_step_rate))
             .add_observer(reset_bodies_and_books)
-            // The step rate can change during play (a control): applied before the loop.
-            .add_systems(
-                RunFixedMainLoop,
-                (apply_step_rate, apply_mass)
-                    .run_if(resource_changed::<SceneParams>)
-                    .in_set(GameSystems::ApplySettings),
-            )
             .add_systems(FixedUpdate, step.in_set(PhysicsSystems::Step));
     }
 }
@@ -317,18 +310,6 @@ fn set_step_rate(params: &SceneParams, time: &mut Time<Fixed>) {
     }
 }
 
-/// Gives the box the mass and size the scene's parameters say, its state kept.
-///
-/// The parameters change with the mass slider or a link. Only a valid scene reaches here (the
-/// controls refuse the rest).
-fn apply_mass(params: Res<SceneParams>, mut boxes: Query<&mut MassProperties, With<RigidBox>>) {
-    if let Ok(wanted) = params.mass_properties() {
-        for mut mass in &mut boxes {
-            mass.set_if_neq(wanted);
-        }
-    }
-}
-
 /// The game clock's pace: the time scale and whether it is paused (`Time<Virtual>`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Clock {
@@ -357,16 +338,25 @@ pub struct PlacedBox {
 #[derive(Event, Debug, Clone, Copy, Default)]
 pub struct StepOnce;
 
-/// Takes the scene's parameters, and the fixed clock's step at their rate, at once.
+/// Takes the scene's parameters, with the fixed clock's step and the box's mass and size, at once.
 ///
-/// At once, so that the steps still to come in this frame (a replay's settings record) take it.
+/// At once, so that the steps still to come in this frame (a replay's settings record) take
+/// them; and here, the parameters' one writer, so that no system asks every frame whether they
+/// changed. The box keeps its state. Only a valid scene reaches here (the controls refuse the
+/// rest).
 fn set_params(
     apply: On<Apply<SceneParams>>,
     mut params: ResMut<SceneParams>,
     mut time: ResMut<Time<Fixed>>,
+    mut boxes: Query<&mut MassProperties, With<RigidBox>>,
 ) {
     *params = apply.0;
     set_step_rate(&params, &mut time);
+    if let Ok(wanted) = params.mass_properties() {
+        for mut mass in &mut boxes {
+            mass.set_if_neq(wanted);
+        }
+    }
 }
 
 /// Sets the clock's pace.
@@ -466,14 +456,14 @@ struct StepRecords<'w> {
     count: ResMut<'w, StepCount>,
 }
 
-/// Takes the fixed step in three phases: [`accumulate`], [`integrate`], [`settle`].
+/// Takes the fixed step: [`accumulate`], [`integrate`], and the step counted.
 ///
 /// It is one system because each system a step costs Bevy about as much again as the box's physics
 /// (docs/peers.md).
 fn step(settings: StepSettings, bands: Query<&Band>, mut bodies: Moving, mut records: StepRecords) {
     accumulate(&settings.params, &bands, &mut bodies);
     integrate(&settings, &mut bodies, &mut records);
-    settle(&settings.params, &bands, &bodies, &mut records);
+    records.count.0 += 1;
 }
 
 /// Puts the band's force on each body (one band a body).
@@ -498,9 +488,10 @@ fn accumulate(params: &SceneParams, bands: &Query<&Band>, bodies: &mut Moving) {
 /// Advances each body by the core's booked step under what was accumulated and damping.
 ///
 /// Damping adds −b·v and −c·I·ω. The step books the hand's work since the last one and damping's
-/// share, and refuses a state the game cannot play. Either way the accumulator is emptied and the
-/// render snapshots move on. The scene has one box, whose books the game keeps; the benchmarks'
-/// extra boxes share them.
+/// share, and refuses a state the game cannot play. Either way the accumulator is emptied, the
+/// render snapshots move on, and the energies the books settled at are kept by kind, summed
+/// over the bodies. The scene has one box, whose books the game keeps; the benchmarks' extra
+/// boxes share them.
 fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRecords) {
     let StepSettings {
         time,
@@ -513,6 +504,7 @@ fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRec
     stats.substeps = 0;
     stats.fell_back = false;
     let step = records.count.0 + 1;
+    let mut energies = Energies::default();
     for mut body in bodies.iter_mut() {
         let mut stepper = Stepper {
             params: **params,
@@ -548,14 +540,10 @@ fn integrate(settings: &StepSettings, bodies: &mut Moving, records: &mut StepRec
             }
             stats.divergence = Some((**integrator, step));
         }
+        energies = energies + booked.energies;
         body.set_state(stepper.state);
         body.snapshots.previous = body.snapshots.current;
         body.snapshots.current = stepper.state;
     }
-}
-
-/// Keeps the energies by kind after the step, and counts the step.
-fn settle(params: &SceneParams, bands: &Query<&Band>, bodies: &Moving, records: &mut StepRecords) {
-    records.books.energies = mechanical_energies(params, &bodies.as_readonly(), bands);
-    records.count.0 += 1;
+    records.books.energies = energies;
 }

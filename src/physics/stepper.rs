@@ -6,7 +6,7 @@
 use bevy::math::DVec2;
 
 use super::body::{BodyState, MassProperties};
-use super::energy::EnergyLedger;
+use super::energy::{Energies, EnergyLedger};
 use super::forces::{BandEnds, ForceModel, Forces};
 use super::integrators::Integrator;
 use super::integrators::{AutoSettings, StepInfo};
@@ -68,7 +68,17 @@ impl Stepper {
 
     /// Returns the kinetic plus band energy.
     pub fn energy(&self) -> f64 {
-        self.model().energy(&self.state)
+        self.energies().total()
+    }
+
+    /// Returns the energies by kind: linear, rotational and the band's.
+    pub fn energies(&self) -> Energies {
+        Energies::of(
+            &self.state,
+            &self.mass,
+            self.band.as_ref(),
+            self.params.stiffness,
+        )
     }
 }
 
@@ -115,6 +125,8 @@ pub struct Booked {
     pub info: StepInfo,
     /// The step left the bound: the state is the one before it, and damping's share unbooked.
     pub refused: bool,
+    /// The energies by kind of the state kept, which the books settled at.
+    pub energies: Energies,
 }
 
 impl Books {
@@ -155,8 +167,13 @@ impl Books {
         } else {
             self.ledger.dissipated += info.dissipated;
         }
-        self.settled = Some(stepper.energy());
-        Booked { info, refused }
+        let energies = stepper.energies();
+        self.settled = Some(energies.total());
+        Booked {
+            info,
+            refused,
+            energies,
+        }
     }
 
     /// Returns the ledger's residual after the latest step: the integrator's energy error.
