@@ -14,7 +14,7 @@ use rubber_band_box::game::input::controls::Parameter;
 
 use rubber_band_box::game::learn::chapters::{CHAPTERS, Task};
 use rubber_band_box::game::learn::twin::{CentreTwin, TWIN_OFFSET};
-use rubber_band_box::game::learn::{LINES, Learn, LearnText, Learning, chapter_shown};
+use rubber_band_box::game::learn::{LINES, Learn, LearnText, Learning, Verdict, chapter_shown};
 use rubber_band_box::game::shared::{Mode, Overlays, SceneName};
 use rubber_band_box::game::simulation::{Band, EnergyBooks, RigidBox};
 use rubber_band_box::game::theme::{precise, readable};
@@ -1648,4 +1648,52 @@ fn r_after_learn_mode_puts_a_fresh_game_at_rest() {
     game.update(20);
     assert!(game.bands().is_empty());
     assert_eq!(body_state(&mut game), BodyState::default());
+}
+
+/// Runs a chapter's scene from its start with one setting changed, and returns its verdict.
+fn verdict_with(index: usize, parameter: Parameter, value: f64, frames: usize) -> Option<Verdict> {
+    let mut game = Game::stepping();
+    game.update(2);
+    chapter(&mut game, index);
+    game.world().write_message(Action::Set(parameter, value));
+    game.update(1);
+    // R: the chapter's scene from its start with the sliders as they are, its band on the
+    // nearest corner of the box as it is now.
+    game.world().write_message(Action::Reset);
+    game.update(2);
+    game.world().trigger(Learn::Predict(RIGHT[index]));
+    game.world().write_message(Action::TogglePause);
+    game.update(frames);
+    game.world().resource::<Learning>().verdict().cloned()
+}
+
+/// Chapter 1 with a box about as large as its pull: the corner starts near the band's end, so
+/// the centre never travels 40 px; the verdict comes over half the band's stretch instead, and
+/// a corner that starts on the band's end is told the band hardly pulls.
+#[test]
+fn chapter_1_judges_a_box_about_as_large_as_its_pull() {
+    for side in [260.0, 340.0] {
+        let verdict = verdict_with(0, Parameter::Size, side, 300).expect("a verdict");
+        assert_eq!(verdict.outcome, Some(1), "{side}: {verdict:?}");
+        // The corner (±130 or ±170 px) starts 28.3 px from (150, 150): judged over 14.1 px.
+        assert!(
+            verdict.why.starts_with("over 14.1 px"),
+            "{side}: {verdict:?}"
+        );
+    }
+    let verdict = verdict_with(0, Parameter::Size, 300.0, 300).expect("a verdict");
+    assert_eq!(verdict.outcome, None, "{verdict:?}");
+    assert!(verdict.why.contains("hardly pulls"), "{verdict:?}");
+}
+
+/// Chapter 3 with a box too heavy for its 2 s pull to change ω by 1 rad/s: the end of the
+/// pull is said, with how far ω changed, not waited on in silence.
+#[test]
+fn chapter_3_says_when_its_pull_ends_too_weak_to_judge() {
+    let verdict = verdict_with(2, Parameter::Mass, 1000.0, 400).expect("a verdict");
+    assert_eq!(verdict.outcome, None, "{verdict:?}");
+    assert!(verdict.why.starts_with("the pull ended"), "{verdict:?}");
+    // The tutorial's box turns well past 1 rad/s under the same pull.
+    let verdict = verdict_with(2, Parameter::Mass, 5.0, 400).expect("a verdict");
+    assert!(verdict.outcome.is_some(), "{verdict:?}");
 }

@@ -11,6 +11,8 @@ use crate::physics::{Integrator, MassProperties, SceneParams};
 
 /// How far ω must change from the press for a pull's turn to count (rad/s).
 pub const TURN: f64 = 1.0;
+/// How far the centre must travel in chapter 1's pull before it is judged (px), at most.
+pub const JUDGED_TRAVEL: f64 = 40.0;
 /// How long ω is watched with the angular damping at 0 (s).
 pub const SPIN_WATCH: f64 = 0.5;
 
@@ -44,6 +46,8 @@ pub(super) struct Progress {
     /// The band's point on the box, in its own coordinates, and its torque as the pull began.
     pub(super) pull_point: DVec2,
     pub(super) pull_torque: f64,
+    /// The band's stretch as the pull began (px).
+    pub(super) pull_stretch: f64,
     /// When the pull under way began (the fixed clock, s).
     pub(super) pull_clock: f64,
     /// The pull under way is, or was at some moment, the player's own.
@@ -163,6 +167,7 @@ fn follow_pull(progress: &mut Progress, look: &Look) -> Option<BandEnds> {
         progress.pull_point = band.local_point;
         progress.pull_clock = look.clock;
         progress.pull_torque = band_torque(look, band);
+        progress.pull_stretch = band.length(&look.state);
         progress.players = false;
         progress.worst_miss = 0.0;
         progress.band_turn = 0.0;
@@ -182,8 +187,24 @@ fn turn_through_the_centre(progress: &mut Progress, look: &Look) -> Found {
     let band = follow_pull(progress, look)?;
     progress.worst_miss = progress.worst_miss.max(line_miss(look, band));
     let (from, angle, spin) = progress.pull_start?;
+    // 40 px, or half the band's stretch where the corner starts nearer its end than 80 px (a
+    // box about as large as the scene's pull).
+    let travel = JUDGED_TRAVEL.min(0.5 * progress.pull_stretch);
+    if progress.judged {
+        return None;
+    }
+    if travel < 1.0 {
+        return Some((
+            None,
+            format!(
+                "the corner starts {} px from the band's end, so the band hardly pulls: another \
+                 size moves the box",
+                n(progress.pull_stretch)
+            ),
+        ));
+    }
     let moved = look.state.linear.position.distance(from);
-    if progress.judged || moved < 40.0 {
+    if moved < travel {
         return None;
     }
     let angular = look.state.angular;
@@ -221,15 +242,17 @@ fn turn_through_the_centre(progress: &mut Progress, look: &Look) -> Found {
     let outcome = usize::from(turned.abs() <= 1e-9 && spun.abs() <= 1e-9);
     let why = if outcome == 1 {
         format!(
-            "over 40 px θ changed by {} rad and ω by {} rad/s: the band's line passed through \
+            "over {} px θ changed by {} rad and ω by {} rad/s: the band's line passed through \
              the centre, so its torque about the centre, τ = r × F, was 0",
+            n(travel),
             n(turned),
             n(spun)
         )
     } else {
         format!(
-            "over 40 px θ changed by {} rad and ω by {} rad/s: something gave a torque about \
+            "over {} px θ changed by {} rad and ω by {} rad/s: something gave a torque about \
              the centre",
+            n(travel),
             n(turned),
             n(spun)
         )
@@ -332,16 +355,29 @@ fn spin_without_damping(progress: &mut Progress, look: &Look) -> Found {
 }
 
 fn sign_of_torque(progress: &mut Progress, look: &Look) -> Found {
+    if look.any_band.is_none() && progress.pull_start.is_some() && !progress.judged {
+        // Let go before its torque turned the box enough to judge: said, not waited on.
+        progress.pull_start = None;
+        return Some((
+            None,
+            format!(
+                "the pull ended with its torque having changed ω by {} rad/s, under the {} \
+                 rad/s judged: a stiffer band or a lighter box turns it more (↺ restart)",
+                n(progress.band_turn),
+                n(TURN)
+            ),
+        ));
+    }
     let band = follow_pull(progress, look)?;
     let torque = band_torque(look, band);
-    let dt = look.params.dt();
-    if band_mode(look) * dt > 2.0 && !progress.judged {
+    let band_step = band_mode(look) * look.params.dt();
+    if band_step > 2.0 && !progress.judged {
         return Some((
             None,
             format!(
                 "with this band the step cannot follow ω (ω dt = {} > 2): lower k or raise the \
                  mass",
-                n(band_mode(look) * dt)
+                n(band_step)
             ),
         ));
     }
