@@ -257,8 +257,10 @@ fn integrate_here<L: Lanes>(
         // Jorba and Zou: the step at which each of the last two terms reaches the tolerance,
         // the smaller of the two, in logarithms.
         let log2_tolerance = rough_log2(tolerance);
+        // Whether the series may end the fixed step early: the stability cap lets it.
+        let may_end = longest >= remaining;
         // (remaining / SAFETY)^top, the step that would end the fixed step, as a power.
-        let reach_step = remaining / SAFETY;
+        let reach_step = if may_end { remaining / SAFETY } else { 0.0 };
         let mut reach_power = 1.0;
         // The series stops early where a lower order already reaches the end of the fixed
         // step (a soft band: a few orders instead of all of them).
@@ -274,10 +276,14 @@ fn integrate_here<L: Lanes>(
             series[n + 1] = newest.row();
             let top = n + 1;
             // Whether the last two terms are within the tolerance at the end of the fixed
-            // step: Jorba and Zou's step reaches it (compared without roots). The terms are
-            // weighed only where the step could end here: a stiff band's never does.
+            // step: Jorba and Zou's step reaches it (compared without roots). Only where the
+            // step could end here (a stiff band's never does): elsewhere the chain of powers
+            // would hold up the orders after it, waiting on the size of the step before.
+            if !may_end {
+                continue;
+            }
             reach_power *= reach_step;
-            if (MIN_ORDER..order).contains(&top) && longest >= remaining {
+            if (MIN_ORDER..order).contains(&top) {
                 let term = |n: usize| weighted_max(&weights, &series[n]);
                 let tolerance = tolerance * EARLY_MARGIN;
                 if term(top) * reach_power <= tolerance
@@ -420,14 +426,11 @@ fn rough_exp2(x: f64) -> f64 {
     if x >= 1024.0 {
         return f64::INFINITY;
     }
-    let truncated = x as i64;
-    let whole = if truncated as f64 > x {
-        truncated - 1
-    } else {
-        truncated
-    };
-    let fraction = x - whole as f64;
-    let scale = f64::from_bits(((whole + 1023) as u64) << 52);
+    // The fraction from x's floor, which the processor finds in its floating-point lanes:
+    // what waits on x is then a subtraction and the quadratic, not two conversions.
+    let whole = x.floor();
+    let fraction = x - whole;
+    let scale = f64::from_bits(((whole as i64 + 1023) as u64) << 52);
     // 2^f for f in [0, 1), exact at both ends.
     scale * (1.0 + fraction * (0.6602 + 0.3398 * fraction))
 }
