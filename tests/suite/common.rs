@@ -417,6 +417,15 @@ impl Game {
     pub fn steps(&mut self) -> u64 {
         self.world().resource::<StepCount>().0
     }
+
+    /// Returns what the status line says now ("" when it says nothing).
+    pub fn status(&mut self) -> String {
+        self.world()
+            .resource::<rubber_band_box::game::shared::StatusMessage>()
+            .0
+            .clone()
+            .unwrap_or_default()
+    }
 }
 
 /// The largest accumulator seen right after an integration step.

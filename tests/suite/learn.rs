@@ -1357,12 +1357,7 @@ fn a_chapter_waits_paused_for_its_answer() {
     game.update(60);
     assert_eq!(game.world().resource::<StepCount>().0, steps);
     assert_eq!(body_state(&mut game), start);
-    let status = game
-        .world()
-        .resource::<rubber_band_box::game::shared::StatusMessage>()
-        .0
-        .clone()
-        .unwrap_or_default();
+    let status = game.status();
     assert!(status.contains("choose an answer first"), "{status}");
 }
 
@@ -1598,12 +1593,7 @@ fn an_experiment_seen_before_the_answer_is_not_judged_by_it() {
     game.update(200);
     assert!(!game.world().resource::<Learning>().done[0]);
     // Judged before the answer, by none; the answer given after it asks for a restart.
-    let status = game
-        .world()
-        .resource::<rubber_band_box::game::shared::StatusMessage>()
-        .0
-        .clone()
-        .unwrap_or_default();
+    let status = game.status();
     assert!(status.contains("↺ restart"), "{status}");
     let verdict = card(&mut game, LearnText::Verdict);
     for choice in CHAPTERS[0].prediction.choices {

@@ -21,7 +21,7 @@ use rubber_band_box::game::replays::links::link_of;
 use rubber_band_box::game::replays::playback::{Playback, PlaybackEnd};
 use rubber_band_box::game::replays::recording::Recorder;
 use rubber_band_box::game::setup::CurrentSetup;
-use rubber_band_box::game::shared::{Learn, Overlay, Overlays, SceneName, StatusMessage};
+use rubber_band_box::game::shared::{Learn, Overlay, Overlays, SceneName};
 use rubber_band_box::physics::{Integrator, SceneParams, TIME_SCALE_RANGE};
 use rubber_band_box::replay::link::{Key, Link, MAX_FRAGMENT_BYTES, decode_replay, encode_replay};
 use rubber_band_box::replay::{Record, Replay, Settings};
@@ -35,14 +35,6 @@ fn opened(link: &str) -> Game {
     Game::with(Duration::from_millis(10), |app| {
         prepare(app, &options).expect("a link never fails `prepare`");
     })
-}
-
-fn status(game: &mut Game) -> String {
-    game.world()
-        .resource::<StatusMessage>()
-        .0
-        .clone()
-        .unwrap_or_default()
 }
 
 /// Returns the link the share control writes of the game now.
@@ -97,7 +89,7 @@ fn a_link_opens_what_it_names_and_the_share_control_writes_it_back() {
         .unwrap();
     assert_eq!(mass.mass(), 0.5);
     assert_eq!(mass.size(), bevy::math::DVec2::splat(90.0));
-    assert_eq!(status(&mut game), "", "nothing was left");
+    assert_eq!(game.status(), "", "nothing was left");
     assert_eq!(shared(&mut game, false), SET_UP);
 }
 
@@ -129,7 +121,7 @@ fn a_link_is_taken_in_part_and_what_was_left_is_named() {
          integrator=rk5&plot=on#replay=not-a-replay",
     );
     game.update(2);
-    let said = status(&mut game);
+    let said = game.status();
     for named in [
         "k: must be from 0.01 to 1e12, got 1e20",
         "rate: must be from 8 to 4096 Hz, got 1e9",
@@ -195,7 +187,7 @@ fn a_game_in_a_link_replays_to_its_recorded_hash() {
         recorded: in_the_link,
     }) = played_to_the_end(&mut again)
     else {
-        panic!("the playback did not finish: {}", status(&mut again));
+        panic!("the playback did not finish: {}", again.status());
     };
     assert_eq!(steps, recorded.steps);
     assert_eq!(in_the_link, recorded.hash);
@@ -205,11 +197,7 @@ fn a_game_in_a_link_replays_to_its_recorded_hash() {
     // The link's settings keys are the replay's to set: named, not applied.
     let mut mixed = opened(&format!("?k=5{}", &link[link.find('#').unwrap()..]));
     mixed.update(2);
-    assert!(
-        status(&mut mixed).contains("k: left"),
-        "{}",
-        status(&mut mixed)
-    );
+    assert!(mixed.status().contains("k: left"), "{}", mixed.status());
     assert_eq!(mixed.world().resource::<SceneParams>().stiffness, 200.0);
 }
 
@@ -337,12 +325,8 @@ fn a_refused_replay_leaves_the_game_whole() {
             path_buf: path.clone(),
         });
     game.update(5);
-    assert!(
-        status(&mut game).contains("cannot play"),
-        "{}",
-        status(&mut game)
-    );
-    assert!(status(&mut game).contains("4096"));
+    assert!(game.status().contains("cannot play"), "{}", game.status());
+    assert!(game.status().contains("4096"));
     assert_eq!(*game.world().resource::<SceneParams>(), before);
     assert!(!game.world().resource::<Playback>().is_playing());
     let (linear, angular) = game.state();
@@ -472,7 +456,7 @@ fn a_scene_opened_by_a_link_at_start_plays_to_its_recorded_bits() {
             "{link}: {ended:?}"
         );
         // A scene's scripted pull ending is no news for the status line (a learner sees no hash).
-        assert!(!status(&mut game).contains("replay over"), "{link}");
+        assert!(!game.status().contains("replay over"), "{link}");
     }
 }
 
@@ -487,23 +471,19 @@ fn a_link_opens_a_chapter_and_the_share_control_writes_the_chapters_link() {
     assert_eq!(chapter_shown(game.world()), Some(3));
     game.world().write_message(Action::ShareLink);
     game.update(1);
-    assert!(
-        status(&mut game).ends_with("?v=1&learn=4"),
-        "{}",
-        status(&mut game)
-    );
+    assert!(game.status().ends_with("?v=1&learn=4"), "{}", game.status());
     let mut game = opened("?v=1&learn=9");
     game.update(2);
     assert_eq!(chapter_shown(game.world()), None);
     assert!(
-        status(&mut game).contains("no chapter 9 (there are 8)"),
+        game.status().contains("no chapter 9 (there are 8)"),
         "{}",
-        status(&mut game)
+        game.status()
     );
     let mut game = opened("?v=1&k=1e5&learn=2");
     game.update(2);
     assert_eq!(chapter_shown(game.world()), Some(1));
-    let said = status(&mut game);
+    let said = game.status();
     assert!(
         said.contains("k: left: the link's chapter sets the scene and its settings"),
         "{said}"
