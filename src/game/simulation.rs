@@ -184,7 +184,8 @@ pub struct EnergyBooks {
 
 /// Sums the kinetic and band energy of every body, with the bands as they are now.
 ///
-/// No other place in the game sums them (the step's books before and after, the HUD).
+/// The Energy card reads it between steps; the step keeps the energies its booked step settled
+/// at ([`EnergyBooks::energies`]).
 pub(crate) fn mechanical_energies(
     params: &SceneParams,
     bodies: &Query<RigidBodyQueryReadOnly, With<RigidBox>>,
