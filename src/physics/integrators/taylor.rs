@@ -268,10 +268,11 @@ fn integrate_here<L: Lanes>(
         let recurrence =
             Recurrence::<L>::of(&first, local, stiffness_per_mass, damping_per_mass, spin);
         let mut newest = recurrence.first_order(&first);
+        let mut middle = Middle::<L>::from(newest);
         for n in 0..order {
             if n > 0 {
-                let middle = middle_sums::<L>(n, series);
-                newest = recurrence.next(&newest, middle, RECIPROCALS[n + 1]);
+                let sums = middle.at(n, order, series, newest);
+                newest = recurrence.next(&newest, sums, RECIPROCALS[n + 1]);
             }
             series[n + 1] = newest.row();
             let top = n + 1;
@@ -299,15 +300,25 @@ fn integrate_here<L: Lanes>(
         let mut h = if early {
             remaining
         } else {
-            let term = |n: usize| (weighted_max(&weights, &series[n]), RECIPROCALS[n]);
-            let log2_step = least_root(log2_tolerance, [term(used - 1), term(used)]);
+            // The last row from the registers it was found in, not read back.
+            let last = (weighted_max(&weights, &newest.row()), RECIPROCALS[used]);
+            let before = (
+                weighted_max(&weights, &series[used - 1]),
+                RECIPROCALS[used - 1],
+            );
+            let log2_step = least_root(log2_tolerance, [before, last]);
             (rough_exp2(log2_step) * SAFETY).min(longest)
         };
         let last = early || h >= remaining;
         if last {
             h = remaining;
         }
-        let change = polynomial(&series[1..=used], h).map(|sum| sum * h);
+        let rows = &series[1..=used];
+        let change = match rows.first_chunk::<28>() {
+            Some(rows) if used == 28 => polynomial_28(rows, h),
+            _ => polynomial(rows, h),
+        }
+        .map(|sum| sum * h);
         moved = std::array::from_fn(|i| moved[i] + change[i]);
         y = std::array::from_fn(|i| start[i] + moved[i]);
         if !y.iter().all(|v| v.is_finite()) {
@@ -474,6 +485,14 @@ struct Coefficients<L: Lanes> {
     omega: L::Four,
 }
 
+impl<L: Lanes> Clone for Coefficients<L> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<L: Lanes> Copy for Coefficients<L> {}
+
 impl<L: Lanes> Coefficients<L> {
     /// Returns the coefficients as a row of the series.
     #[inline(always)]
@@ -487,9 +506,10 @@ impl<L: Lanes> Coefficients<L> {
 ///
 /// The turning's product ω·J·(D, V) at order n is Σ ω_j (D, V)_(n−j): its two ends, ω₀ times
 /// the newest parts and the newest ω times the start's, are linear in the newest coefficients
-/// with the start's values as factors, and its middle ([`middle_sums`]) holds only older rows,
-/// found while the newest still is. What waits on the newest is a multiply a term, a short
-/// tree of additions and the scaling by 1/(n + 1).
+/// with the start's values as factors, and its middle ([`Middle`]) holds only older orders,
+/// found while the newest still is. Every factor is scaled by 1/(n + 1) before the newest
+/// order arrives: what waits on it is a multiply a term and a short tree of additions, the
+/// middle sums' the last of them.
 struct Recurrence<L: Lanes> {
     /// Times the parts with each pair swapped, [D x, D y, V x, V y]: ω₀ J.
     across: L::Four,
@@ -547,13 +567,20 @@ impl<L: Lanes> Recurrence<L> {
     /// `over` is 1/(n + 1).
     #[inline(always)]
     fn next(&self, newest: &Coefficients<L>, middle: L::Four, over: f64) -> Coefficients<L> {
-        let scale = L::splat(over);
-        let turned = L::mul(L::swap_pairs(middle), self.signs);
-        let spun = L::add(turned, L::mul(self.spin, newest.omega));
+        let scaled = |factor: L::Four| L::mul(factor, L::splat(over));
+        let parts = newest.parts;
+        let across = L::mul(scaled(self.across), L::swap_pairs(parts));
+        let halves = L::mul(scaled(self.halves), L::swap_halves(parts));
+        let itself = L::mul(scaled(self.itself), parts);
+        let spun = L::mul(scaled(self.spin), newest.omega);
+        let turned = L::mul(scaled(self.signs), L::swap_pairs(middle));
+        let torques = L::mul(scaled(self.torque), parts);
+        // Lanes 0 and 1 each hold the two torques' sum (in either order: the same bits).
+        let torque = L::low_half_twice(L::add(torques, L::swap_pairs(torques)));
         Coefficients {
-            parts: L::mul(self.linear(newest.parts, spun), scale),
+            parts: L::add(L::add(across, halves), L::add(L::add(itself, spun), turned)),
             theta: L::first(newest.omega) * over,
-            omega: L::mul(self.angular(newest.parts, newest.omega), scale),
+            omega: L::add(torque, L::mul(scaled(self.spin_damping), newest.omega)),
         }
     }
 
@@ -578,45 +605,157 @@ impl<L: Lanes> Recurrence<L> {
     }
 }
 
-/// Returns the middle of the turning's products at order n, as [D y, D x, V y, V x].
+/// The middle of the turning's products, Σ ω_j (D, V)_(n−j) for j from 1 to n − 1.
 ///
-/// That is Σ ω_j (D, V)_(n−j) for j from 1 to n − 1.
-///
-/// Each sum is taken from its middle term out to its ends, the terms (j, n − j) and (n − j, j)
-/// into separate sums and every other pair of them into another two: four chains a quarter as
-/// long. It reads rows up to n − 1 only, so it runs while the n-th is still being found.
-#[inline(always)]
-fn middle_sums<L: Lanes>(n: usize, series: &[Row; MAX_ORDER + 1]) -> L::Four {
-    let n = n.min(MAX_ORDER);
-    let zero = L::splat(0.0);
-    let (mut lows_sum, mut highs_sum) = (zero, zero);
-    if n >= 2 && n.is_multiple_of(2) {
-        let middle = &series[n / 2];
-        lows_sum = L::mul(L::load(turned_parts(middle)), L::splat(middle[OMEGA]));
+/// Its two ends, ω₁ (D, V)_(n−1) and ω_(n−1) (D, V)₁, come from registers: order n − 1 was the
+/// newest just before, and order 1 is kept. Its inner terms read only rows from 2 to n − 2,
+/// found orders before, and two orders' inner terms are summed in one pass ([`inner_sums`]).
+/// What waits on the newest orders is then a multiply and two additions, not a row written and
+/// read back.
+struct Middle<L: Lanes> {
+    /// Order 1's coefficients, a factor of each end.
+    order_one: Coefficients<L>,
+    /// The order before the newest, the other factor of each end.
+    previous: Coefficients<L>,
+    /// The next order's inner sums, found with this order's.
+    pending: L::Four,
+}
+
+impl<L: Lanes> Middle<L> {
+    /// Returns the middle sums of a Taylor step whose first order is `order_one`.
+    #[inline(always)]
+    fn from(order_one: Coefficients<L>) -> Self {
+        Self {
+            order_one,
+            previous: order_one,
+            pending: L::splat(0.0),
+        }
     }
-    let half = (n.max(1) - 1) / 2;
-    let lows = &series[1..=half];
-    let highs = &series[n - half..n];
-    let (mut lows_next, mut highs_next) = (zero, zero);
-    let mut pairs = lows.iter().rev().zip(highs);
-    let product = |low: &Row, high: &Row| {
-        (
-            L::mul(L::splat(low[OMEGA]), L::load(turned_parts(high))),
-            L::mul(L::splat(high[OMEGA]), L::load(turned_parts(low))),
-        )
-    };
-    while let Some((low, high)) = pairs.next() {
-        let (by_low, by_high) = product(low, high);
-        lows_sum = L::add(lows_sum, by_low);
-        highs_sum = L::add(highs_sum, by_high);
-        let Some((low, high)) = pairs.next() else {
-            break;
+
+    /// Returns the middle sums at order n (from 1) of a series up to `order`.
+    ///
+    /// `newest` is order n, and `series` holds the rows up to n.
+    #[inline(always)]
+    fn at(
+        &mut self,
+        n: usize,
+        order: usize,
+        series: &[Row; MAX_ORDER + 1],
+        newest: Coefficients<L>,
+    ) -> L::Four {
+        let one = self.order_one;
+        let sums = match n {
+            1 => L::splat(0.0),
+            // The middle term alone: ω₁ (D, V)₁.
+            2 => L::mul(one.omega, one.parts),
+            _ => {
+                let inner = if n.is_multiple_of(2) {
+                    self.pending
+                } else if n + 1 < order {
+                    let (inner, next) = inner_sums::<L, true>(n, series);
+                    self.pending = next;
+                    inner
+                } else {
+                    inner_sums::<L, false>(n, series).0
+                };
+                let ends = L::add(
+                    L::mul(one.omega, self.previous.parts),
+                    L::mul(self.previous.omega, one.parts),
+                );
+                L::add(inner, ends)
+            }
         };
-        let (by_low, by_high) = product(low, high);
-        lows_next = L::add(lows_next, by_low);
-        highs_next = L::add(highs_next, by_high);
+        self.previous = newest;
+        sums
     }
-    L::add(L::add(lows_sum, highs_sum), L::add(lows_next, highs_next))
+}
+
+/// Returns the middle sums but their ends at odd order n (from 3), and at n + 1 if `NEXT`.
+///
+/// Those are Σ ω_j (D, V)_(n−j) over 2 ≤ j ≤ n − 2, and order n + 1's over 2 ≤ j ≤ n − 1
+/// (zero unless `NEXT`).
+///
+/// Each sum runs from its middle term out, pairing j with n − j, in two chains: every other
+/// pair into each. The two orders' pairs share their low rows, and each high row of order
+/// n + 1 is the next pair's high row of order n, so each row is read once for both.
+#[inline(always)]
+fn inner_sums<L: Lanes, const NEXT: bool>(
+    n: usize,
+    series: &[Row; MAX_ORDER + 1],
+) -> (L::Four, L::Four) {
+    let n = n.min(MAX_ORDER - 1);
+    let operands = |row: &Row| (L::splat(row[OMEGA]), L::load(turned_parts(row)));
+    let pair = |(low_omega, low_parts): (L::Four, L::Four),
+                (high_omega, high_parts): (L::Four, L::Four)| {
+        L::add(L::mul(low_omega, high_parts), L::mul(high_omega, low_parts))
+    };
+    // Order n's pairs are (half − i, half + 1 + i); order n + 1's are (half − i, half + 2 + i)
+    // around its middle term, half + 1.
+    let half = (n - 1) / 2;
+    let zero = L::splat(0.0);
+    let middle = operands(&series[half + 1]);
+    let (mut this, mut this_other) = (zero, zero);
+    let (mut next, mut next_other) = (
+        if NEXT {
+            L::mul(middle.0, middle.1)
+        } else {
+            zero
+        },
+        zero,
+    );
+    let mut high = middle;
+    let mut low_row = half;
+    while low_row >= 2 {
+        let low = operands(&series[low_row]);
+        let above = operands(&series[n + 1 - low_row]);
+        this = L::add(this, pair(low, high));
+        if NEXT {
+            next = L::add(next, pair(low, above));
+        }
+        high = above;
+        low_row -= 1;
+        if low_row < 2 {
+            break;
+        }
+        let low = operands(&series[low_row]);
+        let above = operands(&series[n + 1 - low_row]);
+        this_other = L::add(this_other, pair(low, high));
+        if NEXT {
+            next_other = L::add(next_other, pair(low, above));
+        }
+        high = above;
+        low_row -= 1;
+    }
+    (L::add(this, this_other), L::add(next, next_other))
+}
+
+/// Sums a whole step's series at the default order (rows 1 to 28) at `h`, as [`polynomial`].
+///
+/// It runs in blocks of eight rows, each by Estrin's scheme (paired in h, the pairs in h², the
+/// fours in h⁴), the blocks by Horner's rule in h⁸ from the top.
+///
+/// What waits on the step's size is then six multiply-adds, where Horner's rule alone waits on
+/// fourteen: a stiff band's step spends most of its end waiting on its size.
+#[inline(always)]
+fn polynomial_28(rows: &[Row; 28], h: f64) -> Row {
+    let h2 = h * h;
+    let h4 = h2 * h2;
+    let h8 = h4 * h4;
+    let lanes = |f: &dyn Fn(usize) -> f64| -> Row { std::array::from_fn(f) };
+    let two = |k: usize, i: usize| rows[k][i] + rows[k + 1][i] * h;
+    let four = |k: usize, i: usize| two(k, i) + two(k + 2, i) * h2;
+    let eight = |k: usize, i: usize| four(k, i) + four(k + 4, i) * h4;
+    let blocks = [
+        lanes(&|i| eight(0, i)),
+        lanes(&|i| eight(8, i)),
+        lanes(&|i| eight(16, i)),
+        lanes(&|i| four(24, i)),
+    ];
+    let mut sum = blocks[3];
+    for block in blocks[..3].iter().rev() {
+        sum = std::array::from_fn(|i| block[i] + sum[i] * h8);
+    }
+    sum
 }
 
 /// Sums every component's series at `h`: Σ rows[n] hⁿ.
@@ -743,17 +882,25 @@ mod tests {
                     std::array::from_fn(|i| sums[i] * h + row[i])
                 });
                 let two_chains = polynomial(&rows[..length], h);
+                // The default order's blocks, where there are its 28 rows.
+                let blocks = rows[..length]
+                    .first_chunk::<28>()
+                    .filter(|_| length == 28)
+                    .map(|rows| polynomial_28(rows, h));
                 for i in 0..LANES {
                     let scale = rows[..length]
                         .iter()
                         .enumerate()
                         .map(|(n, row)| (row[i] * h.powi(n as i32)).abs())
                         .sum::<f64>();
-                    assert!(
-                        (two_chains[i] - horner[i]).abs() <= 1e-14 * scale.max(1.0),
-                        "length {length}, h {h}, lane {i}"
-                    );
+                    for sum in std::iter::once(two_chains).chain(blocks) {
+                        assert!(
+                            (sum[i] - horner[i]).abs() <= 1e-14 * scale.max(1.0),
+                            "length {length}, h {h}, lane {i}"
+                        );
+                    }
                 }
+                assert_eq!(blocks.is_some(), length == 28);
             }
         }
     }
