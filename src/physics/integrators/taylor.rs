@@ -918,11 +918,17 @@ mod tests {
     // moving, damped, on soft and stiff bands, near the anchor and a million px from it.
     #[test]
     fn a_fixed_step_agrees_with_an_independent_method() {
-        let settings = TaylorSettings {
-            order: 26,
-            tolerance: 1e-12,
-            max_steps: 10_000,
-        };
+        // Odd and even orders (the middle sums pair them), and the default's blocked sum.
+        for order in [12, 19, 26, 28, 31] {
+            agrees_with_an_independent_method(TaylorSettings {
+                order,
+                tolerance: 1e-12,
+                max_steps: 10_000,
+            });
+        }
+    }
+
+    fn agrees_with_an_independent_method(settings: TaylorSettings) {
         for (i, anchor) in [
             DVec2::new(200.0, 120.0),
             DVec2::new(-30.0, 80.0),
@@ -952,7 +958,8 @@ mod tests {
                 let size = state.linear.position.distance(anchor).max(1.0);
                 assert!(
                     error < 1e-9 + RELATIVE_TOLERANCE * size,
-                    "anchor {anchor}, k {stiffness}: {error}"
+                    "order {}, anchor {anchor}, k {stiffness}: {error}",
+                    settings.order
                 );
                 let speed = (ours.state.linear.velocity - theirs.state.linear.velocity).length();
                 let fast = theirs.state.linear.velocity.length();
